@@ -1,0 +1,9 @@
+# Project-wide warning and sanitizer flags, applied through one interface target
+# so third-party headers (Ipopt, Eigen) stay quiet as system includes.
+add_library(gaitopt_options INTERFACE)
+target_compile_options(gaitopt_options INTERFACE -Wall -Wextra -Wpedantic)
+if(GAITOPT_SANITIZE)
+  target_compile_options(gaitopt_options INTERFACE
+    -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+  target_link_options(gaitopt_options INTERFACE -fsanitize=address,undefined)
+endif()

@@ -1,0 +1,133 @@
+#include "config/yaml_reader.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <utility>
+
+#include <fmt/format.h>
+
+namespace gaitopt::config {
+
+NumberCheck positive(const std::string& unit) {
+  return [unit](double v) { return v > 0 ? std::string() : "a positive number " + unit; };
+}
+
+NumberCheck nonNegative(const std::string& unit) {
+  return [unit](double v) { return v >= 0 ? std::string() : "a number >= 0 " + unit; };
+}
+
+NumberCheck inRange(double lo, double hi, const std::string& unit) {
+  return [=](double v) {
+    return (v >= lo && v <= hi) ? std::string()
+                                : fmt::format("a number in [{}, {}] {}", lo, hi, unit);
+  };
+}
+
+YamlReader YamlReader::fromFile(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path))
+    throw ConfigError(path, "", 0, "file not found or not a regular file");
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(path, "", e.mark.line + 1, "not valid YAML: " + e.msg);
+  }
+  if (!root.IsMap()) throw ConfigError(path, "", 0, "expected a YAML mapping at the top level");
+  return YamlReader(path, root, "");
+}
+
+YamlReader::YamlReader(std::string file, YAML::Node node, std::string path)
+    : file_(std::move(file)), node_(std::move(node)), path_(std::move(path)) {}
+
+std::string YamlReader::keyPath(const std::string& key) const {
+  return path_.empty() ? key : path_ + "." + key;
+}
+
+int YamlReader::lineOf(const YAML::Node& node) const {
+  const auto mark = node.Mark();
+  return mark.is_null() ? 0 : mark.line + 1;
+}
+
+void YamlReader::fail(const std::string& key, const std::string& message) const {
+  const YAML::Node n = has(key) ? node_[key] : node_;
+  throw ConfigError(file_, keyPath(key), lineOf(n), message);
+}
+
+bool YamlReader::has(const std::string& key) const { return node_.IsMap() && node_[key]; }
+
+YAML::Node YamlReader::child(const std::string& key) const {
+  if (!has(key)) throw ConfigError(file_, keyPath(key), lineOf(node_), "missing required key");
+  return node_[key];
+}
+
+double YamlReader::number(const std::string& key, const NumberCheck& check) const {
+  const YAML::Node n = child(key);
+  const std::string text = n.IsScalar() ? n.Scalar() : std::string();
+  double value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (!n.IsScalar() || ec != std::errc() || end != text.data() + text.size() ||
+      !std::isfinite(value))
+    fail(key, fmt::format("expected a finite number, got '{}'", n.IsScalar() ? text : "a " +
+                                                                     std::string(n.IsMap() ? "mapping" : "sequence")));
+  if (const std::string expected = check(value); !expected.empty())
+    fail(key, fmt::format("expected {}, got {}", expected, text));
+  return value;
+}
+
+double YamlReader::numberOr(const std::string& key, double fallback,
+                            const NumberCheck& check) const {
+  return has(key) ? number(key, check) : fallback;
+}
+
+bool YamlReader::boolean(const std::string& key) const {
+  const YAML::Node n = child(key);
+  const std::string text = n.IsScalar() ? n.Scalar() : std::string();
+  if (text == "true") return true;
+  if (text == "false") return false;
+  fail(key, fmt::format("expected true or false, got '{}'", text));
+}
+
+bool YamlReader::booleanOr(const std::string& key, bool fallback) const {
+  return has(key) ? boolean(key) : fallback;
+}
+
+std::string YamlReader::string(const std::string& key) const {
+  const YAML::Node n = child(key);
+  if (!n.IsScalar() || n.Scalar().empty()) fail(key, "expected a non-empty string");
+  return n.Scalar();
+}
+
+std::string YamlReader::stringOr(const std::string& key, const std::string& fallback) const {
+  return has(key) ? string(key) : fallback;
+}
+
+YamlReader YamlReader::map(const std::string& key) const {
+  const YAML::Node n = child(key);
+  if (!n.IsMap()) fail(key, "expected a mapping of keys to values");
+  return YamlReader(file_, n, keyPath(key));
+}
+
+std::vector<YamlReader> YamlReader::list(const std::string& key) const {
+  const YAML::Node n = child(key);
+  if (!n.IsSequence() || n.size() == 0) fail(key, "expected a non-empty list");
+  std::vector<YamlReader> items;
+  for (size_t i = 0; i < n.size(); ++i) {
+    const std::string path = fmt::format("{}[{}]", keyPath(key), i);
+    if (!n[i].IsMap()) throw ConfigError(file_, path, lineOf(n[i]), "expected a mapping");
+    items.emplace_back(file_, n[i], path);
+  }
+  return items;
+}
+
+void YamlReader::allowOnly(const std::vector<std::string>& allowed) const {
+  for (const auto& kv : node_) {
+    const std::string key = kv.first.as<std::string>();
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
+      throw ConfigError(file_, keyPath(key), lineOf(kv.first),
+                        fmt::format("unknown key; allowed here: {}", fmt::join(allowed, ", ")));
+  }
+}
+
+}  // namespace gaitopt::config

@@ -1,0 +1,58 @@
+#pragma once
+/// @file yaml_reader.hpp
+/// Strict typed access to one YAML mapping: every read names its key path, every failure throws a
+/// ConfigError with file, key, line, the value found and what was expected; unknown keys are
+/// errors (a typo must never fall back to a silent default).
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+#include "config/config_error.hpp"
+
+namespace gaitopt::config {
+
+/// A range check on a number: returns an empty string when the value is acceptable, otherwise
+/// the expectation to print (e.g. "a positive number [kg]").
+using NumberCheck = std::function<std::string(double)>;
+
+NumberCheck positive(const std::string& unit);
+NumberCheck nonNegative(const std::string& unit);
+NumberCheck inRange(double lo, double hi, const std::string& unit);
+
+class YamlReader {
+ public:
+  /// Parses a file. @throws ConfigError when it is missing or not valid YAML mapping.
+  static YamlReader fromFile(const std::string& path);
+  /// Wraps a parsed node; `path` is the key path of the node ("" for the document root).
+  YamlReader(std::string file, YAML::Node node, std::string path);
+
+  double number(const std::string& key, const NumberCheck& check) const;
+  double numberOr(const std::string& key, double fallback, const NumberCheck& check) const;
+  bool boolean(const std::string& key) const;
+  bool booleanOr(const std::string& key, bool fallback) const;
+  std::string string(const std::string& key) const;
+  std::string stringOr(const std::string& key, const std::string& fallback) const;
+  /// The mapping under `key`.
+  YamlReader map(const std::string& key) const;
+  bool has(const std::string& key) const;
+  /// Elements of the non-empty sequence under `key`, each a mapping.
+  std::vector<YamlReader> list(const std::string& key) const;
+  /// @throws ConfigError naming the first key not in `allowed`.
+  void allowOnly(const std::vector<std::string>& allowed) const;
+
+  const std::string& file() const { return file_; }
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const;
+
+ private:
+  YAML::Node child(const std::string& key) const;
+  std::string keyPath(const std::string& key) const;
+  int lineOf(const YAML::Node& node) const;
+
+  std::string file_;
+  YAML::Node node_;
+  std::string path_;
+};
+
+}  // namespace gaitopt::config

@@ -1,0 +1,87 @@
+#pragma once
+/// @file ssp_dynamics.hpp
+/// Single-support dynamics of the pinned chain, Mu (2.7): D(theta) ddtheta + H(theta, dtheta)
+/// dtheta + G(theta) = M^T tau, with D, H, G from (2.8) and the gravity sign of (2.8c)
+/// corrected to G_i = -g_i sin(theta_i) (printed "+" violates energy conservation; Appendix I
+/// eq. A1 has the minus; see notes/mu2004.md sec. 0 item 1). Templated on the scalar type.
+#include <cmath>
+
+#include <Eigen/Cholesky>
+
+#include "dynamics/joint_coordinates.hpp"
+#include "dynamics/model.hpp"
+
+namespace gaitopt::dynamics {
+
+/// D of Mu (2.8a): D_ij = p_ij cos(theta_i - theta_j), n x n, symmetric positive definite.
+template <class S>
+Mat<S> massMatrix(const Model& model, const Vec<S>& theta) {
+  using std::cos;
+  const auto& p = model.inertiaCoefficients();
+  const int n = model.nLinks();
+  Mat<S> d(n, n);
+  for (int i = 0; i < n; ++i) {
+    d(i, i) = S(p(i, i));
+    for (int j = i + 1; j < n; ++j) {
+      d(i, j) = p(i, j) * cos(theta(i) - theta(j));
+      d(j, i) = d(i, j);
+    }
+  }
+  return d;
+}
+
+/// H(theta, dtheta) dtheta of Mu (2.8b): (H dtheta)_i = sum_j p_ij sin(theta_i - theta_j)
+/// dtheta_j^2 [N m].
+template <class S>
+Vec<S> coriolis(const Model& model, const Vec<S>& theta, const Vec<S>& dtheta) {
+  using std::sin;
+  const auto& p = model.inertiaCoefficients();
+  const int n = model.nLinks();
+  Vec<S> h = Vec<S>::Zero(n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      if (j != i) h(i) += p(i, j) * sin(theta(i) - theta(j)) * dtheta(j) * dtheta(j);
+  return h;
+}
+
+/// G of Mu (2.8c), sign corrected: G_i = -g_i sin(theta_i) [N m].
+template <class S>
+Vec<S> gravityVector(const Model& model, const Vec<S>& theta) {
+  using std::sin;
+  const auto& g = model.gravityCoefficients();
+  Vec<S> out(model.nLinks());
+  for (int i = 0; i < model.nLinks(); ++i) out(i) = -g(i) * sin(theta(i));
+  return out;
+}
+
+/// N = H dtheta + G (Mu 2.12).
+template <class S>
+Vec<S> nonlinearEffects(const Model& model, const Vec<S>& theta, const Vec<S>& dtheta) {
+  return coriolis(model, theta, dtheta) + gravityVector(model, theta);
+}
+
+/// SSP residual of Mu (2.7) with (2.43): D ddtheta + H dtheta + G - M^T tau, n x 1 [N m].
+/// Zero exactly when (theta, dtheta, ddtheta, tau) satisfy the pinned-chain dynamics.
+template <class S>
+Vec<S> sspResidual(const Model& model, const Vec<S>& theta, const Vec<S>& dtheta,
+                   const Vec<S>& ddtheta, const Vec<S>& tau) {
+  return massMatrix(model, theta) * ddtheta + nonlinearEffects(model, theta, dtheta) -
+         generalizedTorque(tau);
+}
+
+/// SSP forward dynamics: ddtheta = D^-1 (M^T tau - N) [rad/s^2].
+inline VecD sspForwardDynamics(const Model& model, const VecD& theta, const VecD& dtheta,
+                               const VecD& tau) {
+  return massMatrix(model, theta)
+      .ldlt()
+      .solve(generalizedTorque(tau) - nonlinearEffects(model, theta, dtheta));
+}
+
+/// SSP inverse dynamics in joint space: tau = M^-T (D ddtheta + N) (Mu 2.43) [N m].
+inline VecD sspInverseDynamics(const Model& model, const VecD& theta, const VecD& dtheta,
+                               const VecD& ddtheta) {
+  return jointTorque<double>(massMatrix(model, theta) * ddtheta +
+                             nonlinearEffects(model, theta, dtheta));
+}
+
+}  // namespace gaitopt::dynamics
