@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# End-to-end checks of `gaitopt inspect`.
+# Usage: inspect_cli_test.sh <path to gaitopt binary> <repo root>
+set -u
+
+if [[ $# -ne 2 ]]; then
+  echo "usage: $0 <gaitopt binary> <repo root>" >&2
+  exit 1
+fi
+GAITOPT=$1
+ROOT=$2
+ROBOT="$ROOT/configs/robots/mu2004_five_link.yaml"
+PY=/usr/bin/python3
+
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+
+fail() {
+  echo "FAIL: $*" >&2
+  exit 1
+}
+
+# Runs gaitopt with the given arguments, keeping stdout, stderr and the exit code.
+run() {
+  "$GAITOPT" "$@" >"$TMP/out" 2>"$TMP/err"
+  RC=$?
+}
+
+# Runs the Python assertions read from stdin with `d` bound to the JSON in $TMP/out; $1 names
+# the check. The snippet comes from a quoted heredoc, so it may use any quotes.
+check_json() {
+  local name=$1
+  {
+    printf '%s\n' "import json, sys" "with open(sys.argv[1]) as f:" "    d = json.load(f)"
+    cat
+  } >"$TMP/check.py"
+  "$PY" "$TMP/check.py" "$TMP/out" || fail "$name"
+}
+
+# (a) default standing posture of the five-link robot.
+run inspect --robot "$ROBOT"
+[[ $RC -eq 0 ]] || fail "(a) inspect exited $RC, stderr: $(cat "$TMP/err")"
+check_json "(a) total mass, D symmetric, G zero at the standing posture" <<'PY'
+expected = ["robot", "n_links", "total_mass", "gravity", "friction", "links", "joints", "state",
+            "D", "H_dtheta", "G", "tau", "kinetic_energy", "potential_energy", "com",
+            "swing_tip", "hip"]
+assert sorted(d) == sorted(expected), f"top-level keys {list(d)}"
+assert abs(d["total_mass"] - 29.81) <= 1e-9, f"total_mass {d['total_mass']}"
+n = d["n_links"]
+D = d["D"]
+assert len(D) == n and all(len(row) == n for row in D), "D is not n x n"
+for i in range(n):
+    for j in range(n):
+        assert abs(D[i][j] - D[j][i]) <= 1e-12, f"D[{i}][{j}]={D[i][j]} != D[{j}][{i}]={D[j][i]}"
+assert len(d["G"]) == n and all(abs(g) <= 1e-12 for g in d["G"]), f"G {d['G']}"
+PY
+
+# (b) a mid-stride state: swing tip about 0.36 m behind the stance tip, on the ground.
+cat >"$TMP/state.json" <<'JSON'
+{"theta": [0.0206, -0.5461, 0, 3.3194, 3.6327], "dtheta": [0, 0, 0, 0, 0]}
+JSON
+run inspect --robot "$ROBOT" --state "$TMP/state.json"
+[[ $RC -eq 0 ]] || fail "(b) inspect --state exited $RC, stderr: $(cat "$TMP/err")"
+check_json "(b) swing tip position" <<'PY'
+x, y = d["swing_tip"]["position"]
+assert abs(x - (-0.360)) <= 2e-3, f"swing_tip x {x}, expected -0.360"
+assert abs(y) <= 2e-3, f"swing_tip y {y}, expected 0"
+PY
+
+# (c) a missing robot file: exit 2, "error:" and the file name on stderr.
+MISSING="$TMP/no_such_robot.yaml"
+run inspect --robot "$MISSING"
+[[ $RC -eq 2 ]] || fail "(c) missing robot file: exit code $RC, expected 2"
+grep -q "error:" "$TMP/err" || fail "(c) stderr lacks 'error:': $(cat "$TMP/err")"
+grep -qF "no_such_robot.yaml" "$TMP/err" || fail "(c) stderr lacks the file name: $(cat "$TMP/err")"
+
+# (d) a state vector of the wrong length: exit 2, naming the key.
+cat >"$TMP/short.json" <<'JSON'
+{"theta": [0.0, 0.0, 0.0, 3.14]}
+JSON
+run inspect --robot "$ROBOT" --state "$TMP/short.json"
+[[ $RC -eq 2 ]] || fail "(d) wrong-length theta: exit code $RC, expected 2"
+grep -q "error:" "$TMP/err" || fail "(d) stderr lacks 'error:': $(cat "$TMP/err")"
+grep -qF "'theta'" "$TMP/err" || fail "(d) stderr does not name the key theta: $(cat "$TMP/err")"
+
+echo "inspect_cli_test: all checks passed"
