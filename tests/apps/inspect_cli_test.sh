@@ -43,9 +43,12 @@ run inspect --robot "$ROBOT"
 check_json "(a) total mass, D symmetric, G zero at the standing posture" <<'PY'
 expected = ["robot", "n_links", "total_mass", "gravity", "friction", "links", "joints", "state",
             "D", "H_dtheta", "G", "tau", "kinetic_energy", "potential_energy", "com",
-            "swing_tip", "hip"]
+            "swing_tip", "hip", "link_segments"]
 assert sorted(d) == sorted(expected), f"top-level keys {list(d)}"
 assert abs(d["total_mass"] - 29.81) <= 1e-9, f"total_mass {d['total_mass']}"
+seg = d["link_segments"]
+assert abs(seg[4]["end"][0] - d["swing_tip"]["position"][0]) < 1e-12, "swing shank ends at E"
+assert abs(seg[1]["end"][1] - d["hip"]["position"][1]) < 1e-12, "stance thigh ends at hip"
 n = d["n_links"]
 D = d["D"]
 assert len(D) == n and all(len(row) == n for row in D), "D is not n x n"

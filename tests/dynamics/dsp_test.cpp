@@ -108,7 +108,12 @@ TEST_P(DspTest, TipForcesMatchFloatingBaseAndBalanceMomentum) {
 }
 
 TEST_P(DspTest, ReducedModelMatchesKkt) {
-  if (model_.nLinks() < 3) GTEST_SKIP() << "a two-link chain has no DSP degree of freedom";
+  if (model_.nLinks() < 3) {
+    // A two-link chain pinned at both tips is rigid: the reduced model must refuse it.
+    const DspState s = makeDspState(model_, rng_);
+    EXPECT_THROW(dynamics::reducedDspModel(model_, s.theta, s.dtheta), std::invalid_argument);
+    return;
+  }
   for (int trial = 0; trial < 50; ++trial) {
     const DspState s = makeDspState(model_, rng_);
     const VecD tau = randomVec(rng_, model_.nLinks(), -50, 50);

@@ -1,0 +1,38 @@
+#include "apps/command_runner.hpp"
+
+#include <exception>
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+
+#include "config/config_error.hpp"
+
+namespace gaitopt::apps {
+namespace {
+
+int report(const char* message, ExitCode code) {
+  fmt::print(stderr, "error: {}\n", message);
+  return code;
+}
+
+}  // namespace
+
+int runReportingErrors(const std::function<void()>& body) {
+  try {
+    body();
+    return kExitOk;
+  } catch (const config::ConfigError& e) {
+    return report(e.what(), kExitInputError);
+  } catch (const std::exception& e) {
+    return report(e.what(), kExitFailure);
+  } catch (...) {
+    return report("unknown failure (non-standard exception)", kExitFailure);
+  }
+}
+
+void runSubcommand(const std::function<void()>& body) {
+  const int code = runReportingErrors(body);
+  if (code != kExitOk) throw CLI::RuntimeError(code);
+}
+
+}  // namespace gaitopt::apps

@@ -1,0 +1,24 @@
+#pragma once
+/// @file command_runner.hpp
+/// Exit codes of the gaitopt tool and the one place that turns a subcommand's exceptions into an
+/// "error: ..." line on stderr and an exit code, so no bad input ever crashes the tool.
+#include <functional>
+
+namespace gaitopt::apps {
+
+/// Process exit codes shared by every subcommand.
+enum ExitCode : int {
+  kExitOk = 0,
+  kExitFailure = 1,     ///< anything other than bad input (a bug, out of memory, stdout closed)
+  kExitInputError = 2,  ///< bad command line, robot file or state file
+};
+
+/// Runs `body`; prints `error: <what()>` to stderr for an exception and returns its exit code:
+/// kExitInputError for config::ConfigError, kExitFailure for any other exception.
+int runReportingErrors(const std::function<void()>& body);
+
+/// For a CLI11 subcommand callback: runs `body` as runReportingErrors does and, on failure,
+/// throws CLI::RuntimeError carrying the exit code (CLI::App::exit returns it silently).
+void runSubcommand(const std::function<void()>& body);
+
+}  // namespace gaitopt::apps

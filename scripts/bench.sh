@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# Runs the dynamics micro-benchmarks and prints a markdown table of per-benchmark median and
+# minimum time over 15 repetitions, with the ratio of each median to BM_MassMatrix's.
+# Usage: scripts/bench.sh BUILD_DIR   (BUILD_DIR configured with GAITOPT_BUILD_BENCH=ON, built)
+set -euo pipefail
+
+if [[ $# -ne 1 ]]; then
+  echo "usage: $0 BUILD_DIR" >&2
+  exit 2
+fi
+bin="$1/bench/dynamics_bench"
+if [[ ! -x "$bin" ]]; then
+  echo "error: benchmark binary not found or not executable: $bin" >&2
+  echo "       build it first: cmake -S . -B $1 -G Ninja && cmake --build $1 -j2" >&2
+  exit 1
+fi
+
+json="$(mktemp "${TMPDIR:-/tmp}/dynamics_bench.XXXXXX.json")"
+trap 'rm -f "$json"' EXIT
+
+# Every repetition is reported (no aggregates_only) so the minimum can be computed below.
+"$bin" --benchmark_repetitions=15 --benchmark_format=json >"$json"
+
+cpu="$(sed -n 's/^model name[[:space:]]*:[[:space:]]*//p' /proc/cpuinfo | head -n 1)"
+echo "Machine: $(nproc) CPUs, ${cpu:-unknown CPU}; date: $(date -u '+%Y-%m-%d %H:%M:%S UTC')"
+echo
+
+/usr/bin/python3 - "$json" <<'PY'
+import json
+import statistics
+import sys
+
+with open(sys.argv[1]) as f:
+    data = json.load(f)
+
+scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}
+times = {}  # benchmark name -> per-repetition real time [ns], in the binary's order
+for b in data["benchmarks"]:
+    if b.get("run_type") != "iteration":
+        continue  # aggregates (mean, median, stddev, cv), should any be present
+    if "error_occurred" in b and b["error_occurred"]:
+        sys.exit(f"error: {b['run_name']}: {b.get('error_message', 'benchmark failed')}")
+    times.setdefault(b["run_name"], []).append(b["real_time"] * scale[b["time_unit"]])
+
+if "BM_MassMatrix" not in times:
+    sys.exit("error: BM_MassMatrix missing from the benchmark output")
+ref = statistics.median(times["BM_MassMatrix"])
+print("| benchmark | median ns | min ns | ratio to BM_MassMatrix median |")
+print("|---|---:|---:|---:|")
+for name, t in times.items():
+    med = statistics.median(t)
+    print(f"| {name} | {med:.1f} | {min(t):.1f} | {med / ref:.2f} |")
+reps = {len(t) for t in times.values()}
+print(f"\nRepetitions per benchmark: {', '.join(str(r) for r in sorted(reps))}; real time.")
+PY

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# The main job of `make demo`: runs gaitopt into results/ and says where everything is.
+# Usage: scripts/demo.sh BUILD_DIR
+set -euo pipefail
+build=${1:-build}
+root=$(cd "$(dirname "$0")/.." && pwd)
+bin="$build/apps/gaitopt"
+[[ -x "$bin" ]] || { echo "demo: $bin not built (run make build)" >&2; exit 1; }
+out="$root/results/inspect"
+mkdir -p "$out"
+
+echo "== gaitopt inspect: every shipped robot at its standing posture"
+for robot in "$root"/configs/robots/*.yaml; do
+  name=$(basename "$robot" .yaml)
+  "$bin" inspect --robot "$robot" >"$out/$name.json.tmp" && mv "$out/$name.json.tmp" "$out/$name.json"
+  /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); \
+print(f\"  {d['robot']:<18} {d['n_links']} links  mass {d['total_mass']:.2f} kg  \
+CoM height {d['com']['position'][1]:.3f} m\")" "$out/$name.json"
+done
+
+echo "== Mu (2004) Table 4.1 posture: dynamics and the angle-convention picture"
+"$bin" inspect --robot "$root/configs/robots/mu2004_five_link.yaml" \
+  --state "$root/configs/states/mu2004_table41.json" >"$out/mu2004_table41.json"
+if /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
+  /usr/bin/python3 "$root/scripts/plots/convention.py" "$out/mu2004_table41.json" "$root/results/convention.png"
+  echo "  picture: results/convention.png"
+else
+  echo "  warning: python3-matplotlib missing, no picture drawn (scripts/install-deps.sh installs it)" >&2
+fi
+echo "Results are in $root/results/ (inspect/*.json, convention.png)."
