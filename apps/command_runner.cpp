@@ -1,6 +1,7 @@
 #include "apps/command_runner.hpp"
 
 #include <exception>
+#include <stdexcept>
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
@@ -23,6 +24,8 @@ int runReportingErrors(const std::function<void()>& body) {
     return kExitOk;
   } catch (const config::ConfigError& e) {
     return report(e.what(), kExitInputError);
+  } catch (const std::domain_error& e) {
+    return report(e.what(), kExitInfeasible);
   } catch (const std::exception& e) {
     return report(e.what(), kExitFailure);
   } catch (...) {

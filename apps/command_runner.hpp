@@ -11,10 +11,12 @@ enum ExitCode : int {
   kExitOk = 0,
   kExitFailure = 1,     ///< anything other than bad input (a bug, out of memory, stdout closed)
   kExitInputError = 2,  ///< bad command line, robot file or state file
+  kExitInfeasible = 3,  ///< valid input describing something impossible (a leg cannot reach)
 };
 
 /// Runs `body`; prints `error: <what()>` to stderr for an exception and returns its exit code:
-/// kExitInputError for config::ConfigError, kExitFailure for any other exception.
+/// kExitInputError for config::ConfigError, kExitInfeasible for std::domain_error, kExitFailure
+/// for any other exception.
 int runReportingErrors(const std::function<void()>& body);
 
 /// For a CLI11 subcommand callback: runs `body` as runReportingErrors does and, on failure,

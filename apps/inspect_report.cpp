@@ -81,9 +81,8 @@ void addKinematics(ordered_json& out, const Model& model, const ChainState& s) {
     const Vec2d start = dynamics::pointPosition(model.jointWeights(i), s.theta);
     const Vec2d end =
         start + model.link(i).length * Vec2d(std::sin(s.theta(i)), std::cos(s.theta(i)));
-    segments.push_back({{"name", model.link(i).name},
-                        {"start", vectorJson(start)},
-                        {"end", vectorJson(end)}});
+    segments.push_back(
+        {{"name", model.link(i).name}, {"start", vectorJson(start)}, {"end", vectorJson(end)}});
   }
   out["link_segments"] = segments;
 }

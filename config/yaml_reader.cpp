@@ -55,30 +55,61 @@ void YamlReader::fail(const std::string& key, const std::string& message) const 
   throw ConfigError(file_, keyPath(key), lineOf(n), message);
 }
 
-bool YamlReader::has(const std::string& key) const { return node_.IsMap() && node_[key]; }
+bool YamlReader::has(const std::string& key) const {
+  return node_.IsMap() && node_[key];
+}
 
 YAML::Node YamlReader::child(const std::string& key) const {
   if (!has(key)) throw ConfigError(file_, keyPath(key), lineOf(node_), "missing required key");
   return node_[key];
 }
 
+namespace {
+
+/// Strict decimal parse: the whole text must be one finite number.
+bool parseFinite(const std::string& text, double& value) {
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  return ec == std::errc() && end == text.data() + text.size() && std::isfinite(value);
+}
+
+std::string describeNode(const YAML::Node& n) {
+  if (n.IsScalar()) return "'" + n.Scalar() + "'";
+  return n.IsMap() ? "a mapping" : "a sequence";
+}
+
+}  // namespace
+
 double YamlReader::number(const std::string& key, const NumberCheck& check) const {
   const YAML::Node n = child(key);
-  const std::string text = n.IsScalar() ? n.Scalar() : std::string();
   double value = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (!n.IsScalar() || ec != std::errc() || end != text.data() + text.size() ||
-      !std::isfinite(value))
-    fail(key, fmt::format("expected a finite number, got '{}'", n.IsScalar() ? text : "a " +
-                                                                     std::string(n.IsMap() ? "mapping" : "sequence")));
+  if (!n.IsScalar() || !parseFinite(n.Scalar(), value))
+    fail(key, "expected a finite number, got " + describeNode(n));
   if (const std::string expected = check(value); !expected.empty())
-    fail(key, fmt::format("expected {}, got {}", expected, text));
+    fail(key, fmt::format("expected {}, got {}", expected, n.Scalar()));
   return value;
 }
 
 double YamlReader::numberOr(const std::string& key, double fallback,
                             const NumberCheck& check) const {
   return has(key) ? number(key, check) : fallback;
+}
+
+std::optional<double> YamlReader::numberOrWord(const std::string& key, const std::string& word,
+                                               const NumberCheck& check) const {
+  const YAML::Node n = child(key);
+  if (n.IsScalar() && n.Scalar() == word) return std::nullopt;
+  double value = 0;
+  if (!n.IsScalar() || !parseFinite(n.Scalar(), value))
+    fail(key, fmt::format("expected a finite number or '{}', got {}", word, describeNode(n)));
+  return number(key, check);
+}
+
+std::string YamlReader::choice(const std::string& key,
+                               const std::vector<std::string>& allowed) const {
+  const std::string value = string(key);
+  if (std::find(allowed.begin(), allowed.end(), value) == allowed.end())
+    fail(key, fmt::format("expected one of {}, got '{}'", fmt::join(allowed, ", "), value));
+  return value;
 }
 
 bool YamlReader::boolean(const std::string& key) const {

@@ -4,6 +4,7 @@
 /// ConfigError with file, key, line, the value found and what was expected; unknown keys are
 /// errors (a typo must never fall back to a silent default).
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,11 @@ class YamlReader {
 
   double number(const std::string& key, const NumberCheck& check) const;
   double numberOr(const std::string& key, double fallback, const NumberCheck& check) const;
+  /// A number, or std::nullopt when the value is the word `word` (e.g. "optimize").
+  std::optional<double> numberOrWord(const std::string& key, const std::string& word,
+                                     const NumberCheck& check) const;
+  /// A string that must be one of `allowed`.
+  std::string choice(const std::string& key, const std::vector<std::string>& allowed) const;
   bool boolean(const std::string& key) const;
   bool booleanOr(const std::string& key, bool fallback) const;
   std::string string(const std::string& key) const;

@@ -5,8 +5,7 @@
 namespace gaitopt::dynamics {
 namespace {
 
-using MatK = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxLinks + 2,
-                           kMaxLinks + 2>;
+using MatK = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxLinks + 2, kMaxLinks + 2>;
 
 }  // namespace
 
@@ -29,6 +28,8 @@ ReducedCoordinates reducedCoordinates(const Model& model, const VecD& theta, con
   const int n = model.nLinks();
   const bool knees = model.legLinks() >= 2;
   const int m = (knees ? 2 : 0) + (model.torso() ? 1 : 0);
+  if (n == 2)
+    throw std::invalid_argument("a two-link chain pinned at both tips is rigid: no DSP motion");
   if (m != n - 2)
     throw std::invalid_argument("the DSP of this chain has no independent coordinates");
   ReducedCoordinates out{VecD::Zero(m), MatD::Zero(m, n), VecD::Zero(m)};
@@ -58,9 +59,9 @@ ReducedDsp reducedDspModel(const Model& model, const VecD& theta, const VecD& dt
   adot << rdot, pointJacobianDot(model.tipWeights(), theta, dtheta);
 
   const auto d_ldlt = massMatrix(model, theta).ldlt();
-  const MatD sa = adot * a.inverse();                 // S_a (2.19)
+  const MatD sa = adot * a.inverse();                      // S_a (2.19)
   const MatD sb = a * d_ldlt.solve(MatD::Identity(n, n));  // S_b = [R; J] D^-1
-  const MatD sc = sb * jac.transpose();               // S_c = [R; J] D^-1 J^T
+  const MatD sc = sb * jac.transpose();                    // S_c = [R; J] D^-1 J^T
   const Eigen::Matrix2d sc2_inv = sc.bottomRows(2).inverse();
   const MatD sc1 = sc.topRows(m);
 

@@ -22,7 +22,7 @@ Vec2<S> dspConstraint(const Model& model, const Vec<S>& theta, double step_lengt
 /// constraint acceleration J ddtheta + Jdot dtheta (second time derivative of 2.9).
 template <class S>
 VecR<S> dspResidual(const Model& model, const Vec<S>& theta, const Vec<S>& dtheta,
-                   const Vec<S>& ddtheta, const Vec<S>& tau, const Vec2<S>& lambda) {
+                    const Vec<S>& ddtheta, const Vec<S>& tau, const Vec2<S>& lambda) {
   const int n = model.nLinks();
   const Mat2X<S> jac = pointJacobian(model.tipWeights(), theta);
   VecR<S> r(n + 2);
@@ -54,12 +54,12 @@ ReducedCoordinates reducedCoordinates(const Model& model, const VecD& theta, con
 /// Reduced DSP model (Mu 2.19-2.21): pddot = B pdot + C (T_theta - N) and, from (2.20b),
 /// lambda = -Sc2^-1 (Sa21 pdot + Sb2 (T_theta - N)).
 struct ReducedDsp {
-  MatD b;       ///< B ((n-2) x (n-2))
-  MatD c;       ///< C ((n-2) x n), acting on generalised torques T_theta
-  MatD lam_p;   ///< -Sc2^-1 Sa21 (2 x (n-2))
-  Mat2Xd lam_t; ///< -Sc2^-1 Sb2 (2 x n)
-  VecD n_vec;   ///< N = H dtheta + G
-  VecD pdot;    ///< R dtheta
+  MatD b;        ///< B ((n-2) x (n-2))
+  MatD c;        ///< C ((n-2) x n), acting on generalised torques T_theta
+  MatD lam_p;    ///< -Sc2^-1 Sa21 (2 x (n-2))
+  Mat2Xd lam_t;  ///< -Sc2^-1 Sb2 (2 x n)
+  VecD n_vec;    ///< N = H dtheta + G
+  VecD pdot;     ///< R dtheta
 };
 /// @throws std::invalid_argument when the chain has no DSP degrees of freedom (n = 2).
 ReducedDsp reducedDspModel(const Model& model, const VecD& theta, const VecD& dtheta);

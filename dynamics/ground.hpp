@@ -11,8 +11,8 @@ namespace gaitopt::dynamics {
 template <class S>
 Vec2<S> stanceForce(const Model& model, const Vec<S>& theta, const Vec<S>& dtheta,
                     const Vec<S>& ddtheta, const Vec2<S>& force_swing) {
-  Vec2<S> f = model.totalMass() *
-              pointAcceleration(model.totalComWeights(), theta, dtheta, ddtheta);
+  Vec2<S> f =
+      model.totalMass() * pointAcceleration(model.totalComWeights(), theta, dtheta, ddtheta);
   f(1) += model.totalMass() * model.gravity();
   return f - force_swing;
 }

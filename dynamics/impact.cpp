@@ -9,7 +9,9 @@
 namespace gaitopt::dynamics {
 namespace {
 
-double a(const Link& link) { return link.continues ? 1.0 : 0.0; }
+double a(const Link& link) {
+  return link.continues ? 1.0 : 0.0;
+}
 
 /// Sum of the masses of links first..last (inclusive, 0-based; empty when last < first).
 double massRange(const Model& model, int first, int last) {
@@ -54,8 +56,8 @@ Eigen::Matrix<double, Eigen::Dynamic, 2, 0, kMaxLinks, 2> impactU(const Model& m
   Eigen::Matrix<double, Eigen::Dynamic, 2, 0, kMaxLinks, 2> u(n, 2);
   for (int i = 0; i < n; ++i) {
     const Link& li = model.link(i);
-    const double c = -li.mass * (a(li) * li.length - li.com) -
-                     massRange(model, 0, i - 1) * a(li) * li.length;
+    const double c =
+        -li.mass * (a(li) * li.length - li.com) - massRange(model, 0, i - 1) * a(li) * li.length;
     u(i, 0) = c * std::cos(theta(i));
     u(i, 1) = -c * std::sin(theta(i));
   }
@@ -69,9 +71,9 @@ ImpactResult doubleImpact(const Model& model, const VecD& theta, const VecD& dth
   const MatD w_inv_jt = w_lu.solve(MatD(jac.transpose()));
   const Eigen::Matrix2d jwj = jac * w_inv_jt;
   ImpactResult out;
-  out.impulse_trailing = jwj.inverse() * (jac * dtheta_minus);      // (2.27)
-  const VecD delta = -w_inv_jt * out.impulse_trailing;              // (2.25)
-  out.dtheta_plus = dtheta_minus + delta;                           // (2.28)
+  out.impulse_trailing = jwj.inverse() * (jac * dtheta_minus);                     // (2.27)
+  const VecD delta = -w_inv_jt * out.impulse_trailing;                             // (2.25)
+  out.dtheta_plus = dtheta_minus + delta;                                          // (2.28)
   out.impulse_leading = momentumMap(model, theta) * delta - out.impulse_trailing;  // (2.29a)
   out.trailing_velocity.setZero();
   out.unilateral_ok = out.impulse_trailing(1) > 0;  // (2.31a)
@@ -83,17 +85,17 @@ ImpactResult doubleImpact(const Model& model, const VecD& theta, const VecD& dth
 ImpactResult singleImpact(const Model& model, const VecD& theta, const VecD& dtheta_minus) {
   const Mat2Xd jac = pointJacobian(model.tipWeights(), theta);
   const auto u = impactU(model, theta);
-  const MatD w_uj = impactW(model, theta) - u * jac;  // (2.34a), by product
-  const Vec2d tip_velocity = jac * dtheta_minus;       // Xdot_e^-
+  const MatD w_uj = impactW(model, theta) - u * jac;                     // (2.34a), by product
+  const Vec2d tip_velocity = jac * dtheta_minus;                         // Xdot_e^-
   const VecD delta = w_uj.partialPivLu().solve(VecD(u * tip_velocity));  // (2.35a)
   ImpactResult out;
-  out.dtheta_plus = dtheta_minus + delta;                                 // (2.36a)
-  out.trailing_velocity = -jac * delta - tip_velocity;                    // (2.35b)
+  out.dtheta_plus = dtheta_minus + delta;               // (2.36a)
+  out.trailing_velocity = -jac * delta - tip_velocity;  // (2.35b)
   out.impulse_leading =
       model.totalMass() * out.trailing_velocity + momentumMap(model, theta) * delta;  // (2.35c)
   out.impulse_trailing.setZero();
-  out.unilateral_ok = out.trailing_velocity(1) > 0;                           // (2.37a)
-  out.friction_ok = withinCone(out.impulse_leading, model.friction());        // (2.37b)
+  out.unilateral_ok = out.trailing_velocity(1) > 0;                     // (2.37a)
+  out.friction_ok = withinCone(out.impulse_leading, model.friction());  // (2.37b)
   return out;
 }
 
@@ -107,10 +109,14 @@ ImpactType classifyImpact(const Model& model, const VecD& theta, const VecD& dth
 
 const char* toString(ImpactType type) {
   switch (type) {
-    case ImpactType::kDouble: return "double";
-    case ImpactType::kSingle: return "single";
-    case ImpactType::kEither: return "either";
-    case ImpactType::kNeither: return "neither";
+    case ImpactType::kDouble:
+      return "double";
+    case ImpactType::kSingle:
+      return "single";
+    case ImpactType::kEither:
+      return "either";
+    case ImpactType::kNeither:
+      return "neither";
   }
   return "unknown";
 }

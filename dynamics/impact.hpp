@@ -9,10 +9,10 @@
 namespace gaitopt::dynamics {
 
 struct ImpactResult {
-  VecD dtheta_plus;        ///< post-impact absolute rates [rad/s]
-  Vec2d impulse_trailing;  ///< impulse at B [N s] (P_l; zero for a single impact)
-  Vec2d impulse_leading;   ///< impulse at E [N s] (P_r, or P_S for a single impact)
-  Vec2d trailing_velocity; ///< velocity of B after impact [m/s] (zero for a double impact)
+  VecD dtheta_plus;            ///< post-impact absolute rates [rad/s]
+  Vec2d impulse_trailing;      ///< impulse at B [N s] (P_l; zero for a single impact)
+  Vec2d impulse_leading;       ///< impulse at E [N s] (P_r, or P_S for a single impact)
+  Vec2d trailing_velocity;     ///< velocity of B after impact [m/s] (zero for a double impact)
   bool unilateral_ok = false;  ///< double: P_ly > 0 (2.31a); single: ydot_b+ > 0 (2.37a)
   bool friction_ok = false;    ///< |P_x| < mu |P_y| at every tip with an impulse (2.31b-c, 2.37b)
 };

@@ -9,7 +9,9 @@
 namespace gaitopt::dynamics {
 namespace {
 
-double a(const Link& link) { return link.continues ? 1.0 : 0.0; }
+double a(const Link& link) {
+  return link.continues ? 1.0 : 0.0;
+}
 
 /// Mass of the links after index i in chain order (sum_{k>i} m_k of eq. 2.8).
 double massBeyond(const std::vector<Link>& links, int i) {
@@ -78,8 +80,8 @@ void Model::precompute() {
   g_ = VecD::Zero(n);
   for (int i = 0; i < n; ++i) {
     const Link& li = links_[static_cast<size_t>(i)];
-    p_(i, i) = li.inertia + li.mass * li.com * li.com + a(li) * massBeyond(links_, i) * li.length *
-                                                             li.length;
+    p_(i, i) = li.inertia + li.mass * li.com * li.com +
+               a(li) * massBeyond(links_, i) * li.length * li.length;
     g_(i) = (li.mass * li.com + a(li) * massBeyond(links_, i) * li.length) * gravity_;
     for (int j = i + 1; j < n; ++j) {
       const Link& lj = links_[static_cast<size_t>(j)];

@@ -14,11 +14,11 @@ namespace gaitopt::dynamics {
 /// One rigid link. Units: kg, kg m^2 (about the CoM), m.
 struct Link {
   std::string name;
-  double mass = 0;       ///< m_i [kg]
-  double inertia = 0;    ///< I_i about the link CoM [kg m^2]
-  double length = 0;     ///< l_i [m]
-  double com = 0;        ///< d_i: CoM distance from the proximal joint along the link [m]
-  bool continues = true; ///< a_i: does the chain continue through the distal end?
+  double mass = 0;        ///< m_i [kg]
+  double inertia = 0;     ///< I_i about the link CoM [kg m^2]
+  double length = 0;      ///< l_i [m]
+  double com = 0;         ///< d_i: CoM distance from the proximal joint along the link [m]
+  bool continues = true;  ///< a_i: does the chain continue through the distal end?
 };
 
 /// One joint of q-space (q0 = stance ankle, then one per consecutive link pair).

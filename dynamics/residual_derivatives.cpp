@@ -25,8 +25,12 @@ void addSym(Eigen::MatrixXd& h, int r, int c, double v) {
 
 }  // namespace
 
-int residualRows(const Model& model, bool dsp) { return model.nLinks() + (dsp ? 2 : 0); }
-int residualCols(const Model& model, bool dsp) { return 4 * model.nLinks() + (dsp ? 2 : 0); }
+int residualRows(const Model& model, bool dsp) {
+  return model.nLinks() + (dsp ? 2 : 0);
+}
+int residualCols(const Model& model, bool dsp) {
+  return 4 * model.nLinks() + (dsp ? 2 : 0);
+}
 
 Eigen::VectorXd residual(const Model& model, const DynamicsPoint& x, bool dsp) {
   if (dsp) return dspResidual(model, x.theta, x.dtheta, x.ddtheta, x.tau, x.lambda);
@@ -124,7 +128,8 @@ Eigen::MatrixXd residualHessian(const Model& model, const DynamicsPoint& x, bool
     addSym(h, z.th(i), z.th(i),
            sx * w(i) * (-c * x.ddtheta(i) + s * d2) + sy * w(i) * (s * x.ddtheta(i) + c * d2));
     addSym(h, z.th(i), z.ddth(i), -sx * w(i) * s - sy * w(i) * c);
-    addSym(h, z.th(i), z.dth(i), -2 * sx * w(i) * c * x.dtheta(i) + 2 * sy * w(i) * s * x.dtheta(i));
+    addSym(h, z.th(i), z.dth(i),
+           -2 * sx * w(i) * c * x.dtheta(i) + 2 * sy * w(i) * s * x.dtheta(i));
     addSym(h, z.dth(i), z.dth(i), -2 * sx * w(i) * s - 2 * sy * w(i) * c);
   }
   return h;

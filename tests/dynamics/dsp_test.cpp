@@ -69,9 +69,9 @@ TEST_P(DspTest, AccelerationsKeepBothTipsPinned) {
         dynamics::pointAcceleration(model_.tipWeights(), s.theta, s.dtheta, sol.ddtheta);
     EXPECT_LT(tip_acc.norm(), 1e-10);
     EXPECT_LT(dynamics::dspConstraint(model_, s.theta, s.step_length).norm(), 1e-12);
-    EXPECT_LT(dynamics::dspResidual(model_, s.theta, s.dtheta, sol.ddtheta, tau, sol.force_swing)
-                  .norm(),
-              1e-9);
+    EXPECT_LT(
+        dynamics::dspResidual(model_, s.theta, s.dtheta, sol.ddtheta, tau, sol.force_swing).norm(),
+        1e-9);
   }
 }
 
@@ -96,12 +96,11 @@ TEST_P(DspTest, TipForcesMatchFloatingBaseAndBalanceMomentum) {
     const Vec2d f_b = forces.head<2>();
     const Vec2d a_com =
         dynamics::pointAcceleration(model_.totalComWeights(), s.theta, s.dtheta, sol.ddtheta);
-    const Vec2d residual = f_b + sol.force_swing - model_.totalMass() *
-                                                       (a_com + Vec2d(0, model_.gravity()));
+    const Vec2d residual =
+        f_b + sol.force_swing - model_.totalMass() * (a_com + Vec2d(0, model_.gravity()));
     EXPECT_LT(residual.norm(), 1e-9 * (1 + f_b.norm()));
     // stanceForce() derives F_B from the same balance: it must agree with the floating base.
-    EXPECT_LT(relErr(dynamics::stanceForce(model_, s.theta, s.dtheta, sol.ddtheta,
-                                           sol.force_swing),
+    EXPECT_LT(relErr(dynamics::stanceForce(model_, s.theta, s.dtheta, sol.ddtheta, sol.force_swing),
                      f_b, 1.0),
               1e-9);
   }

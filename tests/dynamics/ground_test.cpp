@@ -43,8 +43,8 @@ TEST_P(GroundTest, SspStanceForceMatchesFloatingBase) {
     const VecD tau = randomVec(rng_, n, -20, 20);
     const VecD ddtheta = dynamics::sspForwardDynamics(model_, theta, dtheta, tau);
     const FloatingBase fb = floatingBase(model_, theta, dtheta);
-    const auto [qdd, f] = solveKkt(fb.mass, actuation(model_, tau) - fb.bias, fb.jac_b,
-                                   Eigen::VectorXd::Zero(2));
+    const auto [qdd, f] =
+        solveKkt(fb.mass, actuation(model_, tau) - fb.bias, fb.jac_b, Eigen::VectorXd::Zero(2));
     EXPECT_LT(relErr(VecD(qdd.tail(n)), ddtheta, 1.0), 1e-9);
     EXPECT_LT(relErr(dynamics::stanceForce(model_, theta, dtheta, ddtheta, Vec2d(Vec2d::Zero())),
                      Vec2d(f), 1.0),

@@ -80,10 +80,10 @@ TEST_P(ImpactTest, SingleImpactMatchesFloatingBaseAndConservesMomentumAboutE) {
     EXPECT_LT(tip_after.norm(), 1e-10);
     // Angular momentum about the impact point E is conserved (the only impulse acts there).
     const Vec2d e = dynamics::swingTip(model_, theta);
-    const double l_minus = dynamics::angularMomentum<double>(model_, theta, dtheta,
-                                                             Vec2d::Zero(), e);
-    const double l_plus = dynamics::angularMomentum<double>(model_, theta, r.dtheta_plus,
-                                                            r.trailing_velocity, e);
+    const double l_minus =
+        dynamics::angularMomentum<double>(model_, theta, dtheta, Vec2d::Zero(), e);
+    const double l_plus =
+        dynamics::angularMomentum<double>(model_, theta, r.dtheta_plus, r.trailing_velocity, e);
     EXPECT_NEAR(l_plus, l_minus, 1e-9 * (1 + std::abs(l_minus)));
     // Impulse-momentum balance.
     const Vec2d dp =
@@ -99,8 +99,8 @@ TEST_P(ImpactTest, ZeroTipVelocityGivesNoImpulse) {
     const auto [theta, dtheta_any] = preImpact(model_, rng_);
     const int n = model_.nLinks();
     const Mat2Xd jac = dynamics::pointJacobian(model_.tipWeights(), theta);
-    const Eigen::MatrixXd proj = Eigen::MatrixXd::Identity(n, n) -
-                                 jac.transpose() * (jac * jac.transpose()).inverse() * jac;
+    const Eigen::MatrixXd proj =
+        Eigen::MatrixXd::Identity(n, n) - jac.transpose() * (jac * jac.transpose()).inverse() * jac;
     const VecD dtheta = proj * Eigen::VectorXd(dtheta_any);
     for (const auto& r : {dynamics::doubleImpact(model_, theta, dtheta),
                           dynamics::singleImpact(model_, theta, dtheta)}) {
@@ -159,10 +159,10 @@ TEST_F(MuReferenceImpact, SingleImpactImpulsesAndClassification) {
   EXPECT_LT((delta - expected).cwiseAbs().maxCoeff(), 2e-3);
   EXPECT_TRUE(r.unilateral_ok);
   EXPECT_TRUE(r.friction_ok);  // mu_S = -0.115
-  EXPECT_NEAR(dynamics::kineticEnergy<double>(model_, theta_, dtheta_) -
-                  dynamics::kineticEnergy<double>(model_, theta_, r.dtheta_plus,
-                                                  r.trailing_velocity),
-              22.889 - 16.993, 2e-3);
+  EXPECT_NEAR(
+      dynamics::kineticEnergy<double>(model_, theta_, dtheta_) -
+          dynamics::kineticEnergy<double>(model_, theta_, r.dtheta_plus, r.trailing_velocity),
+      22.889 - 16.993, 2e-3);
   EXPECT_EQ(dynamics::classifyImpact(model_, theta_, dtheta_), dynamics::ImpactType::kSingle);
 }
 

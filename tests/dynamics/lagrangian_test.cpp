@@ -31,8 +31,7 @@ TEST_P(LagrangianTest, MassMatrixIsSymmetricPositiveDefinite) {
 TEST_P(LagrangianTest, MassMatrixEqualsNumericLagrangian) {
   for (int trial = 0; trial < 50; ++trial) {
     const VecD theta = randomVec(rng_, model_.nLinks(), -M_PI, M_PI);
-    EXPECT_LT(relErr(dynamics::massMatrix(model_, theta), numericMassMatrix(model_, theta)),
-              1e-9);
+    EXPECT_LT(relErr(dynamics::massMatrix(model_, theta), numericMassMatrix(model_, theta)), 1e-9);
   }
 }
 
@@ -40,9 +39,9 @@ TEST_P(LagrangianTest, CoriolisEqualsNumericLagrangian) {
   for (int trial = 0; trial < 50; ++trial) {
     const VecD theta = randomVec(rng_, model_.nLinks(), -M_PI, M_PI);
     const VecD dtheta = randomVec(rng_, model_.nLinks(), -5, 5);
-    EXPECT_LT(relErr(dynamics::coriolis(model_, theta, dtheta),
-                     numericCoriolis(model_, theta, dtheta)),
-              1e-9);
+    EXPECT_LT(
+        relErr(dynamics::coriolis(model_, theta, dtheta), numericCoriolis(model_, theta, dtheta)),
+        1e-9);
   }
 }
 

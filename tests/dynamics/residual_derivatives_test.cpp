@@ -39,8 +39,8 @@ DynamicsPoint randomPoint(const dynamics::Model& m, std::mt19937& rng) {
   return x;
 }
 
-Eigen::MatrixXd finiteDifferenceJacobian(const dynamics::Model& m, const DynamicsPoint& x,
-                                         bool dsp, double h) {
+Eigen::MatrixXd finiteDifferenceJacobian(const dynamics::Model& m, const DynamicsPoint& x, bool dsp,
+                                         double h) {
   const Eigen::VectorXd z = pack(x, dsp);
   const int n = m.nLinks();
   Eigen::MatrixXd jac(dynamics::residualRows(m, dsp), z.size());

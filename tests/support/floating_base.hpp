@@ -11,11 +11,11 @@
 namespace gaitopt::test {
 
 struct FloatingBase {
-  Eigen::MatrixXd mass;   ///< (n+2)^2
-  Eigen::VectorXd bias;   ///< Coriolis + gravity, n+2
-  Eigen::MatrixXd jac_b;  ///< 2 x (n+2), velocity of B
-  Eigen::MatrixXd jac_e;  ///< 2 x (n+2), velocity of E
-  Eigen::Vector2d jdot_e; ///< Jdot_E qdot
+  Eigen::MatrixXd mass;    ///< (n+2)^2
+  Eigen::VectorXd bias;    ///< Coriolis + gravity, n+2
+  Eigen::MatrixXd jac_b;   ///< 2 x (n+2), velocity of B
+  Eigen::MatrixXd jac_e;   ///< 2 x (n+2), velocity of E
+  Eigen::Vector2d jdot_e;  ///< Jdot_E qdot
 };
 
 inline Eigen::MatrixXd comJacobian(const dynamics::Model& m, int i, const VecD& theta) {
@@ -25,8 +25,7 @@ inline Eigen::MatrixXd comJacobian(const dynamics::Model& m, int i, const VecD& 
   return jac;
 }
 
-inline FloatingBase floatingBase(const dynamics::Model& m, const VecD& theta,
-                                 const VecD& dtheta) {
+inline FloatingBase floatingBase(const dynamics::Model& m, const VecD& theta, const VecD& dtheta) {
   const int n = m.nLinks();
   FloatingBase fb{Eigen::MatrixXd::Zero(n + 2, n + 2), Eigen::VectorXd::Zero(n + 2),
                   Eigen::MatrixXd::Zero(2, n + 2), Eigen::MatrixXd::Zero(2, n + 2),

@@ -1,0 +1,13 @@
+#pragma once
+/// @file plotting.hpp
+/// Pictures are drawn by scripts/plots/*.py with Debian's matplotlib. A missing plotting
+/// package is a warning, never a failed run.
+#include <string>
+
+namespace gaitopt::apps {
+
+/// Runs `/usr/bin/python3 scripts/plots/<script> <args>`; prints a warning and returns false
+/// when python3 or matplotlib is missing or the script fails.
+bool runPlotScript(const std::string& script, const std::string& args);
+
+}  // namespace gaitopt::apps

@@ -1,0 +1,99 @@
+#include "apps/poly_command.hpp"
+
+#include <chrono>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "apps/command_runner.hpp"
+#include "apps/plotting.hpp"
+#include "dynamics/robot_config.hpp"
+#include "gaits/gait_summary.hpp"
+#include "gaits/hip_plan_search.hpp"
+#include "gaits/polynomial_gait.hpp"
+#include "gaits/trajectory_csv.hpp"
+
+namespace gaitopt::apps {
+namespace {
+
+nlohmann::ordered_json gaitJson(const gaits::GaitParams& p, const gaits::HipPlanSearch& search) {
+  return {{"gait",
+           {{"name", p.name},
+            {"ssp_duration", p.ssp_duration},
+            {"dsp_duration", p.dsp_duration},
+            {"apex_x", p.apex_x},
+            {"apex_height", p.apex_height},
+            {"hip_height", p.hip_height},
+            {"hip_bob", p.hip_bob},
+            {"hip_start", p.hip_start},
+            {"torso_angle", p.torso_angle}}},
+          {"hip_plan",
+           {{"velocity_start", search.plan.velocity_start},
+            {"velocity_touchdown", search.plan.velocity_touchdown},
+            {"dsp_start", search.plan.dsp_start},
+            {"dsp_stability_margin", search.margin},
+            {"algorithm", search.algorithm},
+            {"evaluations", search.evaluations}}}};
+}
+
+}  // namespace
+
+void runPoly(const PolyOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const dynamics::Model model = dynamics::loadRobot(options.robot_path);
+  const gaits::GaitParams params = gaits::loadGait(options.gait_path);
+  fmt::print("poly: {} on {}: step {:.3f} m in {:.3f} s ({:.3f} m/s)\n", params.name, model.name(),
+             params.step_length, params.duration(), params.speed());
+
+  const gaits::HipPlanSearch search = gaits::searchHipPlan(model, params);
+  fmt::print(
+      "poly: hip plan by {} ({} evaluations): V_h1 {:.4f} m/s, V_h2 {:.4f} m/s, "
+      "S_D0 {:.4f} m, DSP margin {:.4f} m\n",
+      search.algorithm, search.evaluations, search.plan.velocity_start,
+      search.plan.velocity_touchdown, search.plan.dsp_start, search.margin);
+
+  const gaits::PolynomialGait gait(model, params, search.plan);
+  const gaits::Trajectory traj = gaits::buildTrajectory(gait, model, options.rate_hz);
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  std::filesystem::create_directories(options.out_dir);
+  gaits::writeTrajectoryCsv(traj, model, options.out_dir + "/trajectory.csv");
+  auto summary = gaits::gaitSummary(traj, model, {options.gait_path, "designed", 0, elapsed, 0});
+  summary.update(gaitJson(params, search));
+  gaits::writeJsonFile(summary, options.out_dir + "/summary.json");
+  fmt::print(
+      "poly: energy {:.2f} J, CoT {:.4f}, min normal force {:.1f} N, max friction ratio "
+      "{:.3f}, min ZMP margin {:.4f} m\n",
+      summary["energy_J"].get<double>(), summary["cost_of_transport"].get<double>(),
+      summary["min_normal_force"].get<double>(), summary["max_friction_ratio"].get<double>(),
+      summary["min_zmp_margin"].get<double>());
+  if (options.plots) runPlotScript("gait_plots.py", fmt::format("'{}'", options.out_dir));
+  fmt::print("poly: wrote {}/trajectory.csv ({} samples), summary.json and pictures\n",
+             options.out_dir, traj.knots().size());
+}
+
+void registerPolyCommand(CLI::App& app) {
+  auto options = std::make_shared<PolyOptions>();
+  CLI::App* cmd =
+      app.add_subcommand("poly", "Design the polynomial gait of Mu (2004) ch. 3 and export it");
+  cmd->add_option("--robot", options->robot_path, "Robot YAML (configs/robots/*.yaml)")
+      ->required()
+      ->option_text("FILE");
+  cmd->add_option("--gait", options->gait_path, "Gait YAML (configs/gaits/*.yaml)")
+      ->required()
+      ->option_text("FILE");
+  cmd->add_option("--out", options->out_dir, "Result folder (created)")
+      ->required()
+      ->option_text("DIR");
+  cmd->add_option("--rate", options->rate_hz, "Sample rate of trajectory.csv [Hz]")
+      ->check(CLI::Range(1.0, 1e6))
+      ->default_val(1000);
+  cmd->add_flag("!--no-plots", options->plots, "Skip the pictures");
+  cmd->footer(
+      "Exit codes: 0 ok, 2 bad input file or usage, 3 gait cannot be realised (a leg "
+      "cannot reach), 1 other failure.");
+  cmd->callback([options] { runSubcommand([&] { runPoly(*options); }); });
+}
+
+}  // namespace gaitopt::apps

@@ -1,0 +1,33 @@
+#include "gaits/consistency.hpp"
+
+#include <algorithm>
+
+#include "dynamics/dsp_dynamics.hpp"
+#include "dynamics/relabel.hpp"
+
+namespace gaitopt::gaits {
+
+double maxDynamicsResidual(const Trajectory& traj, const dynamics::Model& model) {
+  double worst = 0;
+  for (const auto& k : traj.knots()) {
+    const VecD th = k.theta, dth = k.dtheta, ddth = k.ddtheta, tau = k.tau;
+    const double r = k.phase == Phase::kSsp
+                         ? dynamics::sspResidual(model, th, dth, ddth, tau).cwiseAbs().maxCoeff()
+                         : dynamics::dspResidual(model, th, dth, ddth, tau, Vec2d(k.force_swing))
+                               .cwiseAbs()
+                               .maxCoeff();
+    worst = std::max(worst, r);
+  }
+  return worst;
+}
+
+double periodicityError(const Trajectory& traj, const dynamics::Model& model) {
+  const Knot& first = traj.knots().front();
+  const Knot& last = traj.knots().back();
+  const VecD theta = dynamics::relabelAngles<double>(model, last.theta);
+  const VecD dtheta = dynamics::relabelRates<double>(last.dtheta);
+  return (theta - VecD(first.theta)).cwiseAbs().maxCoeff() +
+         (dtheta - VecD(first.dtheta)).cwiseAbs().maxCoeff();
+}
+
+}  // namespace gaitopt::gaits

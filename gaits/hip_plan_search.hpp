@@ -1,0 +1,34 @@
+#pragma once
+/// @file hip_plan_search.hpp
+/// Chooses the free hip parameters (V_h1, V_h2 and S_D0, those the gait file leaves as
+/// "optimize") to maximise the DSP stability margin of Mu (2004) sec. 3.2.3: the minimum over
+/// the DSP of the distance from the ZMP to the nearer end of the segment between the tips.
+///
+/// Method: NLopt's Subplex (LN_SBPLX), a derivative-free subspace Nelder-Mead. The objective is a
+/// minimum over time samples, so it has kinks where the worst sample changes; gradient methods
+/// stall there, while Subplex only compares values. Three bounded variables need a few hundred
+/// evaluations. Parameters at which a leg cannot reach are rejected with a penalty that grows
+/// with the number of unreachable samples, which steers the search back to feasible gaits.
+#include <string>
+
+#include "dynamics/model.hpp"
+#include "gaits/gait_params.hpp"
+#include "gaits/polynomial_gait.hpp"
+
+namespace gaitopt::gaits {
+
+struct HipPlanSearch {
+  HipPlan plan;
+  double margin = 0;      ///< DSP stability margin at the plan [m]
+  int evaluations = 0;    ///< objective evaluations
+  std::string algorithm;  ///< "LN_SBPLX", or "fixed" when nothing was free
+};
+
+/// DSP stability margin of a gait, sampled at `samples` instants of the DSP [m]: min over t of
+/// min(x_zmp, step_length - x_zmp). @throws std::domain_error if a leg cannot reach.
+double dspStabilityMargin(const PolynomialGait& gait, const dynamics::Model& model, int samples);
+
+/// @throws std::runtime_error when no reachable gait is found.
+HipPlanSearch searchHipPlan(const dynamics::Model& model, const GaitParams& params);
+
+}  // namespace gaitopt::gaits

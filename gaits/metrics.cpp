@@ -1,0 +1,149 @@
+#include "gaits/metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "dynamics/energy.hpp"
+#include "dynamics/ground.hpp"
+#include "dynamics/impact.hpp"
+#include "dynamics/joint_coordinates.hpp"
+
+namespace gaitopt::gaits {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+/// Trapezoidal rule over consecutive knots. A switch pair has zero width, so it adds nothing and
+/// the integrand may jump there (DESIGN.md sec. 5: integrals per phase).
+template <class F>
+double trapezoid(const Trajectory& traj, F integrand) {
+  const auto& knots = traj.knots();
+  double sum = 0;
+  for (size_t k = 0; k + 1 < knots.size(); ++k)
+    sum += 0.5 * (integrand(knots[k]) + integrand(knots[k + 1])) * (knots[k + 1].t - knots[k].t);
+  return sum;
+}
+
+/// Joint rates dq = M dtheta (Mu 2.41): torques tau are work-conjugate to q, not theta.
+Eigen::VectorXd jointRates(const Knot& knot) {
+  return dynamics::toJoint(VecD(knot.dtheta));
+}
+
+/// Vertical forces of the tips in contact: B always, E only in the DSP (E is in the air in the
+/// SSP, whatever its stored force says).
+template <class F>
+void forEachContact(const Knot& knot, F visit) {
+  visit(knot.force_stance);
+  if (knot.phase == Phase::kDsp) visit(knot.force_swing);
+}
+
+void requireSameRobot(const Trajectory& traj, const dynamics::Model& model) {
+  if (traj.nLinks() != model.nLinks())
+    throw std::invalid_argument(fmt::format("trajectory has {} links but robot '{}' has {}",
+                                            traj.nLinks(), model.name(), model.nLinks()));
+}
+
+/// Index of the last SSP knot before the first DSP knot: the pre-impact state at touchdown.
+std::optional<size_t> touchdownKnot(const Trajectory& traj) {
+  const auto& knots = traj.knots();
+  for (size_t k = 1; k < knots.size(); ++k)
+    if (knots[k].phase == Phase::kDsp && knots[k - 1].phase == Phase::kSsp) return k - 1;
+  return std::nullopt;
+}
+
+/// Signed distance of x to the nearest end of [lo, hi], positive inside. An undefined ZMP (no
+/// vertical force) counts as unsupported.
+double margin(double x, double lo, double hi) {
+  if (!std::isfinite(x)) return -kInfinity;
+  return std::min(x - lo, hi - x);
+}
+
+}  // namespace
+
+double absoluteWork(const Trajectory& traj) {
+  return trapezoid(
+      traj, [](const Knot& k) { return (k.tau.array() * jointRates(k).array()).abs().sum(); });
+}
+
+double torqueSquaredIntegral(const Trajectory& traj) {
+  return trapezoid(traj, [](const Knot& k) { return k.tau.squaredNorm(); });
+}
+
+double costOfTransport(const Trajectory& traj, const dynamics::Model& model) {
+  if (!(traj.stepLength() > 0))
+    throw std::invalid_argument(
+        fmt::format("cost of transport needs a positive step length, got {} m", traj.stepLength()));
+  return absoluteWork(traj) / (model.totalMass() * model.gravity() * traj.stepLength());
+}
+
+Eigen::VectorXd peakTorque(const Trajectory& traj) {
+  Eigen::VectorXd peak = Eigen::VectorXd::Zero(traj.nLinks());
+  for (const Knot& k : traj.knots()) peak = peak.cwiseMax(k.tau.cwiseAbs());
+  return peak;
+}
+
+double minNormalForce(const Trajectory& traj) {
+  double lowest = kInfinity;
+  for (const Knot& k : traj.knots())
+    forEachContact(k, [&](const Eigen::Vector2d& f) { lowest = std::min(lowest, f.y()); });
+  return lowest;
+}
+
+double maxFrictionRatio(const Trajectory& traj) {
+  double highest = 0;
+  for (const Knot& k : traj.knots())
+    forEachContact(k, [&](const Eigen::Vector2d& f) {
+      // A tip that pulls on the ground (or just touches it) needs infinite friction.
+      highest = std::max(highest, f.y() > 0 ? std::abs(f.x()) / f.y() : kInfinity);
+    });
+  return highest;
+}
+
+double zmpX(const Knot& knot, double step_length) {
+  const bool dsp = knot.phase == Phase::kDsp;
+  const Vec2d force_e = dsp ? Vec2d(knot.force_swing) : Vec2d::Zero();
+  const double x_e = dsp ? step_length : 0.0;
+  // The ground moment on the robot at B is -tau0 (conventions.hpp).
+  return dynamics::centreOfPressure<double>(0.0, knot.force_stance, -knot.tau(0), x_e, force_e);
+}
+
+double minZmpMargin(const Trajectory& traj, const dynamics::Model& model) {
+  const dynamics::Foot& foot = model.foot();
+  double lowest = kInfinity;
+  for (const Knot& k : traj.knots()) {
+    const double reach = k.phase == Phase::kDsp ? traj.stepLength() : 0.0;  // support ends at E
+    lowest = std::min(lowest, margin(zmpX(k, traj.stepLength()), -foot.heel, reach + foot.toe));
+  }
+  return lowest;
+}
+
+double touchdownVelocityJump(const Trajectory& traj, const dynamics::Model& model) {
+  requireSameRobot(traj, model);
+  const auto k = touchdownKnot(traj);
+  if (!k) return 0.0;
+  const Knot& pre = traj.knots()[*k];
+  const VecD dtheta = pre.dtheta;
+  // Rigid double impact (Mu 2.27-2.28): the rates the DSP would have to start from if the
+  // swing tip hit the ground with the SSP knot's velocity.
+  const auto impact = dynamics::doubleImpact(model, VecD(pre.theta), dtheta);
+  return (impact.dtheta_plus - dtheta).norm();
+}
+
+double impactEnergyLoss(const Trajectory& traj, const dynamics::Model& model) {
+  requireSameRobot(traj, model);
+  const auto k = touchdownKnot(traj);
+  if (!k) return 0.0;
+  const Knot& pre = traj.knots()[*k];
+  const VecD theta = pre.theta;
+  const VecD dtheta = pre.dtheta;
+  const auto impact = dynamics::doubleImpact(model, theta, dtheta);
+  return dynamics::kineticEnergy<double>(model, theta, dtheta) -
+         dynamics::kineticEnergy<double>(model, theta, impact.dtheta_plus);
+}
+
+}  // namespace gaitopt::gaits

@@ -1,0 +1,241 @@
+// Gait metrics on synthetic trajectories whose answers are known in closed form.
+#include <cmath>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <Eigen/LU>
+
+#include "dynamics/energy.hpp"
+#include "dynamics/impact.hpp"
+#include "dynamics/joint_coordinates.hpp"
+#include "dynamics/kinematics.hpp"
+#include "gaits/metrics.hpp"
+#include "support/fixtures.hpp"
+
+namespace gaitopt::test {
+namespace {
+
+using gaits::Knot;
+using gaits::Phase;
+using gaits::Trajectory;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+Knot restKnot(double t, Phase phase, int n = 5) {
+  Knot k;
+  k.t = t;
+  k.phase = phase;
+  k.theta = k.dtheta = k.ddtheta = k.tau = Eigen::VectorXd::Zero(n);
+  return k;
+}
+
+/// Knot times of a step: SSP on [0, 0.6] every 0.1 s, the switch pair, DSP to 0.7.
+std::vector<std::pair<double, Phase>> stepTimes() {
+  std::vector<std::pair<double, Phase>> times;
+  for (int i = 0; i <= 6; ++i) times.emplace_back(0.1 * i, Phase::kSsp);
+  times.emplace_back(0.1 * 6, Phase::kDsp);
+  times.emplace_back(0.7, Phase::kDsp);
+  return times;
+}
+
+/// A trajectory whose knots are `knot` with only time and phase changed.
+Trajectory constantStep(const Knot& knot, double step_length = 0.35) {
+  std::vector<Knot> knots;
+  for (const auto& [t, phase] : stepTimes()) {
+    Knot k = knot;
+    k.t = t;
+    k.phase = phase;
+    knots.push_back(k);
+  }
+  return Trajectory("test", step_length, knots);
+}
+
+/// Force at B for an SSP knot whose ZMP is at x: M_B = -tau0 = x F_y.
+Knot withZmp(Knot k, double x, double fy = 200) {
+  k.force_stance = Eigen::Vector2d(0, fy);
+  k.tau(0) = -x * fy;
+  return k;
+}
+
+// --- energy ----------------------------------------------------------------------------------
+
+TEST(GaitMetrics, AbsoluteWorkOfConstantTorqueAndRateIsExact) {
+  const Eigen::VectorXd dq = (Eigen::VectorXd(5) << 0.5, -1.2, 2.0, 0.3, -0.7).finished();
+  Knot k = restKnot(0, Phase::kSsp);
+  k.dtheta = dynamics::toAbsolute(VecD(dq));
+  k.tau = (Eigen::VectorXd(5) << 10, 20, -5, 7, -3).finished();  // mixed signs: |.| per joint
+  const Trajectory traj = constantStep(k);
+  const double expected = (k.tau.array() * dq.array()).abs().sum() * 0.7;  // = 38.29 * 0.7
+  EXPECT_NEAR(gaits::absoluteWork(traj), expected, 1e-13 * expected);
+  const auto model = loadNamed("mu2004_five_link");
+  EXPECT_NEAR(gaits::costOfTransport(traj, model),
+              expected / (model.totalMass() * model.gravity() * 0.35), 1e-13);
+  EXPECT_THROW(gaits::costOfTransport(constantStep(k, 0.0), model), std::invalid_argument);
+}
+
+TEST(GaitMetrics, TorqueSquaredOfLinearTorqueMatchesClosedForm) {
+  const Eigen::VectorXd a = (Eigen::VectorXd(3) << 4, -7, 1.5).finished();
+  const double duration = 0.7;
+  const int intervals = 1000;
+  std::vector<Knot> knots;
+  for (int i = 0; i <= intervals; ++i) {
+    Knot k = restKnot(duration * i / intervals, Phase::kSsp, 3);
+    k.tau = a * k.t;
+    knots.push_back(k);
+  }
+  const Trajectory traj("test", 0.35, knots);
+  // Integral of sum_j (a_j t)^2 over [0, T]; the trapezoid rule is O(h^2) off (5e-7 relative).
+  const double expected = a.squaredNorm() * std::pow(duration, 3) / 3;
+  EXPECT_NEAR(gaits::torqueSquaredIntegral(traj), expected, 1e-6 * expected);
+}
+
+TEST(GaitMetrics, PeakTorquePerJoint) {
+  std::vector<Knot> knots;
+  const std::vector<Eigen::Vector3d> taus{{1, -2, 0}, {-5, 1, 0.5}, {3, 4, -0.25}};
+  for (size_t i = 0; i < taus.size(); ++i) {
+    Knot k = restKnot(0.1 * static_cast<double>(i), Phase::kSsp, 3);
+    k.tau = taus[i];
+    knots.push_back(k);
+  }
+  EXPECT_EQ(gaits::peakTorque(Trajectory("test", 0.3, knots)), Eigen::Vector3d(5, 4, 0.5));
+}
+
+// --- contact forces --------------------------------------------------------------------------
+
+/// SSP knots carry a bogus force at E (E is in the air there); DSP knots a real one.
+Trajectory contactStep() {
+  std::vector<Knot> knots;
+  for (const auto& [t, phase] : stepTimes()) {
+    Knot k = restKnot(t, phase);
+    if (phase == Phase::kSsp) {
+      k.force_stance = Eigen::Vector2d(30, 300 - 100 * t);  // ratio 0.1 .. 0.125
+      k.force_swing = Eigen::Vector2d(100, -40);            // must be ignored
+    } else {
+      k.force_stance = Eigen::Vector2d(12, 120);                 // ratio 0.1
+      k.force_swing = Eigen::Vector2d(-24, t < 0.65 ? 80 : 60);  // ratio 0.3, then 0.4
+    }
+    knots.push_back(k);
+  }
+  return Trajectory("test", 0.35, knots);
+}
+
+TEST(GaitMetrics, MinNormalForceUsesOnlyTipsInContact) {
+  EXPECT_EQ(gaits::minNormalForce(contactStep()), 60);  // E in the DSP, not -40 from the SSP
+  auto knots = contactStep().knots();
+  knots.resize(7);  // SSP only: B alone, lowest at t = 0.6
+  EXPECT_NEAR(gaits::minNormalForce(Trajectory("test", 0.35, knots)), 240, 1e-12);
+}
+
+TEST(GaitMetrics, MaxFrictionRatioUsesOnlyTipsInContact) {
+  EXPECT_DOUBLE_EQ(gaits::maxFrictionRatio(contactStep()), 24.0 / 60);
+  auto knots = contactStep().knots();
+  knots.resize(7);
+  EXPECT_DOUBLE_EQ(gaits::maxFrictionRatio(Trajectory("test", 0.35, knots)), 30.0 / 240);
+  knots[3].force_stance.y() = 0;  // B touching without load: no finite friction suffices
+  EXPECT_EQ(gaits::maxFrictionRatio(Trajectory("test", 0.35, knots)), kInf);
+}
+
+// --- ZMP -------------------------------------------------------------------------------------
+
+TEST(GaitMetrics, ZmpOfAPureVerticalForceIsAtTheTipShiftedByTheAnkleTorque) {
+  Knot k = restKnot(0, Phase::kSsp);
+  k.force_stance = Eigen::Vector2d(0, 230);
+  k.force_swing = Eigen::Vector2d(0, 500);  // SSP: ignored
+  EXPECT_EQ(gaits::zmpX(k, 0.35), 0.0);
+  k.tau(0) = -230 * 0.05;  // ground moment -tau0 > 0 (ccw) moves the ZMP forward
+  EXPECT_NEAR(gaits::zmpX(k, 0.35), 0.05, 1e-15);
+  // DSP: E at the step length shares the load 1:3.
+  Knot d = restKnot(0, Phase::kDsp);
+  d.force_stance = Eigen::Vector2d(5, 100);
+  d.force_swing = Eigen::Vector2d(-5, 300);
+  EXPECT_NEAR(gaits::zmpX(d, 0.4), 0.3, 1e-15);
+}
+
+TEST(GaitMetrics, ZmpMarginUsesTheFootInSspAndBothTipsInDsp) {
+  const auto model = loadNamed("mu2004_five_link");  // heel 0.05, toe 0.15
+  ASSERT_EQ(model.foot().heel, 0.05);
+  ASSERT_EQ(model.foot().toe, 0.15);
+  std::vector<Knot> ssp{withZmp(restKnot(0, Phase::kSsp), 0.1),
+                        withZmp(restKnot(0.1, Phase::kSsp), -0.02)};
+  EXPECT_NEAR(gaits::minZmpMargin(Trajectory("test", 0.8, ssp), model), 0.03, 1e-15);
+  ssp[1] = withZmp(ssp[1], -0.08);  // behind the heel: outside, negative
+  EXPECT_NEAR(gaits::minZmpMargin(Trajectory("test", 0.8, ssp), model), -0.03, 1e-15);
+
+  // DSP with equal loads: ZMP at L/2 = 0.4, far outside the SSP foot [-0.05, 0.15] but inside
+  // [-heel, L + toe] = [-0.05, 0.95].
+  std::vector<Knot> dsp;
+  for (double t : {0.0, 0.1}) {
+    Knot k = restKnot(t, Phase::kDsp);
+    k.force_stance = k.force_swing = Eigen::Vector2d(0, 100);
+    dsp.push_back(k);
+  }
+  EXPECT_NEAR(gaits::minZmpMargin(Trajectory("test", 0.8, dsp), model), 0.45, 1e-15);
+}
+
+// --- touchdown -------------------------------------------------------------------------------
+
+class Touchdown : public ::testing::Test {
+ protected:
+  /// Stance leg leaning forward, swing leg mirrored so that E is on the ground.
+  VecD theta() const {
+    VecD th(5);
+    th << 0.3, 0.3, 0.1, M_PI - 0.3, M_PI - 0.3;
+    return th;
+  }
+  /// dtheta with the component that moves the swing tip removed: the null space of J (2.23c).
+  VecD softLanding(const VecD& dtheta) const {
+    const Eigen::MatrixXd jac = dynamics::pointJacobian(model_.tipWeights(), theta());
+    const Eigen::MatrixXd proj =
+        Eigen::MatrixXd::Identity(5, 5) - jac.transpose() * (jac * jac.transpose()).inverse() * jac;
+    return proj * dtheta;
+  }
+  Trajectory step(const VecD& dtheta_minus) const {
+    std::vector<Knot> knots{restKnot(0, Phase::kSsp), restKnot(0.5, Phase::kSsp),
+                            restKnot(0.5, Phase::kDsp), restKnot(0.6, Phase::kDsp)};
+    for (Knot& k : knots) k.theta = theta();
+    knots[1].dtheta = dtheta_minus;                                         // the pre-impact state
+    knots[0].dtheta = knots[2].dtheta = Eigen::VectorXd::Constant(5, 9.0);  // decoys
+    return Trajectory(model_.name(), 0.35, knots);
+  }
+
+  dynamics::Model model_ = loadNamed("mu2004_five_link");
+  std::mt19937 rng_{7};
+};
+
+TEST_F(Touchdown, PostureHasTheSwingTipOnTheGround) {
+  EXPECT_NEAR(dynamics::swingTip(model_, theta())(1), 0, 1e-12);
+}
+
+TEST_F(Touchdown, NoJumpWhenTheSwingTipArrivesAtRest) {
+  const VecD dtheta = softLanding(randomVec(rng_, 5, -2, 2));
+  ASSERT_LT((dynamics::pointJacobian(model_.tipWeights(), theta()) * dtheta).norm(), 1e-12);
+  ASSERT_GT(dtheta.norm(), 0.5);  // the robot still moves; only the tip is at rest
+  EXPECT_LT(gaits::touchdownVelocityJump(step(dtheta), model_), 1e-10);
+  EXPECT_LT(std::abs(gaits::impactEnergyLoss(step(dtheta), model_)), 1e-10);
+}
+
+TEST_F(Touchdown, JumpAndLossEqualTheDoubleImpactMap) {
+  VecD dtheta = randomVec(rng_, 5, -2, 2);
+  const auto impact = dynamics::doubleImpact(model_, theta(), dtheta);
+  const double jump = (impact.dtheta_plus - dtheta).norm();
+  const double loss = dynamics::kineticEnergy<double>(model_, theta(), dtheta) -
+                      dynamics::kineticEnergy<double>(model_, theta(), impact.dtheta_plus);
+  EXPECT_GT(jump, 0.1);
+  EXPECT_GT(loss, 0.0);  // a plastic impact only dissipates
+  EXPECT_EQ(gaits::touchdownVelocityJump(step(dtheta), model_), jump);
+  EXPECT_EQ(gaits::impactEnergyLoss(step(dtheta), model_), loss);
+}
+
+TEST_F(Touchdown, ZeroWithoutADoubleSupportPhase) {
+  auto knots = step(randomVec(rng_, 5, -2, 2)).knots();
+  knots.resize(2);
+  const Trajectory ssp_only(model_.name(), 0.35, knots);
+  EXPECT_EQ(gaits::touchdownVelocityJump(ssp_only, model_), 0.0);
+  EXPECT_EQ(gaits::impactEnergyLoss(ssp_only, model_), 0.0);
+}
+
+}  // namespace
+}  // namespace gaitopt::test

@@ -1,0 +1,148 @@
+// Physics of Mu's gait (Table 3.1, S_L = 0.70 m, T_S = 0.6 s, T_D = 0.1 s, apex (0, 0.05 m))
+// with the hip plan chosen by NLopt: ground forces, friction, ZMP, DSP load sharing, and an
+// independent re-simulation of the exported torques.
+#include <gtest/gtest.h>
+
+#include <boost/numeric/odeint.hpp>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "dynamics/dsp_dynamics.hpp"
+#include "dynamics/ground.hpp"
+#include "dynamics/robot_config.hpp"
+#include "dynamics/ssp_dynamics.hpp"
+#include "gaits/dsp_force_distribution.hpp"
+#include "gaits/hip_plan_search.hpp"
+#include "gaits/metrics.hpp"
+#include "gaits/trajectory_csv.hpp"
+#include "support/fixtures.hpp"
+
+namespace gaitopt::test {
+namespace {
+
+using gaits::Phase;
+
+/// The five-link robot with another friction coefficient.
+dynamics::Model withFriction(const dynamics::Model& m, double mu) {
+  return dynamics::Model(m.name(), m.links(), m.joints(), m.gravity(), mu, m.foot());
+}
+
+class MuGaitPhysics : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    model_ = new dynamics::Model(loadNamed("mu2004_five_link"));
+    params_ = new gaits::GaitParams(
+        gaits::loadGait(std::string(GAITOPT_SOURCE_DIR) + "/configs/gaits/mu2004.yaml"));
+    search_ = new gaits::HipPlanSearch(gaits::searchHipPlan(*model_, *params_));
+    const gaits::PolynomialGait gait(*model_, *params_, search_->plan);
+    traj_ = new gaits::Trajectory(gaits::buildTrajectory(gait, *model_, 1000));
+  }
+  static void TearDownTestSuite() {
+    delete traj_;
+    delete search_;
+    delete params_;
+    delete model_;
+  }
+  static dynamics::Model* model_;
+  static gaits::GaitParams* params_;
+  static gaits::HipPlanSearch* search_;
+  static gaits::Trajectory* traj_;
+};
+dynamics::Model* MuGaitPhysics::model_ = nullptr;
+gaits::GaitParams* MuGaitPhysics::params_ = nullptr;
+gaits::HipPlanSearch* MuGaitPhysics::search_ = nullptr;
+gaits::Trajectory* MuGaitPhysics::traj_ = nullptr;
+
+TEST_F(MuGaitPhysics, HipPlanSearchFindsAWideDspMargin) {
+  RecordProperty("V_h1", fmt::format("{:.4f}", search_->plan.velocity_start));
+  RecordProperty("V_h2", fmt::format("{:.4f}", search_->plan.velocity_touchdown));
+  RecordProperty("S_D0", fmt::format("{:.4f}", search_->plan.dsp_start));
+  RecordProperty("dsp_margin", fmt::format("{:.4f}", search_->margin));
+  RecordProperty("evaluations", search_->evaluations);
+  // Mu: the ZMP stays near the centre of the DSP support; the best margin is half the support.
+  EXPECT_GT(search_->margin, 0.35 * params_->step_length);
+  EXPECT_LE(search_->margin, 0.5 * params_->step_length + 1e-9);
+  // The optimum is at least as good as the hand-picked plans of notes/mu2004.md sec. 7.
+  const gaits::PolynomialGait by_hand(*model_, *params_, {0.3, 0.3, 0.17});
+  EXPECT_GE(search_->margin, gaits::dspStabilityMargin(by_hand, *model_, 41) - 1e-9);
+}
+
+TEST_F(MuGaitPhysics, VerticalGroundForcesStayPositive) {
+  const double min_fn = gaits::minNormalForce(*traj_);
+  RecordProperty("min_normal_force_N", fmt::format("{:.2f}", min_fn));
+  EXPECT_GT(min_fn, 0.0);
+}
+
+TEST_F(MuGaitPhysics, FrictionCoefficientOfPointFourSuffices) {
+  const double ratio = gaits::maxFrictionRatio(*traj_);
+  RecordProperty("max_friction_ratio", fmt::format("{:.4f}", ratio));
+  EXPECT_LE(ratio, 0.4);
+  // With mu = 0.4 in the robot, every DSP load share stays feasible.
+  const auto model04 = withFriction(*model_, 0.4);
+  for (const auto& k : traj_->knots()) {
+    if (k.phase != Phase::kDsp) continue;
+    EXPECT_TRUE(gaits::distributeDspForces(model04, k.theta, k.dtheta, k.ddtheta).feasible)
+        << "t = " << k.t;
+  }
+}
+
+TEST_F(MuGaitPhysics, DspZmpStaysWellInsideTheSupportAndEqualsTheCentreOfPressure) {
+  double margin = 1e9;
+  for (const auto& k : traj_->knots()) {
+    if (k.phase != Phase::kDsp) continue;
+    const double cop = gaits::zmpX(k, traj_->stepLength());
+    const double zmp = dynamics::zeroMomentPoint<double>(*model_, k.theta, k.dtheta, k.ddtheta);
+    EXPECT_NEAR(cop, zmp, 1e-7);
+    margin = std::min({margin, zmp, traj_->stepLength() - zmp});
+    // Forces and torques satisfy the constrained dynamics (2.11).
+    const VecR<double> r =
+        dynamics::dspResidual<double>(*model_, k.theta, k.dtheta, k.ddtheta, k.tau, k.force_swing);
+    EXPECT_LT(r.norm(), 1e-8);
+  }
+  RecordProperty("dsp_zmp_margin_1kHz", fmt::format("{:.4f}", margin));
+  EXPECT_GT(margin, 0.35 * traj_->stepLength());
+}
+
+TEST_F(MuGaitPhysics, ExportedTorquesReproduceTheSspByForwardSimulation) {
+  // Export, re-import, then integrate D ddtheta + N = M^T tau(t) from the exported initial state
+  // with tau linear between the 1 kHz samples (as a controller would apply them).
+  const std::string path =
+      (std::filesystem::temp_directory_path() / fmt::format("gaitopt_resim_{}.csv", ::getpid()))
+          .string();
+  gaits::writeTrajectoryCsv(*traj_, *model_, path);
+  const gaits::Trajectory imported = gaits::readTrajectoryCsv(path, *model_);
+  std::filesystem::remove(path);
+
+  const int n = model_->nLinks();
+  using State = std::vector<double>;
+  auto rhs = [&](const State& x, State& dx, double t) {
+    const VecD th = Eigen::Map<const Eigen::VectorXd>(x.data(), n);
+    const VecD dth = Eigen::Map<const Eigen::VectorXd>(x.data() + n, n);
+    const VecD tau = imported.at(std::min(t, params_->ssp_duration - 1e-12)).tau;
+    const VecD dd = dynamics::sspForwardDynamics(*model_, th, dth, tau);
+    for (int i = 0; i < n; ++i) {
+      dx[static_cast<size_t>(i)] = dth(i);
+      dx[static_cast<size_t>(n + i)] = dd(i);
+    }
+  };
+  const auto& k0 = imported.knots().front();
+  State x(k0.theta.data(), k0.theta.data() + n);
+  x.insert(x.end(), k0.dtheta.data(), k0.dtheta.data() + n);
+  double max_err = 0;
+  auto observe = [&](const State& s, double t) {
+    const auto ref = imported.at(std::min(t, params_->ssp_duration - 1e-12));
+    for (int i = 0; i < n; ++i)
+      max_err = std::max(max_err, std::abs(s[static_cast<size_t>(i)] - ref.theta(i)));
+  };
+  namespace ode = boost::numeric::odeint;
+  std::vector<double> times;
+  for (int k = 0; k <= 600; ++k) times.push_back(params_->ssp_duration * k / 600);
+  ode::integrate_times(ode::make_dense_output(1e-10, 1e-10, ode::runge_kutta_dopri5<State>()), rhs,
+                       x, times, 1e-4, observe);
+  RecordProperty("resimulation_max_angle_error_rad", fmt::format("{:.3e}", max_err));
+  EXPECT_LT(max_err, 1e-3);
+}
+
+}  // namespace
+}  // namespace gaitopt::test
