@@ -98,6 +98,7 @@ double dspStabilityMargin(const PolynomialGait& gait, const dynamics::Model& mod
 }
 
 HipPlanSearch searchHipPlan(const dynamics::Model& model, const GaitParams& params) {
+  requireKneedLegs(model);  // before NLopt, which would swallow the message
   SearchContext ctx{&model, &params, {}, {}};
   ctx.free = freeParams(params, ctx.base);
   if (ctx.free.empty()) {
@@ -120,12 +121,19 @@ HipPlanSearch searchHipPlan(const dynamics::Model& model, const GaitParams& para
   opt.set_maxeval(3000);
   double value = 0;
   opt.optimize(x, value);
+  const HipPlan best = ctx.planAt(x.data());
+  if (value >= kPenalty) {
+    // No reachable plan: let the gait itself say where and by how much a leg falls short.
+    const PolynomialGait gait(model, params, best);
+    for (int k = 0; k <= kReachSamples; ++k)
+      gait.kinematics(params.ssp_duration * k / kReachSamples, Phase::kSsp);
+    dspStabilityMargin(gait, model, kMarginSamples);
+  }
   if (value > 0)
-    throw std::runtime_error(fmt::format(
-        "gait '{}': no hip plan keeps both legs within reach and the ZMP between the tips "
-        "(best margin {:.4f} m)",
+    throw std::domain_error(fmt::format(
+        "gait '{}': no hip plan keeps the DSP ZMP between the tips (best margin {:.4f} m)",
         params.name, -value));
-  return {ctx.planAt(x.data()), -value, ctx.evaluations, "LN_SBPLX"};
+  return {best, -value, ctx.evaluations, "LN_SBPLX"};
 }
 
 }  // namespace gaitopt::gaits

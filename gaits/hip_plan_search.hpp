@@ -28,7 +28,8 @@ struct HipPlanSearch {
 /// min(x_zmp, step_length - x_zmp). @throws std::domain_error if a leg cannot reach.
 double dspStabilityMargin(const PolynomialGait& gait, const dynamics::Model& model, int samples);
 
-/// @throws std::runtime_error when no reachable gait is found.
+/// @throws std::domain_error when no plan keeps the legs within reach (the message names the
+///         time and the reachable range) or the DSP ZMP between the tips.
 HipPlanSearch searchHipPlan(const dynamics::Model& model, const GaitParams& params);
 
 }  // namespace gaitopt::gaits

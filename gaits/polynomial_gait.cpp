@@ -32,13 +32,17 @@ PointMotion difference(const PointMotion& a, const PointMotion& b) {
 
 }  // namespace
 
-PolynomialGait::PolynomialGait(const dynamics::Model& model, GaitParams params, HipPlan plan)
-    : model_(&model), params_(std::move(params)), plan_(plan) {
+void requireKneedLegs(const dynamics::Model& model) {
   if (model.legLinks() != 2)
     throw std::invalid_argument(fmt::format(
         "the polynomial gait (Mu ch. 3) needs legs of two links (thigh and shank); robot '{}' "
         "has {} per leg",
         model.name(), model.legLinks()));
+}
+
+PolynomialGait::PolynomialGait(const dynamics::Model& model, GaitParams params, HipPlan plan)
+    : model_(&model), params_(std::move(params)), plan_(plan) {
+  requireKneedLegs(model);
   const double l = params_.step_length;
   const double t_s = params_.ssp_duration;
   // x_a: cubic with (3.7), (3.8), (3.9), (3.11).

@@ -19,6 +19,9 @@ struct HipPlan {
   double dsp_start = 0;           ///< S_D0 [m]
 };
 
+/// @throws std::invalid_argument unless every leg has two links (thigh and shank).
+void requireKneedLegs(const dynamics::Model& model);
+
 /// Joint-space kinematics at one instant.
 struct GaitKinematics {
   VecD theta, dtheta, ddtheta;

@@ -4,13 +4,14 @@
 set -euo pipefail
 build=${1:-build}
 root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"  # relative paths in every output (summary.json echoes the config path)
 bin="$build/apps/gaitopt"
 [[ -x "$bin" ]] || { echo "demo: $bin not built (run make build)" >&2; exit 1; }
-out="$root/results/inspect"
+out="results/inspect"
 mkdir -p "$out"
 
 echo "== gaitopt inspect: every shipped robot at its standing posture"
-for robot in "$root"/configs/robots/*.yaml; do
+for robot in configs/robots/*.yaml; do
   name=$(basename "$robot" .yaml)
   "$bin" inspect --robot "$robot" >"$out/$name.json.tmp" && mv "$out/$name.json.tmp" "$out/$name.json"
   /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); \
@@ -19,12 +20,19 @@ CoM height {d['com']['position'][1]:.3f} m\")" "$out/$name.json"
 done
 
 echo "== Mu (2004) Table 4.1 posture: dynamics and the angle-convention picture"
-"$bin" inspect --robot "$root/configs/robots/mu2004_five_link.yaml" \
-  --state "$root/configs/states/mu2004_table41.json" >"$out/mu2004_table41.json"
+"$bin" inspect --robot "configs/robots/mu2004_five_link.yaml" \
+  --state "configs/states/mu2004_table41.json" >"$out/mu2004_table41.json"
 if /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
-  /usr/bin/python3 "$root/scripts/plots/convention.py" "$out/mu2004_table41.json" "$root/results/convention.png"
+  /usr/bin/python3 "scripts/plots/convention.py" "$out/mu2004_table41.json" "results/convention.png"
   echo "  picture: results/convention.png"
 else
   echo "  warning: python3-matplotlib missing, no picture drawn (scripts/install-deps.sh installs it)" >&2
 fi
-echo "Results are in $root/results/ (inspect/*.json, convention.png)."
+echo "== gaitopt poly: Mu (2004) ch. 3 polynomial gait of the five-link robot"
+"$bin" poly --robot "configs/robots/mu2004_five_link.yaml" \
+  --gait "configs/gaits/mu2004.yaml" --out "results/poly_mu2004"
+
+echo "Results are in $root/results/:"
+echo "  inspect/*.json          robot models and dynamics at a posture"
+echo "  convention.png          angle convention"
+echo "  poly_mu2004/            polynomial gait: trajectory.csv (1 kHz), summary.json, *.png"

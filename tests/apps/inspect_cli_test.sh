@@ -10,32 +10,8 @@ fi
 GAITOPT=$1
 ROOT=$2
 ROBOT="$ROOT/configs/robots/mu2004_five_link.yaml"
-PY=/usr/bin/python3
-
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
-
-# Runs gaitopt with the given arguments, keeping stdout, stderr and the exit code.
-run() {
-  "$GAITOPT" "$@" >"$TMP/out" 2>"$TMP/err"
-  RC=$?
-}
-
-# Runs the Python assertions read from stdin with `d` bound to the JSON in $TMP/out; $1 names
-# the check. The snippet comes from a quoted heredoc, so it may use any quotes.
-check_json() {
-  local name=$1
-  {
-    printf '%s\n' "import json, sys" "with open(sys.argv[1]) as f:" "    d = json.load(f)"
-    cat
-  } >"$TMP/check.py"
-  "$PY" "$TMP/check.py" "$TMP/out" || fail "$name"
-}
+# shellcheck source=tests/apps/cli_test_lib.sh
+source "$(dirname "$0")/cli_test_lib.sh"
 
 # (a) default standing posture of the five-link robot.
 run inspect --robot "$ROBOT"

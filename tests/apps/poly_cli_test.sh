@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# End-to-end checks of `gaitopt poly`: outputs, summary values and exit codes.
+# Usage: poly_cli_test.sh <path to gaitopt binary> <repo root>
+set -u
+[[ $# -eq 2 ]] || { echo "usage: $0 <gaitopt binary> <repo root>" >&2; exit 1; }
+GAITOPT=$1
+ROOT=$2
+ROBOT="$ROOT/configs/robots/mu2004_five_link.yaml"
+GAIT="$ROOT/configs/gaits/mu2004.yaml"
+# shellcheck source=tests/apps/cli_test_lib.sh
+source "$(dirname "$0")/cli_test_lib.sh"
+
+# (a) the Mu gait at 200 Hz, no pictures: files, sample count and physics in summary.json.
+run poly --robot "$ROBOT" --gait "$GAIT" --out "$TMP/poly" --rate 200 --no-plots
+[[ $RC -eq 0 ]] || fail "(a) poly exited $RC: $(cat "$TMP/err")"
+[[ -f "$TMP/poly/trajectory.csv" && -f "$TMP/poly/summary.json" ]] || fail "(a) outputs missing"
+rows=$(($(wc -l <"$TMP/poly/trajectory.csv") - 1))
+[[ $rows -eq 142 ]] || fail "(a) expected 141 grid samples + the touchdown pair = 142 rows, got $rows"
+check_json "(a) summary values" "$TMP/poly/summary.json" <<'PY'
+assert d["status"] == "designed" and d["robot"] == "mu2004_five_link"
+assert abs(d["step_length"] - 0.35) < 1e-12 and abs(d["duration"] - 0.7) < 1e-12
+assert [p["name"] for p in d["phases"]] == ["SSP", "DSP"]
+assert d["min_normal_force"] > 0, d["min_normal_force"]
+assert d["max_friction_ratio"] <= 0.4, d["max_friction_ratio"]
+assert d["hip_plan"]["dsp_stability_margin"] > 0.35 * 0.35, d["hip_plan"]
+assert d["max_defect"] < 1e-8, d["max_defect"]
+assert d["periodicity_error"] < 1e-10, d["periodicity_error"]
+assert d["impact_energy_loss_J"] < 1e-10, d["impact_energy_loss_J"]
+assert abs(d["cost_of_transport"] - d["energy_J"] / (d["total_mass"] * 9.81 * 0.35)) < 1e-12
+PY
+
+# (b) a gait file with a typo names the file and key; exit code 2.
+sed 's/ssp_duration/ssp_duraton/' "$GAIT" >"$TMP/typo.yaml"
+run poly --robot "$ROBOT" --gait "$TMP/typo.yaml" --out "$TMP/typo" --no-plots
+[[ $RC -eq 2 ]] || fail "(b) expected exit 2, got $RC"
+grep -q "typo.yaml:.*key 'ssp_duraton': unknown key" "$TMP/err" || fail "(b) message: $(cat "$TMP/err")"
+[[ ! -e "$TMP/typo" ]] || fail "(b) an output folder was created for a bad input"
+
+# (c) a hip higher than the legs reach: exit code 3, message with time and range.
+sed 's/height: 0.59/height: 0.70/' "$GAIT" >"$TMP/high.yaml"
+run poly --robot "$ROBOT" --gait "$TMP/high.yaml" --out "$TMP/high" --no-plots
+[[ $RC -eq 3 ]] || fail "(c) expected exit 3, got $RC: $(cat "$TMP/err")"
+grep -q "leg cannot reach" "$TMP/err" || fail "(c) message: $(cat "$TMP/err")"
+
+# (d) a knee-less robot is refused clearly.
+run poly --robot "$ROOT/configs/robots/compass_gait.yaml" --gait "$GAIT" --out "$TMP/cg" --no-plots
+[[ $RC -ne 0 ]] && grep -q "needs legs of two links" "$TMP/err" || fail "(d) $(cat "$TMP/err")"
+echo "poly CLI: all checks passed"
