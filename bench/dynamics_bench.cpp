@@ -45,130 +45,47 @@ const Fixture& fixture() {
   return f;
 }
 
-// Every loop copies its inputs into locals and passes them through DoNotOptimize on each
-// iteration, so the compiler can neither constant-fold the call nor hoist it out of the loop.
-
-void BM_MassMatrix(benchmark::State& state) {
-  const Fixture& f = fixture();
-  VecD theta = f.x.theta;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(theta);
-    benchmark::DoNotOptimize(massMatrix<double>(f.model, theta));
-  }
-}
-BENCHMARK(BM_MassMatrix);
-
-void BM_Coriolis(benchmark::State& state) {
-  const Fixture& f = fixture();
-  VecD theta = f.x.theta, dtheta = f.x.dtheta;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(theta);
-    benchmark::DoNotOptimize(dtheta);
-    benchmark::DoNotOptimize(coriolis<double>(f.model, theta, dtheta));
-  }
-}
-BENCHMARK(BM_Coriolis);
-
-void BM_Gravity(benchmark::State& state) {
-  const Fixture& f = fixture();
-  VecD theta = f.x.theta;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(theta);
-    benchmark::DoNotOptimize(gravityVector<double>(f.model, theta));
-  }
-}
-BENCHMARK(BM_Gravity);
-
-void BM_SspForwardDynamics(benchmark::State& state) {
-  const Fixture& f = fixture();
-  VecD theta = f.x.theta, dtheta = f.x.dtheta, tau = f.x.tau;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(theta);
-    benchmark::DoNotOptimize(dtheta);
-    benchmark::DoNotOptimize(tau);
-    benchmark::DoNotOptimize(sspForwardDynamics(f.model, theta, dtheta, tau));
-  }
-}
-BENCHMARK(BM_SspForwardDynamics);
-
-void BM_DspForwardDynamics(benchmark::State& state) {
-  const Fixture& f = fixture();
-  VecD theta = f.x.theta, dtheta = f.x.dtheta, tau = f.x.tau;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(theta);
-    benchmark::DoNotOptimize(dtheta);
-    benchmark::DoNotOptimize(tau);
-    benchmark::DoNotOptimize(dspForwardDynamics(f.model, theta, dtheta, tau));
-  }
-}
-BENCHMARK(BM_DspForwardDynamics);
-
-void BM_Residual(benchmark::State& state, bool dsp) {
+/// Times fn(model, x). The state is a local passed through DoNotOptimize on every iteration, so
+/// the compiler can neither constant-fold the call nor hoist it out of the loop.
+template <class Fn>
+void timeAtState(benchmark::State& state, Fn fn) {
   const Fixture& f = fixture();
   DynamicsPoint x = f.x;
   for (auto _ : state) {
     benchmark::DoNotOptimize(x);
-    benchmark::DoNotOptimize(residual(f.model, x, dsp));
+    benchmark::DoNotOptimize(fn(f.model, x));
   }
 }
-BENCHMARK_CAPTURE(BM_Residual, ssp, false)->Name("BM_SspResidual");
-BENCHMARK_CAPTURE(BM_Residual, dsp, true)->Name("BM_DspResidual");
 
-void BM_ResidualJacobian(benchmark::State& state, bool dsp) {
-  const Fixture& f = fixture();
-  DynamicsPoint x = f.x;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(x);
-    benchmark::DoNotOptimize(residualJacobian(f.model, x, dsp));
-  }
+template <class Fn>
+void add(const char* name, Fn fn) {
+  benchmark::RegisterBenchmark(name, [fn](benchmark::State& s) { timeAtState(s, fn); });
 }
-BENCHMARK_CAPTURE(BM_ResidualJacobian, ssp, false)->Name("BM_SspResidualJacobian");
-BENCHMARK_CAPTURE(BM_ResidualJacobian, dsp, true)->Name("BM_DspResidualJacobian");
 
-void BM_ResidualHessian(benchmark::State& state, bool dsp) {
-  const Fixture& f = fixture();
-  DynamicsPoint x = f.x;
-  const Eigen::VectorXd sigma = Eigen::VectorXd::Ones(residualRows(f.model, dsp));
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(x);
-    benchmark::DoNotOptimize(residualHessian(f.model, x, dsp, sigma));
-  }
+void registerAll() {
+  using X = const DynamicsPoint&;
+  using M = const Model&;
+  const Eigen::VectorXd ones_ssp = Eigen::VectorXd::Ones(5);
+  const Eigen::VectorXd ones_dsp = Eigen::VectorXd::Ones(7);
+  add("BM_MassMatrix", [](M m, X x) { return massMatrix<double>(m, x.theta); });
+  add("BM_Coriolis", [](M m, X x) { return coriolis<double>(m, x.theta, x.dtheta); });
+  add("BM_Gravity", [](M m, X x) { return gravityVector<double>(m, x.theta); });
+  add("BM_SspForwardDynamics",
+      [](M m, X x) { return sspForwardDynamics(m, x.theta, x.dtheta, x.tau); });
+  add("BM_DspForwardDynamics",
+      [](M m, X x) { return dspForwardDynamics(m, x.theta, x.dtheta, x.tau); });
+  add("BM_SspResidual", [](M m, X x) { return residual(m, x, false); });
+  add("BM_DspResidual", [](M m, X x) { return residual(m, x, true); });
+  add("BM_SspResidualJacobian", [](M m, X x) { return residualJacobian(m, x, false); });
+  add("BM_DspResidualJacobian", [](M m, X x) { return residualJacobian(m, x, true); });
+  add("BM_SspResidualHessian",
+      [ones_ssp](M m, X x) { return residualHessian(m, x, false, ones_ssp); });
+  add("BM_DspResidualHessian",
+      [ones_dsp](M m, X x) { return residualHessian(m, x, true, ones_dsp); });
+  add("BM_DoubleImpact", [](M m, X x) { return doubleImpact(m, x.theta, x.dtheta); });
+  add("BM_SingleImpact", [](M m, X x) { return singleImpact(m, x.theta, x.dtheta); });
+  add("BM_ReducedDspModel", [](M m, X x) { return reducedDspModel(m, x.theta, x.dtheta); });
 }
-BENCHMARK_CAPTURE(BM_ResidualHessian, ssp, false)->Name("BM_SspResidualHessian");
-BENCHMARK_CAPTURE(BM_ResidualHessian, dsp, true)->Name("BM_DspResidualHessian");
-
-void BM_DoubleImpact(benchmark::State& state) {
-  const Fixture& f = fixture();
-  VecD theta = f.x.theta, dtheta = f.x.dtheta;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(theta);
-    benchmark::DoNotOptimize(dtheta);
-    benchmark::DoNotOptimize(doubleImpact(f.model, theta, dtheta));
-  }
-}
-BENCHMARK(BM_DoubleImpact);
-
-void BM_SingleImpact(benchmark::State& state) {
-  const Fixture& f = fixture();
-  VecD theta = f.x.theta, dtheta = f.x.dtheta;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(theta);
-    benchmark::DoNotOptimize(dtheta);
-    benchmark::DoNotOptimize(singleImpact(f.model, theta, dtheta));
-  }
-}
-BENCHMARK(BM_SingleImpact);
-
-void BM_ReducedDspModel(benchmark::State& state) {
-  const Fixture& f = fixture();
-  VecD theta = f.x.theta, dtheta = f.x.dtheta;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(theta);
-    benchmark::DoNotOptimize(dtheta);
-    benchmark::DoNotOptimize(reducedDspModel(f.model, theta, dtheta));
-  }
-}
-BENCHMARK(BM_ReducedDspModel);
 
 }  // namespace
 
@@ -182,6 +99,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "dynamics_bench: cannot load the robot: %s\n", e.what());
     return 1;
   }
+  registerAll();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

@@ -19,7 +19,7 @@ json="$(mktemp "${TMPDIR:-/tmp}/dynamics_bench.XXXXXX.json")"
 trap 'rm -f "$json"' EXIT
 
 # Every repetition is reported (no aggregates_only) so the minimum can be computed below.
-"$bin" --benchmark_repetitions=15 --benchmark_format=json >"$json"
+"$bin" --benchmark_repetitions=15 --benchmark_min_time=0.05 --benchmark_format=json >"$json"
 
 cpu="$(sed -n 's/^model name[[:space:]]*:[[:space:]]*//p' /proc/cpuinfo | head -n 1)"
 echo "Machine: $(nproc) CPUs, ${cpu:-unknown CPU}; date: $(date -u '+%Y-%m-%d %H:%M:%S UTC')"
