@@ -1,0 +1,205 @@
+#include "ocp/ipopt_adapter.hpp"
+
+#include <chrono>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <IpIpoptApplication.hpp>
+#include <IpSolveStatistics.hpp>
+#include <IpTNLP.hpp>
+
+namespace gaitopt::ocp {
+namespace {
+
+using Ipopt::Index;
+using Ipopt::Number;
+using Clock = std::chrono::steady_clock;
+
+/// Accumulates the wall time of one callback into a total.
+class CallbackTimer {
+ public:
+  explicit CallbackTimer(double& total) : total_(total), start_(Clock::now()) {}
+  ~CallbackTimer() { total_ += std::chrono::duration<double>(Clock::now() - start_).count(); }
+  CallbackTimer(const CallbackTimer&) = delete;
+  CallbackTimer& operator=(const CallbackTimer&) = delete;
+
+ private:
+  double& total_;
+  Clock::time_point start_;
+};
+
+const char* statusName(Ipopt::SolverReturn status) {
+  switch (status) {
+    case Ipopt::SUCCESS:
+      return "Solve_Succeeded";
+    case Ipopt::MAXITER_EXCEEDED:
+      return "Maximum_Iterations_Exceeded";
+    case Ipopt::CPUTIME_EXCEEDED:
+      return "Maximum_CpuTime_Exceeded";
+    case Ipopt::STOP_AT_TINY_STEP:
+      return "Search_Direction_Becomes_Too_Small";
+    case Ipopt::STOP_AT_ACCEPTABLE_POINT:
+      return "Solved_To_Acceptable_Level";
+    case Ipopt::LOCAL_INFEASIBILITY:
+      return "Infeasible_Problem_Detected";
+    case Ipopt::USER_REQUESTED_STOP:
+      return "User_Requested_Stop";
+    case Ipopt::DIVERGING_ITERATES:
+      return "Diverging_Iterates";
+    case Ipopt::RESTORATION_FAILURE:
+      return "Restoration_Failed";
+    case Ipopt::ERROR_IN_STEP_COMPUTATION:
+      return "Error_In_Step_Computation";
+    case Ipopt::INVALID_NUMBER_DETECTED:
+      return "Invalid_Number_Detected";
+    case Ipopt::TOO_FEW_DEGREES_OF_FREEDOM:
+      return "Not_Enough_Degrees_Of_Freedom";
+    case Ipopt::INVALID_OPTION:
+      return "Invalid_Option";
+    case Ipopt::OUT_OF_MEMORY:
+      return "Insufficient_Memory";
+    case Ipopt::INTERNAL_ERROR:
+      return "Internal_Error";
+    default:
+      return "Unknown_Error";
+  }
+}
+
+class Adapter : public Ipopt::TNLP {
+ public:
+  Adapter(const Nlp& nlp, SolveResult& result, bool progress)
+      : nlp_(nlp), result_(result), progress_(progress) {
+    jac_.record(nlp.jacobianTriplets(nlp.initialGuess()));
+    hess_.record(
+        nlp.hessianTriplets(nlp.initialGuess(), 1.0, Eigen::VectorXd::Ones(nlp.constraints())));
+  }
+
+  bool get_nlp_info(Index& n, Index& m, Index& nnz_jac, Index& nnz_h,
+                    IndexStyleEnum& style) override {
+    n = nlp_.variables();
+    m = nlp_.constraints();
+    nnz_jac = jac_.nonZeros();
+    nnz_h = hess_.nonZeros();
+    style = C_STYLE;
+    return true;
+  }
+
+  bool get_bounds_info(Index n, Number* xl, Number* xu, Index m, Number* gl, Number* gu) override {
+    Eigen::Map<Eigen::VectorXd>(xl, n) = nlp_.lowerBounds();
+    Eigen::Map<Eigen::VectorXd>(xu, n) = nlp_.upperBounds();
+    Eigen::Map<Eigen::VectorXd>(gl, m) = nlp_.constraintLower();
+    Eigen::Map<Eigen::VectorXd>(gu, m) = nlp_.constraintUpper();
+    return true;
+  }
+
+  bool get_starting_point(Index n, bool init_x, Number* x, bool init_z, Number*, Number*, Index,
+                          bool init_lambda, Number*) override {
+    if (init_z || init_lambda) return false;  // warm starts pass x only
+    if (init_x) Eigen::Map<Eigen::VectorXd>(x, n) = nlp_.initialGuess();
+    return true;
+  }
+
+  bool eval_f(Index n, const Number* x, bool, Number& f) override {
+    const CallbackTimer t(result_.callback_time_s);
+    f = nlp_.cost(vec(x, n));
+    return std::isfinite(f);
+  }
+
+  bool eval_grad_f(Index n, const Number* x, bool, Number* grad) override {
+    const CallbackTimer t(result_.callback_time_s);
+    Eigen::Map<Eigen::VectorXd>(grad, n) = nlp_.costGradient(vec(x, n));
+    return true;
+  }
+
+  bool eval_g(Index n, const Number* x, bool, Index m, Number* g) override {
+    const CallbackTimer t(result_.callback_time_s);
+    Eigen::Map<Eigen::VectorXd>(g, m) = nlp_.constraintValues(vec(x, n));
+    return true;
+  }
+
+  bool eval_jac_g(Index n, const Number* x, bool, Index, Index, Index* rows, Index* cols,
+                  Number* values) override {
+    const CallbackTimer t(result_.callback_time_s);
+    if (values == nullptr) return fillStructure(jac_, rows, cols);
+    jac_.accumulate(nlp_.jacobianTriplets(vec(x, n)), values);
+    return true;
+  }
+
+  bool eval_h(Index n, const Number* x, bool, Number obj_factor, Index m, const Number* lambda,
+              bool, Index, Index* rows, Index* cols, Number* values) override {
+    const CallbackTimer t(result_.callback_time_s);
+    if (values == nullptr) return fillStructure(hess_, rows, cols);
+    hess_.accumulate(nlp_.hessianTriplets(vec(x, n), obj_factor, vec(lambda, m)), values);
+    return true;
+  }
+
+  bool intermediate_callback(Ipopt::AlgorithmMode, Index iter, Number obj, Number inf_pr,
+                             Number inf_du, Number, Number, Number, Number, Number, Index,
+                             const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
+    if (progress_)
+      fmt::print("  iter {:4d}  cost {: .6e}  infeasibility {:.2e}  dual {:.2e}\n", iter, obj,
+                 inf_pr, inf_du);
+    return true;
+  }
+
+  void finalize_solution(Ipopt::SolverReturn status, Index n, const Number* x, const Number*,
+                         const Number*, Index, const Number*, const Number*, Number obj,
+                         const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
+    result_.status = statusName(status);
+    result_.success = status == Ipopt::SUCCESS;
+    result_.x = vec(x, n);
+    result_.cost = obj;
+  }
+
+ private:
+  static Eigen::VectorXd vec(const Number* p, Index n) {
+    return Eigen::Map<const Eigen::VectorXd>(p, n);
+  }
+  static bool fillStructure(const SparsityPattern& pattern, Index* rows, Index* cols) {
+    std::copy(pattern.rows().begin(), pattern.rows().end(), rows);
+    std::copy(pattern.cols().begin(), pattern.cols().end(), cols);
+    return true;
+  }
+
+  const Nlp& nlp_;
+  SolveResult& result_;
+  bool progress_;
+  SparsityPattern jac_, hess_;
+};
+
+double maxViolation(const Nlp& nlp, const Eigen::VectorXd& x) {
+  const Eigen::VectorXd g = nlp.constraintValues(x);
+  const double rows = std::max(
+      {0.0, (nlp.constraintLower() - g).maxCoeff(), (g - nlp.constraintUpper()).maxCoeff()});
+  const double bounds =
+      std::max({0.0, (nlp.lowerBounds() - x).maxCoeff(), (x - nlp.upperBounds()).maxCoeff()});
+  return std::max(rows, bounds);
+}
+
+}  // namespace
+
+SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options) {
+  const auto start = Clock::now();
+  SolveResult result;
+  Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
+  app->Options()->SetNumericValue("tol", options.tolerance);
+  app->Options()->SetIntegerValue("max_iter", options.max_iterations);
+  app->Options()->SetStringValue("hessian_approximation", options.hessian);
+  app->Options()->SetStringValue("linear_solver", options.linear_solver);
+  app->Options()->SetIntegerValue("print_level", options.print_level);
+  app->Options()->SetStringValue("sb", "yes");  // no Ipopt banner
+  if (app->Initialize() != Ipopt::Solve_Succeeded)
+    throw std::runtime_error("Ipopt could not be initialised (check the solver options)");
+  Ipopt::SmartPtr<Ipopt::TNLP> adapter = new Adapter(nlp, result, options.progress);
+  const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(adapter);
+  if (result.x.size() == 0) {  // Ipopt failed before finalize_solution
+    result.status = fmt::format("Ipopt_Error_{}", static_cast<int>(status));
+    result.x = nlp.initialGuess();
+  }
+  result.iterations = IsValid(app->Statistics()) ? app->Statistics()->IterationCount() : 0;
+  result.max_violation = maxViolation(nlp, result.x);
+  result.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();
+  return result;
+}
+
+}  // namespace gaitopt::ocp

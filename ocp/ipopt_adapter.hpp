@@ -1,0 +1,37 @@
+#pragma once
+/// @file ipopt_adapter.hpp
+/// Solves an Nlp with Ipopt (Debian's coinor-libipopt, MUMPS). The adapter only translates:
+/// bounds, the fixed sparsity patterns recorded at the initial guess, values, and the final
+/// status. Every option comes from SolverOptions (no silent defaults).
+#include <string>
+
+#include <Eigen/Core>
+
+#include "ocp/nlp.hpp"
+
+namespace gaitopt::ocp {
+
+struct SolverOptions {
+  double tolerance = 1e-6;              ///< Ipopt tol
+  int max_iterations = 500;             ///< Ipopt max_iter
+  std::string hessian = "exact";        ///< "exact" or "limited-memory"
+  std::string linear_solver = "mumps";  ///< Debian's Ipopt ships MUMPS
+  int print_level = 0;                  ///< 0 silent ... 5 Ipopt's iteration table
+  bool progress = false;                ///< one line per iteration on stdout (ours)
+};
+
+struct SolveResult {
+  std::string status;  ///< Ipopt's SolverReturn name, e.g. "Solve_Succeeded"
+  bool success = false;
+  int iterations = 0;
+  double cost = 0;
+  double max_violation = 0;  ///< worst constraint or bound violation at x
+  Eigen::VectorXd x;         ///< last iterate
+  double wall_time_s = 0;
+  double callback_time_s = 0;  ///< time spent evaluating the Nlp (ours, not Ipopt's)
+};
+
+/// @throws std::runtime_error if Ipopt cannot be initialised (bad option).
+SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options);
+
+}  // namespace gaitopt::ocp

@@ -1,0 +1,134 @@
+#include "ocp/nlp.hpp"
+
+#include <map>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace gaitopt::ocp {
+namespace {
+
+Eigen::VectorXd append(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  Eigen::VectorXd out(a.size() + b.size());
+  out << a, b;
+  return out;
+}
+
+}  // namespace
+
+void SparsityPattern::record(const Triplets& entries) {
+  std::map<std::pair<int, int>, int> index;
+  rows_.clear();
+  cols_.clear();
+  slot_.clear();
+  for (const auto& e : entries) {
+    const auto key = std::make_pair(e.row(), e.col());
+    auto it = index.find(key);
+    if (it == index.end()) {
+      it = index.emplace(key, static_cast<int>(rows_.size())).first;
+      rows_.push_back(e.row());
+      cols_.push_back(e.col());
+    }
+    slot_.push_back(it->second);
+  }
+}
+
+void SparsityPattern::accumulate(const Triplets& entries, double* values) const {
+  if (entries.size() != slot_.size())
+    throw std::logic_error(fmt::format("sparsity contract broken: {} entries emitted, {} recorded",
+                                       entries.size(), slot_.size()));
+  std::fill(values, values + rows_.size(), 0.0);
+  for (size_t k = 0; k < entries.size(); ++k) values[slot_[k]] += entries[k].value();
+}
+
+VariableBlock Nlp::addVariables(const std::string& name, int size, const Eigen::VectorXd& lower,
+                                const Eigen::VectorXd& upper, const Eigen::VectorXd& initial) {
+  if (lower.size() != size || upper.size() != size || initial.size() != size)
+    throw std::invalid_argument(
+        fmt::format("variable block '{}': bounds and guess need {} entries", name, size));
+  VariableBlock block{name, variables(), size};
+  blocks_.push_back(block);
+  x0_ = append(x0_, initial);
+  xl_ = append(xl_, lower);
+  xu_ = append(xu_, upper);
+  return block;
+}
+
+void Nlp::addConstraint(std::unique_ptr<ConstraintSet> set) {
+  sets_.push_back(std::move(set));
+}
+void Nlp::addCost(std::unique_ptr<CostTerm> term) {
+  costs_.push_back(std::move(term));
+}
+
+int Nlp::constraints() const {
+  int m = 0;
+  for (const auto& s : sets_) m += s->rows();
+  return m;
+}
+
+void Nlp::setInitialGuess(const Eigen::VectorXd& x0) {
+  if (x0.size() != x0_.size())
+    throw std::invalid_argument("initial guess has the wrong number of variables");
+  x0_ = x0;
+}
+
+Eigen::VectorXd Nlp::constraintLower() const {
+  Eigen::VectorXd out(0);
+  for (const auto& s : sets_) out = append(out, s->lowerBounds());
+  return out;
+}
+
+Eigen::VectorXd Nlp::constraintUpper() const {
+  Eigen::VectorXd out(0);
+  for (const auto& s : sets_) out = append(out, s->upperBounds());
+  return out;
+}
+
+double Nlp::cost(const Eigen::VectorXd& x) const {
+  double f = 0;
+  for (const auto& c : costs_) f += c->value(x);
+  return f;
+}
+
+Eigen::VectorXd Nlp::costGradient(const Eigen::VectorXd& x) const {
+  Eigen::VectorXd grad = Eigen::VectorXd::Zero(x.size());
+  for (const auto& c : costs_) c->gradient(x, grad);
+  return grad;
+}
+
+Eigen::VectorXd Nlp::constraintValues(const Eigen::VectorXd& x) const {
+  Eigen::VectorXd g(constraints());
+  int row = 0;
+  for (const auto& s : sets_) {
+    s->values(x, g.segment(row, s->rows()));
+    row += s->rows();
+  }
+  return g;
+}
+
+Triplets Nlp::jacobianTriplets(const Eigen::VectorXd& x) const {
+  Triplets all, local;
+  int row = 0;
+  for (const auto& s : sets_) {
+    local.clear();
+    s->jacobian(x, local);
+    for (const auto& e : local) all.emplace_back(row + e.row(), e.col(), e.value());
+    row += s->rows();
+  }
+  return all;
+}
+
+Triplets Nlp::hessianTriplets(const Eigen::VectorXd& x, double obj_factor,
+                              const Eigen::VectorXd& lambda) const {
+  Triplets all;
+  for (const auto& c : costs_) c->hessian(x, obj_factor, all);
+  int row = 0;
+  for (const auto& s : sets_) {
+    s->hessian(x, lambda.segment(row, s->rows()), all);
+    row += s->rows();
+  }
+  return all;
+}
+
+}  // namespace gaitopt::ocp

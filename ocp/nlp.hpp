@@ -1,0 +1,120 @@
+#pragma once
+/// @file nlp.hpp
+/// A sparse nonlinear program assembled from composable pieces, in the spirit of ifopt:
+/// named variable blocks, constraint sets and cost terms, each filling only its own entries of
+/// the constraint Jacobian and of the Hessian of the Lagrangian. The Ipopt adapter
+/// (ipopt_adapter.hpp) only translates this to Ipopt::TNLP.
+///
+/// Sparsity contract: every call of a set's jacobian() / hessian() emits the same sequence of
+/// (row, col) positions, whatever the point (an entry that happens to be zero is still emitted).
+/// The Nlp records the sequence once and afterwards only sums values into fixed slots.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+namespace gaitopt::ocp {
+
+using Triplets = std::vector<Eigen::Triplet<double>>;
+
+/// A contiguous range of the decision vector.
+struct VariableBlock {
+  std::string name;
+  int offset = 0;
+  int size = 0;
+};
+
+/// A group of constraint rows g(x) with bounds lower <= g(x) <= upper.
+class ConstraintSet {
+ public:
+  ConstraintSet(std::string name, int rows) : name_(std::move(name)), rows_(rows) {}
+  virtual ~ConstraintSet() = default;
+  const std::string& name() const { return name_; }
+  int rows() const { return rows_; }
+  /// Bounds of the rows (equalities: lower == upper). Default: all zero (equalities g = 0).
+  virtual Eigen::VectorXd lowerBounds() const { return Eigen::VectorXd::Zero(rows_); }
+  virtual Eigen::VectorXd upperBounds() const { return Eigen::VectorXd::Zero(rows_); }
+  /// g(x) into `g` (size rows()).
+  virtual void values(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> g) const = 0;
+  /// dg/dx entries: row in [0, rows()), column a global variable index.
+  virtual void jacobian(const Eigen::VectorXd& x, Triplets& out) const = 0;
+  /// Lower triangle (row >= col, global indices) of sum_i lambda_i d2 g_i / dx2.
+  virtual void hessian(const Eigen::VectorXd& x, const Eigen::VectorXd& lambda,
+                       Triplets& out) const = 0;
+
+ private:
+  std::string name_;
+  int rows_;
+};
+
+/// A term of the objective.
+class CostTerm {
+ public:
+  explicit CostTerm(std::string name) : name_(std::move(name)) {}
+  virtual ~CostTerm() = default;
+  const std::string& name() const { return name_; }
+  virtual double value(const Eigen::VectorXd& x) const = 0;
+  /// Adds the gradient into `grad` (size n).
+  virtual void gradient(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> grad) const = 0;
+  /// Lower triangle of factor * d2 value / dx2.
+  virtual void hessian(const Eigen::VectorXd& x, double factor, Triplets& out) const = 0;
+
+ private:
+  std::string name_;
+};
+
+/// Triplets compressed to fixed slots: recorded once, then values are summed per slot.
+class SparsityPattern {
+ public:
+  /// Records the positions of `entries`; duplicates share a slot.
+  void record(const Triplets& entries);
+  int nonZeros() const { return static_cast<int>(rows_.size()); }
+  const std::vector<int>& rows() const { return rows_; }
+  const std::vector<int>& cols() const { return cols_; }
+  /// Sums the values of `entries` (same sequence as recorded) into `values` (size nonZeros()).
+  /// @throws std::logic_error if the sequence length changed (a broken sparsity contract).
+  void accumulate(const Triplets& entries, double* values) const;
+
+ private:
+  std::vector<int> rows_, cols_;
+  std::vector<int> slot_;  // slot of the k-th recorded triplet
+};
+
+class Nlp {
+ public:
+  /// Adds a block of `size` variables; returns it (offset into the decision vector).
+  VariableBlock addVariables(const std::string& name, int size, const Eigen::VectorXd& lower,
+                             const Eigen::VectorXd& upper, const Eigen::VectorXd& initial);
+  void addConstraint(std::unique_ptr<ConstraintSet> set);
+  void addCost(std::unique_ptr<CostTerm> term);
+
+  int variables() const { return static_cast<int>(x0_.size()); }
+  int constraints() const;
+  const Eigen::VectorXd& initialGuess() const { return x0_; }
+  void setInitialGuess(const Eigen::VectorXd& x0);
+  const Eigen::VectorXd& lowerBounds() const { return xl_; }
+  const Eigen::VectorXd& upperBounds() const { return xu_; }
+  Eigen::VectorXd constraintLower() const;
+  Eigen::VectorXd constraintUpper() const;
+  const std::vector<VariableBlock>& blocks() const { return blocks_; }
+  const std::vector<std::unique_ptr<ConstraintSet>>& constraintSets() const { return sets_; }
+
+  double cost(const Eigen::VectorXd& x) const;
+  Eigen::VectorXd costGradient(const Eigen::VectorXd& x) const;
+  Eigen::VectorXd constraintValues(const Eigen::VectorXd& x) const;
+  /// Jacobian triplets with global rows, in a fixed sequence.
+  Triplets jacobianTriplets(const Eigen::VectorXd& x) const;
+  /// Lower-triangle Hessian triplets of obj_factor * cost + lambda^T g, in a fixed sequence.
+  Triplets hessianTriplets(const Eigen::VectorXd& x, double obj_factor,
+                           const Eigen::VectorXd& lambda) const;
+
+ private:
+  std::vector<VariableBlock> blocks_;
+  Eigen::VectorXd x0_, xl_, xu_;
+  std::vector<std::unique_ptr<ConstraintSet>> sets_;
+  std::vector<std::unique_ptr<CostTerm>> costs_;
+};
+
+}  // namespace gaitopt::ocp

@@ -1,0 +1,88 @@
+#include "ocp/point_function.hpp"
+
+#include <stdexcept>
+
+namespace gaitopt::ocp {
+
+void appendLowerTriangle(const Eigen::MatrixXd& block, int offset, Triplets& out) {
+  for (int c = 0; c < block.cols(); ++c)
+    for (int r = c; r < block.rows(); ++r) out.emplace_back(offset + r, offset + c, block(r, c));
+}
+
+PathConstraint::PathConstraint(std::string name, const PhaseLayout& layout,
+                               std::shared_ptr<const PointFunction> function)
+    : ConstraintSet(std::move(name), layout.points() * function->rows()),
+      layout_(layout),
+      f_(std::move(function)) {}
+
+Eigen::VectorXd PathConstraint::lowerBounds() const {
+  return f_->lowerBounds().replicate(layout_.points(), 1);
+}
+
+Eigen::VectorXd PathConstraint::upperBounds() const {
+  return f_->upperBounds().replicate(layout_.points(), 1);
+}
+
+void PathConstraint::values(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> g) const {
+  const int m = f_->rows();
+  for (int p = 0; p < layout_.points(); ++p) f_->evaluate(layout_.point(x, p), g.segment(p * m, m));
+}
+
+void PathConstraint::jacobian(const Eigen::VectorXd& x, Triplets& out) const {
+  const int m = f_->rows();
+  Eigen::MatrixXd block(m, layout_.pointSize());
+  for (int p = 0; p < layout_.points(); ++p) {
+    f_->jacobian(layout_.point(x, p), block);
+    for (int c = 0; c < block.cols(); ++c)
+      for (int r = 0; r < m; ++r)
+        out.emplace_back(p * m + r, layout_.pointOffset(p) + c, block(r, c));
+  }
+}
+
+void PathConstraint::hessian(const Eigen::VectorXd& x, const Eigen::VectorXd& lambda,
+                             Triplets& out) const {
+  const int m = f_->rows();
+  Eigen::MatrixXd block(layout_.pointSize(), layout_.pointSize());
+  for (int p = 0; p < layout_.points(); ++p) {
+    f_->hessian(layout_.point(x, p), lambda.segment(p * m, m), block);
+    appendLowerTriangle(block, layout_.pointOffset(p), out);
+  }
+}
+
+QuadratureCost::QuadratureCost(std::string name, const PhaseLayout& layout,
+                               std::shared_ptr<const PointFunction> integrand)
+    : CostTerm(std::move(name)),
+      layout_(layout),
+      f_(std::move(integrand)),
+      weights_(layout.quadratureWeights()) {
+  if (f_->rows() != 1) throw std::invalid_argument("a running cost integrand has one row");
+}
+
+double QuadratureCost::value(const Eigen::VectorXd& x) const {
+  double total = 0;
+  Eigen::VectorXd f(1);
+  for (int p = 0; p < layout_.points(); ++p) {
+    f_->evaluate(layout_.point(x, p), f);
+    total += weights_(p) * f(0);
+  }
+  return total;
+}
+
+void QuadratureCost::gradient(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> grad) const {
+  Eigen::MatrixXd jac(1, layout_.pointSize());
+  for (int p = 0; p < layout_.points(); ++p) {
+    f_->jacobian(layout_.point(x, p), jac);
+    grad.segment(layout_.pointOffset(p), layout_.pointSize()) +=
+        weights_(p) * jac.row(0).transpose();
+  }
+}
+
+void QuadratureCost::hessian(const Eigen::VectorXd& x, double factor, Triplets& out) const {
+  Eigen::MatrixXd block(layout_.pointSize(), layout_.pointSize());
+  for (int p = 0; p < layout_.points(); ++p) {
+    f_->hessian(layout_.point(x, p), Eigen::VectorXd::Constant(1, factor * weights_(p)), block);
+    appendLowerTriangle(block, layout_.pointOffset(p), out);
+  }
+}
+
+}  // namespace gaitopt::ocp
