@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "dynamics/energy.hpp"
+#include "dynamics/floating_base.hpp"
 #include "dynamics/impact.hpp"
 #include "dynamics/kinematics.hpp"
 #include "support/fixtures.hpp"
@@ -90,6 +91,28 @@ TEST_P(ImpactTest, SingleImpactMatchesFloatingBaseAndConservesMomentumAboutE) {
         dynamics::linearMomentum<double>(model_, theta, r.dtheta_plus, r.trailing_velocity) -
         dynamics::linearMomentum<double>(model_, theta, dtheta);
     EXPECT_LT((r.impulse_leading - dp).norm(), 1e-9 * (1 + dp.norm()));
+  }
+}
+
+TEST_P(ImpactTest, ClosedFormsSatisfyTheImplicitImpactResidual) {
+  // The optimiser's implicit form (floating_base.hpp) vanishes at Mu's closed-form solutions.
+  const int n = model_.nLinks();
+  for (int trial = 0; trial < 20; ++trial) {
+    const auto [theta, dtheta] = preImpact(model_, rng_);
+    const auto s = dynamics::singleImpact(model_, theta, dtheta);
+    Eigen::VectorXd qplus(n + 2);
+    qplus << s.trailing_velocity, s.dtheta_plus;
+    EXPECT_LT(dynamics::impactResidual<double>(model_, theta, dtheta, qplus, s.impulse_leading,
+                                               nullptr)
+                  .norm(),
+              1e-9);
+    const auto d = dynamics::doubleImpact(model_, theta, dtheta);
+    qplus << 0, 0, d.dtheta_plus;
+    const Vec2d p_b = d.impulse_trailing;
+    EXPECT_LT(
+        dynamics::impactResidual<double>(model_, theta, dtheta, qplus, d.impulse_leading, &p_b)
+            .norm(),
+        1e-9);
   }
 }
 

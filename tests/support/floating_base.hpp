@@ -1,10 +1,11 @@
 #pragma once
 /// An independent reference formulation for the tests: the chain with a free base,
-/// q = (x_b, y_b, theta_1..theta_n), mass matrix and forces assembled from the CoM Jacobians
-/// (virtual work), not from Mu's closed forms. Contacts at B and E enter through their
+/// q = (x_b, y_b, theta_1..theta_n), mass matrix (dynamics/floating_base.hpp) and forces
+/// assembled from the CoM Jacobians (virtual work), not from Mu's closed forms. Contacts at B and E enter through their
 /// Jacobians and are solved as KKT systems (notes/mu2004.md sec. 3.5).
 #include <Eigen/Dense>
 
+#include "dynamics/floating_base.hpp"
 #include "dynamics/joint_coordinates.hpp"
 #include "dynamics/kinematics.hpp"
 
@@ -18,23 +19,15 @@ struct FloatingBase {
   Eigen::Vector2d jdot_e;  ///< Jdot_E qdot
 };
 
-inline Eigen::MatrixXd comJacobian(const dynamics::Model& m, int i, const VecD& theta) {
-  Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(2, m.nLinks() + 2);
-  jac.leftCols(2).setIdentity();
-  jac.rightCols(m.nLinks()) = dynamics::pointJacobian(m.comWeights(i), theta);
-  return jac;
-}
-
 inline FloatingBase floatingBase(const dynamics::Model& m, const VecD& theta, const VecD& dtheta) {
   const int n = m.nLinks();
   FloatingBase fb{Eigen::MatrixXd::Zero(n + 2, n + 2), Eigen::VectorXd::Zero(n + 2),
                   Eigen::MatrixXd::Zero(2, n + 2), Eigen::MatrixXd::Zero(2, n + 2),
                   Eigen::Vector2d::Zero()};
+  fb.mass = dynamics::floatingBaseMassMatrix(m, theta);
   for (int i = 0; i < n; ++i) {
-    const Eigen::MatrixXd jc = comJacobian(m, i, theta);
+    const Eigen::MatrixXd jc = dynamics::floatingJacobian(m.comWeights(i), theta);
     const double mi = m.link(i).mass;
-    fb.mass += mi * jc.transpose() * jc;
-    fb.mass(2 + i, 2 + i) += m.link(i).inertia;
     const Vec2d acc_bias = dynamics::pointBias(m.comWeights(i), theta, dtheta);
     fb.bias += mi * jc.transpose() * (acc_bias + Eigen::Vector2d(0, m.gravity()));
   }

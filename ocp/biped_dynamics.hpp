@@ -1,0 +1,36 @@
+#pragma once
+/// @file biped_dynamics.hpp
+/// The biped's dynamics as a collocation path constraint. State x = (theta, dtheta), its
+/// derivative xdot = (theta', ddtheta), inputs u = tau (joint torques, q-space), algebraic
+/// z = lambda (ground force at E, DSP only). Rows:
+///   theta' - dtheta = 0                                   (n, kinematic)
+///   SSP: D ddtheta + H dtheta + G - M^T tau = 0           (Mu 2.7, 2.43)
+///   DSP: ... - J^T lambda = 0 and J ddtheta + Jdot dtheta = 0   (Mu 2.11, 2.9)
+/// Derivatives are the analytic ones of dynamics/residual_derivatives.hpp.
+#include "dynamics/model.hpp"
+#include "ocp/point_function.hpp"
+
+namespace gaitopt::ocp {
+
+class BipedDynamics : public PointFunction {
+ public:
+  BipedDynamics(const dynamics::Model& model, bool dsp);
+  int rows() const override;
+  void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override;
+  void jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const override;
+  void hessian(const Eigen::VectorXd& v, const Eigen::VectorXd& weights,
+               Eigen::Ref<Eigen::MatrixXd> hess) const override;
+
+  /// Point size: 5n (+ 2 in the DSP).
+  int pointSize() const { return 5 * n_ + (dsp_ ? 2 : 0); }
+
+ private:
+  /// Index in v of residual variable j (layout [theta, dtheta, ddtheta, tau, lambda]).
+  int column(int j) const { return j < 2 * n_ ? j : j + n_; }
+
+  const dynamics::Model* model_;
+  bool dsp_;
+  int n_;
+};
+
+}  // namespace gaitopt::ocp

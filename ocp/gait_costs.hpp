@@ -1,0 +1,42 @@
+#pragma once
+/// @file gait_costs.hpp
+/// Running costs and simple path constraints of the gait, as point functions of a collocation
+/// point v = [theta, dtheta, theta', ddtheta, tau] (see biped_dynamics.hpp).
+#include "ocp/point_function.hpp"
+
+namespace gaitopt::ocp {
+
+/// L = sum_j tau_j^2 (Kelly 2017's cost) [N^2 m^2].
+class TorqueSquared : public PointFunction {
+ public:
+  explicit TorqueSquared(int n_links) : n_(n_links) {}
+  int rows() const override { return 1; }
+  void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override;
+  void jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const override;
+  void hessian(const Eigen::VectorXd& v, const Eigen::VectorXd& w,
+               Eigen::Ref<Eigen::MatrixXd> hess) const override;
+
+ private:
+  int n_;
+};
+
+/// Knees never hyperextend: stance knee q1 = theta_1 - theta_2 >= 0 and swing knee
+/// q_{n-1} = theta_{n-1} - theta_n <= 0 (knee forward in both legs, conventions.hpp).
+class KneeDirection : public PointFunction {
+ public:
+  explicit KneeDirection(int n_links) : n_(n_links) {}
+  int rows() const override { return 2; }
+  void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override;
+  void jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const override;
+  void hessian(const Eigen::VectorXd&, const Eigen::VectorXd&,
+               Eigen::Ref<Eigen::MatrixXd> hess) const override {
+    hess.setZero();
+  }
+  Eigen::VectorXd lowerBounds() const override;
+  Eigen::VectorXd upperBounds() const override;
+
+ private:
+  int n_;
+};
+
+}  // namespace gaitopt::ocp

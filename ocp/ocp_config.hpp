@@ -1,0 +1,43 @@
+#pragma once
+/// @file ocp_config.hpp
+/// configs/ocp/*.yaml: which robot, which phases, the mesh and scheme, the cost, the constraint
+/// switches and the solver options (DESIGN.md sec. 4 and 6). Paths are relative to the file.
+#include <string>
+#include <vector>
+
+#include "ocp/collocation.hpp"
+#include "ocp/ipopt_adapter.hpp"
+
+namespace gaitopt::ocp {
+
+struct PhaseConfig {
+  std::string name;  ///< "SSP" (this version solves single-support steps)
+  double duration = 0;
+  int segments = 0;
+};
+
+enum class ImpactModel { kSingle, kDouble };
+
+struct OcpConfig {
+  std::string name;
+  std::string robot_path;
+  std::string guess_gait_path;  ///< polynomial gait used as the initial guess
+  double step_length = 0;       ///< tips apart at touchdown [m]
+  std::vector<PhaseConfig> phases;
+  Scheme scheme = Scheme::kHermiteSimpson;
+  ImpactModel impact = ImpactModel::kSingle;
+  std::string cost = "torque_squared";
+  // Constraint switches and bounds.
+  bool torque_limits = true;      ///< |tau_j| <= robot torque limit; unactuated joints at 0
+  bool knee_limits = true;        ///< knees never hyperextend (stance q1 >= 0, swing <= 0)
+  double angle_range = 0;         ///< |theta - upright| bound per link [rad] (0: off)
+  double rate_limit = 0;          ///< |dtheta| bound [rad/s] (0: off)
+  bool swing_descends = true;     ///< swing tip vertical velocity <= 0 at strike
+  bool trailing_lifts = true;     ///< old stance tip vertical velocity >= 0 after a single impact
+  SolverOptions solver;
+};
+
+/// @throws config::ConfigError naming file, key and expectation.
+OcpConfig loadOcpConfig(const std::string& path);
+
+}  // namespace gaitopt::ocp
