@@ -17,7 +17,9 @@ dynamics::DynamicsPoint unpack(const Eigen::VectorXd& v, int n, bool dsp) {
 BipedDynamics::BipedDynamics(const dynamics::Model& model, bool dsp)
     : model_(&model), dsp_(dsp), n_(model.nLinks()) {}
 
-int BipedDynamics::rows() const { return n_ + dynamics::residualRows(*model_, dsp_); }
+int BipedDynamics::rows() const {
+  return n_ + dynamics::residualRows(*model_, dsp_);
+}
 
 void BipedDynamics::evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const {
   f.head(n_) = v.segment(2 * n_, n_) - v.segment(n_, n_);
@@ -37,8 +39,8 @@ void BipedDynamics::jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixX
 void BipedDynamics::hessian(const Eigen::VectorXd& v, const Eigen::VectorXd& weights,
                             Eigen::Ref<Eigen::MatrixXd> hess) const {
   hess.setZero();  // the kinematic rows are linear
-  const Eigen::MatrixXd rh = dynamics::residualHessian(*model_, unpack(v, n_, dsp_), dsp_,
-                                                       weights.tail(rows() - n_));
+  const Eigen::MatrixXd rh =
+      dynamics::residualHessian(*model_, unpack(v, n_, dsp_), dsp_, weights.tail(rows() - n_));
   for (int c = 0; c < rh.cols(); ++c)
     for (int r = 0; r < rh.rows(); ++r) hess(column(r), column(c)) = rh(r, c);
 }

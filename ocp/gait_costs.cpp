@@ -32,7 +32,11 @@ void KneeDirection::jacobian(const Eigen::VectorXd&, Eigen::Ref<Eigen::MatrixXd>
   jac(1, n_ - 1) = -1;
 }
 
-Eigen::VectorXd KneeDirection::lowerBounds() const { return Eigen::Vector2d(0, -kInf); }
-Eigen::VectorXd KneeDirection::upperBounds() const { return Eigen::Vector2d(kInf, 0); }
+Eigen::VectorXd KneeDirection::lowerBounds() const {
+  return Eigen::Vector2d(0, -kInf);
+}
+Eigen::VectorXd KneeDirection::upperBounds() const {
+  return Eigen::Vector2d(kInf, 0);
+}
 
 }  // namespace gaitopt::ocp

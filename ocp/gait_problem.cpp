@@ -76,9 +76,9 @@ std::vector<int> concat(std::vector<int> a, const std::vector<int>& b) {
 template <class Fn>
 void addLink(Nlp& nlp, const std::string& name, int rows, std::vector<int> idx, Fn fn,
              double lo = 0.0, double hi = 0.0) {
-  nlp.addConstraint(std::make_unique<AutoDiffConstraint<Fn>>(
-      name, rows, std::move(idx), fn, Eigen::VectorXd::Constant(rows, lo),
-      Eigen::VectorXd::Constant(rows, hi)));
+  nlp.addConstraint(std::make_unique<AutoDiffConstraint<Fn>>(name, rows, std::move(idx), fn,
+                                                             Eigen::VectorXd::Constant(rows, lo),
+                                                             Eigen::VectorXd::Constant(rows, hi)));
 }
 
 void addPhaseVariables(GaitProblem& p, const dynamics::Model& model, const OcpConfig& c,
@@ -87,9 +87,11 @@ void addPhaseVariables(GaitProblem& p, const dynamics::Model& model, const OcpCo
   const auto [lo, hi] = pointBounds(model, c);
   const int points = p.ssp.points();
   Eigen::VectorXd x0(p.ssp.variables());
-  for (int k = 0; k < points; ++k) x0.segment(k * 5 * n, 5 * n) = guessPoint(guess, p.ssp.time(k), n);
-  p.ssp.offset = p.nlp.addVariables("ssp_points", p.ssp.variables(), lo.replicate(points, 1),
-                                    hi.replicate(points, 1), x0)
+  for (int k = 0; k < points; ++k)
+    x0.segment(k * 5 * n, 5 * n) = guessPoint(guess, p.ssp.time(k), n);
+  p.ssp.offset = p.nlp
+                     .addVariables("ssp_points", p.ssp.variables(), lo.replicate(points, 1),
+                                   hi.replicate(points, 1), x0)
                      .offset;
 }
 
@@ -160,8 +162,8 @@ gaits::Trajectory reconstruct(const GaitProblem& problem, const dynamics::Model&
     knot.dtheta = v.segment(n, n);
     knot.ddtheta = v.segment(3 * n, n);
     knot.tau = v.segment(4 * n, n);
-    knot.force_stance = dynamics::stanceForce<double>(model, knot.theta, knot.dtheta,
-                                                      knot.ddtheta, Vec2d::Zero());
+    knot.force_stance =
+        dynamics::stanceForce<double>(model, knot.theta, knot.dtheta, knot.ddtheta, Vec2d::Zero());
     knots.push_back(std::move(knot));
   }
   return gaits::Trajectory(model.name(), problem.step_length, std::move(knots));

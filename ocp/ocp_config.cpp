@@ -66,7 +66,7 @@ OcpConfig loadOcpConfig(const std::string& path) {
                  ? Scheme::kTrapezoidal
                  : Scheme::kHermiteSimpson;
   c.impact = root.choice("impact", {"single", "double"}) == "double" ? ImpactModel::kDouble
-                                                                    : ImpactModel::kSingle;
+                                                                     : ImpactModel::kSingle;
   c.cost = root.choice("cost", {"torque_squared"});
   if (root.has("constraints")) readConstraints(root.map("constraints"), c);
   if (root.has("solver")) readSolver(root.map("solver"), c.solver);

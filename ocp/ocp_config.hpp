@@ -28,12 +28,12 @@ struct OcpConfig {
   ImpactModel impact = ImpactModel::kSingle;
   std::string cost = "torque_squared";
   // Constraint switches and bounds.
-  bool torque_limits = true;      ///< |tau_j| <= robot torque limit; unactuated joints at 0
-  bool knee_limits = true;        ///< knees never hyperextend (stance q1 >= 0, swing <= 0)
-  double angle_range = 0;         ///< |theta - upright| bound per link [rad] (0: off)
-  double rate_limit = 0;          ///< |dtheta| bound [rad/s] (0: off)
-  bool swing_descends = true;     ///< swing tip vertical velocity <= 0 at strike
-  bool trailing_lifts = true;     ///< old stance tip vertical velocity >= 0 after a single impact
+  bool torque_limits = true;   ///< |tau_j| <= robot torque limit; unactuated joints at 0
+  bool knee_limits = true;     ///< knees never hyperextend (stance q1 >= 0, swing <= 0)
+  double angle_range = 0;      ///< |theta - upright| bound per link [rad] (0: off)
+  double rate_limit = 0;       ///< |dtheta| bound [rad/s] (0: off)
+  bool swing_descends = true;  ///< swing tip vertical velocity <= 0 at strike
+  bool trailing_lifts = true;  ///< old stance tip vertical velocity >= 0 after a single impact
   SolverOptions solver;
 };
 

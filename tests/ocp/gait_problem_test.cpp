@@ -1,0 +1,167 @@
+// The RABBIT gait problem of Kelly (2017): exact derivatives of the whole NLP (dynamics,
+// impact, relabelling links, costs) against central differences, convergence from the
+// polynomial guess, and an independent check of the optimum (closed-form impact map, forward
+// re-simulation of the optimal torques).
+#include <gtest/gtest.h>
+
+#include <boost/numeric/odeint.hpp>
+
+#include <fmt/format.h>
+
+#include "dynamics/impact.hpp"
+#include "dynamics/relabel.hpp"
+#include "dynamics/robot_config.hpp"
+#include "dynamics/ssp_dynamics.hpp"
+#include "gaits/polynomial_gait.hpp"
+#include "ocp/gait_problem.hpp"
+#include "ocp/ipopt_adapter.hpp"
+
+namespace gaitopt::ocp {
+namespace {
+
+const std::string kConfig = std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/rabbit_kelly2017.yaml";
+
+gaits::Trajectory polynomialGuess(const dynamics::Model& model, const OcpConfig& c) {
+  const auto gp = gaits::loadGait(c.guess_gait_path);
+  const gaits::PolynomialGait gait(
+      model, gp, {*gp.hip_velocity_start, *gp.hip_velocity_touchdown, *gp.hip_dsp_start});
+  return gaits::buildTrajectory(gait, model, 1000);
+}
+
+Eigen::MatrixXd dense(const Triplets& t, int rows, int cols) {
+  Eigen::SparseMatrix<double> m(rows, cols);
+  m.setFromTriplets(t.begin(), t.end());
+  return Eigen::MatrixXd(m);
+}
+
+TEST(RabbitGaitProblem, JacobianAndLagrangianHessianEqualCentralDifferences) {
+  auto c = loadOcpConfig(kConfig);
+  c.phases.front().segments = 3;  // small: every column is differenced
+  const auto model = dynamics::loadRobot(c.robot_path);
+  const GaitProblem p = buildGaitProblem(model, c, polynomialGuess(model, c));
+  const Nlp& nlp = p.nlp;
+  const int n = nlp.variables(), m = nlp.constraints();
+  const Eigen::VectorXd x = nlp.initialGuess() + 0.05 * Eigen::VectorXd::Random(n);
+  const Eigen::VectorXd lambda = Eigen::VectorXd::Random(m);
+  const double sigma = 0.3;
+  const Eigen::MatrixXd jac = dense(nlp.jacobianTriplets(x), m, n);
+  const Eigen::MatrixXd hess =
+      dense(nlp.hessianTriplets(x, sigma, lambda), n, n).selfadjointView<Eigen::Lower>();
+  auto lagrangianGradient = [&](const Eigen::VectorXd& z) -> Eigen::VectorXd {
+    return sigma * nlp.costGradient(z) + dense(nlp.jacobianTriplets(z), m, n).transpose() * lambda;
+  };
+  Eigen::MatrixXd fd_jac(m, n), fd_hess(n, n);
+  const double h = 1e-6;
+  for (int k = 0; k < n; ++k) {
+    Eigen::VectorXd xp = x, xm = x;
+    xp(k) += h;
+    xm(k) -= h;
+    fd_jac.col(k) = (nlp.constraintValues(xp) - nlp.constraintValues(xm)) / (2 * h);
+    fd_hess.col(k) = (lagrangianGradient(xp) - lagrangianGradient(xm)) / (2 * h);
+  }
+  const double jac_err = (fd_jac - jac).norm() / jac.norm();
+  const double hess_err = (fd_hess - hess).norm() / hess.norm();
+  RecordProperty("jacobian_relative_error", fmt::format("{:.2e}", jac_err));
+  RecordProperty("hessian_relative_error", fmt::format("{:.2e}", hess_err));
+  EXPECT_LT(jac_err, 1e-6);
+  EXPECT_LT(hess_err, 1e-6);
+}
+
+class RabbitSolution : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    config_ = new OcpConfig(loadOcpConfig(kConfig));
+    model_ = new dynamics::Model(dynamics::loadRobot(config_->robot_path));
+    problem_ =
+        new GaitProblem(buildGaitProblem(*model_, *config_, polynomialGuess(*model_, *config_)));
+    result_ = new SolveResult(solveWithIpopt(problem_->nlp, config_->solver));
+  }
+  static void TearDownTestSuite() {
+    delete result_;
+    delete problem_;
+    delete model_;
+    delete config_;
+  }
+  static OcpConfig* config_;
+  static dynamics::Model* model_;
+  static GaitProblem* problem_;
+  static SolveResult* result_;
+};
+OcpConfig* RabbitSolution::config_ = nullptr;
+dynamics::Model* RabbitSolution::model_ = nullptr;
+GaitProblem* RabbitSolution::problem_ = nullptr;
+SolveResult* RabbitSolution::result_ = nullptr;
+
+TEST_F(RabbitSolution, ConvergesFromThePolynomialGuess) {
+  RecordProperty("cost", fmt::format("{:.4f}", result_->cost));
+  RecordProperty("iterations", result_->iterations);
+  ASSERT_EQ(result_->status, "Solve_Succeeded");
+  EXPECT_LT(result_->max_violation, 1e-6);
+  EXPECT_LT(result_->iterations, 100);
+  EXPECT_GT(result_->cost, 0.0);
+  // Unactuated ankle and torque limits hold at every point.
+  const auto traj = reconstruct(*problem_, *model_, result_->x);
+  for (const auto& k : traj.knots()) {
+    EXPECT_EQ(k.tau(0), 0.0);
+    EXPECT_LE(k.tau.cwiseAbs().maxCoeff(), 100.0 + 1e-6);
+  }
+}
+
+TEST_F(RabbitSolution, ClosedFormImpactAndRelabelReturnToTheStart) {
+  // Independent of the optimiser's implicit impact: Mu's closed-form single impact (2.35-2.36)
+  // applied to the optimal strike state, then relabelling (2.38), gives the optimal start.
+  const auto traj = reconstruct(*problem_, *model_, result_->x);
+  const auto& end = traj.knots().back();
+  const auto& start = traj.knots().front();
+  const auto impact = dynamics::singleImpact(*model_, VecD(end.theta), VecD(end.dtheta));
+  EXPECT_TRUE(impact.unilateral_ok);  // the old stance tip lifts off
+  const VecD theta = dynamics::relabelAngles<double>(*model_, end.theta);
+  const VecD dtheta = dynamics::relabelRates<double>(impact.dtheta_plus);
+  EXPECT_LT((theta - VecD(start.theta)).cwiseAbs().maxCoeff(), 1e-7);
+  EXPECT_LT((dtheta - VecD(start.dtheta)).cwiseAbs().maxCoeff(), 1e-6);
+}
+
+TEST_F(RabbitSolution, ForwardSimulationOfTheOptimalTorquesReproducesTheStates) {
+  const auto traj = reconstruct(*problem_, *model_, result_->x);
+  const int n = model_->nLinks();
+  using State = std::vector<double>;
+  // Hermite-Simpson controls are quadratic on a segment: interpolate through node, midpoint, node.
+  const PhaseLayout& l = problem_->ssp;
+  auto torque = [&](double t) {
+    const int seg = std::min(static_cast<int>(t / l.segmentLength()), l.segments - 1);
+    const double s = t / l.segmentLength() - seg;  // in [0, 1]
+    const auto& a = traj.knots()[2 * seg].tau;
+    const auto& m = traj.knots()[2 * seg + 1].tau;
+    const auto& b = traj.knots()[2 * seg + 2].tau;
+    return VecD(a * (2 * s - 1) * (s - 1) + m * 4 * s * (1 - s) + b * s * (2 * s - 1));
+  };
+  auto rhs = [&](const State& x, State& dx, double t) {
+    const VecD th = Eigen::Map<const Eigen::VectorXd>(x.data(), n);
+    const VecD dth = Eigen::Map<const Eigen::VectorXd>(x.data() + n, n);
+    const VecD dd = dynamics::sspForwardDynamics(*model_, th, dth, torque(t));
+    for (int i = 0; i < n; ++i) {
+      dx[static_cast<size_t>(i)] = dth(i);
+      dx[static_cast<size_t>(n + i)] = dd(i);
+    }
+  };
+  const auto& k0 = traj.knots().front();
+  State x(k0.theta.data(), k0.theta.data() + n);
+  x.insert(x.end(), k0.dtheta.data(), k0.dtheta.data() + n);
+  std::vector<double> times;
+  for (const auto& k : traj.knots()) times.push_back(k.t);
+  double max_err = 0;
+  size_t index = 0;
+  auto observe = [&](const State& s, double) {
+    const auto& ref = traj.knots()[index++].theta;
+    for (int i = 0; i < n; ++i)
+      max_err = std::max(max_err, std::abs(s[static_cast<size_t>(i)] - ref(i)));
+  };
+  namespace ode = boost::numeric::odeint;
+  ode::integrate_times(ode::make_dense_output(1e-10, 1e-10, ode::runge_kutta_dopri5<State>()), rhs,
+                       x, times, 1e-4, observe);
+  RecordProperty("resimulation_max_angle_error_rad", fmt::format("{:.3e}", max_err));
+  EXPECT_LT(max_err, 1e-2);
+}
+
+}  // namespace
+}  // namespace gaitopt::ocp
