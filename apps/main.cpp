@@ -7,6 +7,7 @@
 
 #include "apps/command_runner.hpp"
 #include "apps/inspect_command.hpp"
+#include "apps/optimize_command.hpp"
 #include "apps/poly_command.hpp"
 
 namespace {
@@ -24,6 +25,7 @@ void configure(CLI::App& app) {
   app.failure_message(failureMessage);
   gaitopt::apps::registerInspectCommand(app);
   gaitopt::apps::registerPolyCommand(app);
+  gaitopt::apps::registerOptimizeCommand(app);
 }
 
 /// Parses the command line and runs the chosen subcommand (from its callback).

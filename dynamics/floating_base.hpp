@@ -48,13 +48,22 @@ VecX<S> impactResidual(const Model& model, const Vec<S>& theta, const Vec<S>& dt
                        const VecX<S>& qdot_plus, const Vec2<S>& impulse_e,
                        const Vec2<S>* impulse_b) {
   const int n = model.nLinks();
-  VecX<S> qdot_minus = VecX<S>::Zero(n + 2);
-  qdot_minus.tail(n) = dtheta_minus;
-  const MatX<S> j_e = floatingJacobian(model.tipWeights(), theta);
-  VecX<S> r(n + 4 + (impulse_b ? 2 : 0));
-  r.head(n + 2) = floatingBaseMassMatrix(model, theta) * (qdot_plus - qdot_minus) -
-                  j_e.transpose() * impulse_e;
-  r.segment(n + 2, 2) = j_e * qdot_plus;
+  const Vec2<S> dbase = qdot_plus.head(2);  // B is at rest before the impact
+  const Vec<S> dtheta = qdot_plus.tail(n) - dtheta_minus;
+  // D_ext dq = sum_i m_i J_ci^T (J_ci dq) + I dtheta: momentum of each link, mapped back by
+  // J_ci^T, without forming D_ext (n + 2 products instead of (n + 2)^2).
+  VecX<S> r = VecX<S>::Zero(n + 4 + (impulse_b ? 2 : 0));
+  for (int i = 0; i < n; ++i) {
+    const auto& w = model.comWeights(i);
+    const Vec2<S> p = (dbase + pointVelocity(w, theta, dtheta)) * S(model.link(i).mass);
+    r.head(2) += p;
+    r.segment(2, n) += pointJacobian(w, theta).transpose() * p;
+    r(2 + i) += model.link(i).inertia * dtheta(i);
+  }
+  r.head(2) -= impulse_e;
+  r.segment(2, n) -= pointJacobian(model.tipWeights(), theta).transpose() * impulse_e;
+  r.segment(n + 2, 2) =
+      qdot_plus.head(2) + pointVelocity(model.tipWeights(), theta, Vec<S>(qdot_plus.tail(n)));
   if (impulse_b) {
     r.head(2) -= *impulse_b;  // J_B = [I 0]
     r.tail(2) = qdot_plus.head(2);

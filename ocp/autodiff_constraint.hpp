@@ -8,6 +8,7 @@
 ///
 /// The functor: template <class S> Eigen::Matrix<S, Eigen::Dynamic, 1> operator()(
 ///                  const Eigen::Matrix<S, Eigen::Dynamic, 1>& y) const;
+#include <algorithm>
 #include <utility>
 #include <vector>
 
@@ -24,10 +25,11 @@ using AD2 = Eigen::AutoDiffScalar<Eigen::Matrix<AD1, Eigen::Dynamic, 1>>;
 template <class Fn>
 class AutoDiffConstraint : public ConstraintSet {
  public:
-  AutoDiffConstraint(std::string name, int rows, std::vector<int> indices, Fn fn,
+  AutoDiffConstraint(std::string name, int rows, std::vector<int> indices, int nonlinear, Fn fn,
                      Eigen::VectorXd lower, Eigen::VectorXd upper)
       : ConstraintSet(std::move(name), rows),
         indices_(std::move(indices)),
+        nonlinear_(nonlinear),
         fn_(std::move(fn)),
         lower_(std::move(lower)),
         upper_(std::move(upper)) {}
@@ -53,21 +55,23 @@ class AutoDiffConstraint : public ConstraintSet {
                Triplets& out) const override {
     const Eigen::VectorXd y = gather(x);
     const int m = static_cast<int>(y.size());
+    const int k = nonlinear_;
     Eigen::Matrix<AD2, Eigen::Dynamic, 1> ya(m);
     for (int i = 0; i < m; ++i) {
       ya(i).value() = AD1(y(i), m, i);
-      ya(i).derivatives() = Eigen::Matrix<AD1, Eigen::Dynamic, 1>::Zero(m);
-      for (int k = 0; k < m; ++k)
-        ya(i).derivatives()(k) = AD1(i == k ? 1.0 : 0.0, Eigen::VectorXd::Zero(m));
+      ya(i).derivatives().resize(k);
+      for (int c = 0; c < k; ++c)
+        ya(i).derivatives()(c) = AD1(i == c ? 1.0 : 0.0, Eigen::VectorXd::Zero(m));
     }
     const Eigen::Matrix<AD2, Eigen::Dynamic, 1> g = fn_(ya);
     AD2 s = AD2(0.0);
     for (int r = 0; r < rows(); ++r) s += lambda(r) * g(r);
-    for (int c = 0; c < m; ++c)
+    // Rows c < k of the Hessian hold every nonzero; emit each lower-triangle entry once.
+    for (int c = 0; c < k; ++c)
       for (int d = 0; d < m; ++d) {
+        if (d < k && indices_[c] < indices_[d]) continue;  // its mirror (d, c) is emitted
         const double h = c < s.derivatives().size() ? derivative(s.derivatives()(c), d) : 0.0;
-        const int row = indices_[c], col = indices_[d];
-        if (row >= col) out.emplace_back(row, col, h);
+        out.emplace_back(std::max(indices_[c], indices_[d]), std::min(indices_[c], indices_[d]), h);
       }
   }
 
@@ -83,6 +87,7 @@ class AutoDiffConstraint : public ConstraintSet {
   }
 
   std::vector<int> indices_;
+  int nonlinear_;
   Fn fn_;
   Eigen::VectorXd lower_, upper_;
 };

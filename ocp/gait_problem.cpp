@@ -73,12 +73,13 @@ std::vector<int> concat(std::vector<int> a, const std::vector<int>& b) {
   return a;
 }
 
+/// A link constraint on `idx`; the functor is affine in all but the first `nonlinear` of them.
 template <class Fn>
-void addLink(Nlp& nlp, const std::string& name, int rows, std::vector<int> idx, Fn fn,
-             double lo = 0.0, double hi = 0.0) {
-  nlp.addConstraint(std::make_unique<AutoDiffConstraint<Fn>>(name, rows, std::move(idx), fn,
-                                                             Eigen::VectorXd::Constant(rows, lo),
-                                                             Eigen::VectorXd::Constant(rows, hi)));
+void addLink(Nlp& nlp, const std::string& name, int rows, std::vector<int> idx, int nonlinear,
+             Fn fn, double lo = 0.0, double hi = 0.0) {
+  nlp.addConstraint(std::make_unique<AutoDiffConstraint<Fn>>(
+      name, rows, std::move(idx), nonlinear, fn, Eigen::VectorXd::Constant(rows, lo),
+      Eigen::VectorXd::Constant(rows, hi)));
 }
 
 void addPhaseVariables(GaitProblem& p, const dynamics::Model& model, const OcpConfig& c,
@@ -113,16 +114,17 @@ void addLinks(GaitProblem& p, const dynamics::Model& model, const OcpConfig& c) 
   const int last = p.ssp.points() - 1;
   const std::vector<int> theta_end = range(p.ssp.x(last, 0), n);
   const std::vector<int> dtheta_end = range(p.ssp.x(last, n), n);
-  addLink(p.nlp, "touchdown_position", 2, theta_end, TipAtTouchdown{&model, p.step_length});
+  // Every link is nonlinear in the strike angles only (the first n of its variables).
+  addLink(p.nlp, "touchdown_position", 2, theta_end, n, TipAtTouchdown{&model, p.step_length});
   if (c.swing_descends)
-    addLink(p.nlp, "strike_downward", 1, concat(theta_end, dtheta_end), StrikeVelocity{&model},
+    addLink(p.nlp, "strike_downward", 1, concat(theta_end, dtheta_end), n, StrikeVelocity{&model},
             -kInf, 0.0);
   addLink(p.nlp, "impact", n + 4 + (both ? 2 : 0),
-          concat(concat(theta_end, dtheta_end), range(p.impact_offset, n + 4 + (both ? 2 : 0))),
+          concat(concat(theta_end, dtheta_end), range(p.impact_offset, n + 4 + (both ? 2 : 0))), n,
           RigidImpact{&model, both});
   const std::vector<int> start = range(p.ssp.x(0, 0), 2 * n);
   addLink(p.nlp, "periodicity", 2 * n,
-          concat(concat(theta_end, range(p.impact_offset + 2, n)), start), Periodicity{&model});
+          concat(concat(theta_end, range(p.impact_offset + 2, n)), start), 0, Periodicity{&model});
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs the dynamics micro-benchmarks and prints a markdown table of per-benchmark median and
-# minimum time over 15 repetitions, with the ratio of each median to BM_MassMatrix's.
+# minimum time over 15 repetitions, with the ratio of each median to BM_MassMatrix's; then
+# the OCP solve-time table (bench/ocp_bench.cpp).
 # Usage: scripts/bench.sh BUILD_DIR   (BUILD_DIR configured with GAITOPT_BUILD_BENCH=ON, built)
 set -euo pipefail
 
@@ -53,3 +54,8 @@ for name, t in times.items():
 reps = {len(t) for t in times.values()}
 print(f"\nRepetitions per benchmark: {', '.join(str(r) for r in sorted(reps))}; real time.")
 PY
+
+echo
+ocp="$1/bench/ocp_bench"
+[[ -x "$ocp" ]] || { echo "error: $ocp not built" >&2; exit 1; }
+"$ocp" 7

@@ -1,0 +1,104 @@
+#include "apps/optimize_command.hpp"
+
+#include <filesystem>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "apps/command_runner.hpp"
+#include "apps/plotting.hpp"
+#include "dynamics/energy.hpp"
+#include "dynamics/robot_config.hpp"
+#include "gaits/gait_summary.hpp"
+#include "gaits/hip_plan_search.hpp"
+#include "gaits/trajectory_csv.hpp"
+#include "ocp/gait_problem.hpp"
+
+namespace gaitopt::apps {
+namespace {
+
+/// The polynomial gait named by the config, with its free hip parameters chosen by NLopt.
+gaits::Trajectory initialGuess(const dynamics::Model& model, const ocp::OcpConfig& config) {
+  const gaits::GaitParams params = gaits::loadGait(config.guess_gait_path);
+  const gaits::HipPlanSearch search = gaits::searchHipPlan(model, params);
+  return gaits::buildTrajectory(gaits::PolynomialGait(model, params, search.plan), model, 1000);
+}
+
+/// Kinetic energy lost in the strike, from the solution's own impact variables [J].
+double impactLoss(const ocp::GaitProblem& p, const dynamics::Model& model,
+                  const Eigen::VectorXd& x) {
+  const int n = model.nLinks();
+  const Eigen::VectorXd strike = p.ssp.point(x, p.ssp.points() - 1);
+  const VecD theta = strike.head(n), dtheta = strike.segment(n, n);
+  const Vec2d base = x.segment<2>(p.impact_offset);
+  const VecD dtheta_plus = x.segment(p.impact_offset + 2, n);
+  return dynamics::kineticEnergy<double>(model, theta, dtheta) -
+         dynamics::kineticEnergy<double>(model, theta, dtheta_plus, base);
+}
+
+void writeResult(const OptimizeOptions& o, const dynamics::Model& model,
+                 const ocp::GaitProblem& problem, const ocp::SolveResult& r,
+                 const std::string& dir) {
+  std::filesystem::create_directories(dir);
+  const gaits::Trajectory traj = ocp::reconstruct(problem, model, r.x);
+  gaits::writeTrajectoryCsv(traj.resample(o.rate_hz), model, dir + "/trajectory.csv");
+  auto summary = gaits::gaitSummary(
+      traj, model,
+      {o.config_path, r.status, r.iterations, r.wall_time_s, r.callback_time_s, "torque_squared"});
+  summary["impact_energy_loss_J"] = impactLoss(problem, model, r.x);
+  summary["max_violation"] = r.max_violation;
+  summary["nlp"] = {{"variables", problem.nlp.variables()},
+                    {"constraints", problem.nlp.constraints()},
+                    {"segments", problem.ssp.segments},
+                    {"scheme", ocp::toString(problem.ssp.scheme)}};
+  gaits::writeJsonFile(summary, dir + "/summary.json");
+  if (o.plots) runPlotScript("gait_plots.py", fmt::format("'{}'", dir));
+}
+
+}  // namespace
+
+void runOptimize(const OptimizeOptions& o) {
+  ocp::OcpConfig config = ocp::loadOcpConfig(o.config_path);
+  const dynamics::Model model = dynamics::loadRobot(config.robot_path);
+  if (!o.quiet) fmt::print("optimize: {} on {}\n", config.name, model.name());
+  const ocp::GaitProblem problem =
+      ocp::buildGaitProblem(model, config, initialGuess(model, config));
+  if (!o.quiet)
+    fmt::print("optimize: {} variables, {} constraints, {} {} segments, {} Hessian\n",
+               problem.nlp.variables(), problem.nlp.constraints(), problem.ssp.segments,
+               ocp::toString(problem.ssp.scheme), config.solver.hessian);
+  config.solver.progress = !o.quiet;
+  const ocp::SolveResult r = ocp::solveWithIpopt(problem.nlp, config.solver);
+  fmt::print(
+      "optimize: {} after {} iterations, cost {:.6g}, max violation {:.2e}, {:.3f} s "
+      "({:.3f} s in our callbacks)\n",
+      r.status, r.iterations, r.cost, r.max_violation, r.wall_time_s, r.callback_time_s);
+  // A failed solve never overwrites a result: its last iterate goes to OUT.failed.
+  const std::string dir = r.success ? o.out_dir : o.out_dir + ".failed";
+  writeResult(o, model, problem, r, dir);
+  if (!r.success)
+    throw std::runtime_error(
+        fmt::format("solver status {}; last iterate written to {}", r.status, dir));
+  fmt::print("optimize: wrote {}/trajectory.csv, summary.json and pictures\n", dir);
+}
+
+void registerOptimizeCommand(CLI::App& app) {
+  auto options = std::make_shared<OptimizeOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "optimize", "Solve the gait optimal control problem of a config with Ipopt");
+  cmd->add_option("--config", options->config_path, "OCP YAML (configs/ocp/*.yaml)")
+      ->required()
+      ->option_text("FILE");
+  cmd->add_option("--out", options->out_dir, "Result folder (created)")
+      ->required()
+      ->option_text("DIR");
+  cmd->add_option("--rate", options->rate_hz, "Sample rate of trajectory.csv [Hz]")
+      ->check(CLI::Range(1.0, 1e6))
+      ->default_val(1000);
+  cmd->add_flag("--quiet", options->quiet, "No per-iteration progress");
+  cmd->add_flag("!--no-plots", options->plots, "Skip the pictures");
+  cmd->footer("Exit codes: 0 ok, 2 bad input, 1 solver failure (last iterate in DIR.failed).");
+  cmd->callback([options] { runSubcommand([&] { runOptimize(*options); }); });
+}
+
+}  // namespace gaitopt::apps

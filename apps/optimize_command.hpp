@@ -1,0 +1,23 @@
+#pragma once
+/// @file optimize_command.hpp
+/// `gaitopt optimize --config FILE --out DIR [--rate HZ] [--quiet] [--no-plots]`: solves the
+/// gait OCP of the config from its polynomial initial guess and writes trajectory.csv,
+/// summary.json and pictures.
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace gaitopt::apps {
+
+struct OptimizeOptions {
+  std::string config_path;
+  std::string out_dir;
+  double rate_hz = 1000;
+  bool quiet = false;
+  bool plots = true;
+};
+
+void runOptimize(const OptimizeOptions& options);
+void registerOptimizeCommand(CLI::App& app);
+
+}  // namespace gaitopt::apps
