@@ -1,19 +1,45 @@
 #include "ocp/point_function.hpp"
 
+#include <cstdlib>
 #include <stdexcept>
 
 namespace gaitopt::ocp {
 
-void appendLowerTriangle(const Eigen::MatrixXd& block, int offset, Triplets& out) {
-  for (int c = 0; c < block.cols(); ++c)
-    for (int r = c; r < block.rows(); ++r) out.emplace_back(offset + r, offset + c, block(r, c));
+void appendPattern(const Eigen::MatrixXd& block, const std::vector<std::pair<int, int>>& entries,
+                   int offset, Triplets& out) {
+  for (const auto& [r, c] : entries) out.emplace_back(offset + r, offset + c, block(r, c));
+}
+
+PointPattern probePattern(const PointFunction& f, int size) {
+  std::srand(7);  // Eigen's Random uses std::rand: seeded for a reproducible pattern
+  Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic> jac_nz =
+      Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic>::Constant(f.rows(), size, false);
+  Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic> hess_nz =
+      Eigen::Matrix<bool, Eigen::Dynamic, Eigen::Dynamic>::Constant(size, size, false);
+  Eigen::MatrixXd jac(f.rows(), size), hess(size, size);
+  for (int trial = 0; trial < 3; ++trial) {
+    const Eigen::VectorXd v = Eigen::VectorXd::Random(size);
+    f.jacobian(v, jac);
+    f.hessian(v, Eigen::VectorXd::Random(f.rows()), hess);
+    jac_nz = jac_nz.array() || (jac.array() != 0.0);
+    hess_nz = hess_nz.array() || (hess.array() != 0.0);
+  }
+  PointPattern p;
+  for (int c = 0; c < size; ++c) {
+    for (int r = 0; r < f.rows(); ++r)
+      if (jac_nz(r, c)) p.jacobian.emplace_back(r, c);
+    for (int r = c; r < size; ++r)
+      if (hess_nz(r, c) || hess_nz(c, r)) p.hessian.emplace_back(r, c);
+  }
+  return p;
 }
 
 PathConstraint::PathConstraint(std::string name, const PhaseLayout& layout,
                                std::shared_ptr<const PointFunction> function)
     : ConstraintSet(std::move(name), layout.points() * function->rows()),
       layout_(layout),
-      f_(std::move(function)) {}
+      f_(std::move(function)),
+      pattern_(probePattern(*f_, layout.pointSize())) {}
 
 Eigen::VectorXd PathConstraint::lowerBounds() const {
   return f_->lowerBounds().replicate(layout_.points(), 1);
@@ -33,9 +59,8 @@ void PathConstraint::jacobian(const Eigen::VectorXd& x, Triplets& out) const {
   Eigen::MatrixXd block(m, layout_.pointSize());
   for (int p = 0; p < layout_.points(); ++p) {
     f_->jacobian(layout_.point(x, p), block);
-    for (int c = 0; c < block.cols(); ++c)
-      for (int r = 0; r < m; ++r)
-        out.emplace_back(p * m + r, layout_.pointOffset(p) + c, block(r, c));
+    for (const auto& [r, c] : pattern_.jacobian)
+      out.emplace_back(p * m + r, layout_.pointOffset(p) + c, block(r, c));
   }
 }
 
@@ -45,7 +70,7 @@ void PathConstraint::hessian(const Eigen::VectorXd& x, const Eigen::VectorXd& la
   Eigen::MatrixXd block(layout_.pointSize(), layout_.pointSize());
   for (int p = 0; p < layout_.points(); ++p) {
     f_->hessian(layout_.point(x, p), lambda.segment(p * m, m), block);
-    appendLowerTriangle(block, layout_.pointOffset(p), out);
+    appendPattern(block, pattern_.hessian, layout_.pointOffset(p), out);
   }
 }
 
@@ -54,7 +79,8 @@ QuadratureCost::QuadratureCost(std::string name, const PhaseLayout& layout,
     : CostTerm(std::move(name)),
       layout_(layout),
       f_(std::move(integrand)),
-      weights_(layout.quadratureWeights()) {
+      weights_(layout.quadratureWeights()),
+      pattern_(probePattern(*f_, layout.pointSize())) {
   if (f_->rows() != 1) throw std::invalid_argument("a running cost integrand has one row");
 }
 
@@ -81,7 +107,7 @@ void QuadratureCost::hessian(const Eigen::VectorXd& x, double factor, Triplets& 
   Eigen::MatrixXd block(layout_.pointSize(), layout_.pointSize());
   for (int p = 0; p < layout_.points(); ++p) {
     f_->hessian(layout_.point(x, p), Eigen::VectorXd::Constant(1, factor * weights_(p)), block);
-    appendLowerTriangle(block, layout_.pointOffset(p), out);
+    appendPattern(block, pattern_.hessian, layout_.pointOffset(p), out);
   }
 }
 

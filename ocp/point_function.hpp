@@ -4,6 +4,8 @@
 /// derivatives, and the two ways a phase uses them: as a path constraint at every point
 /// (dynamics, friction cones, ...) and as the integrand of a running cost (quadrature).
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "ocp/collocation.hpp"
 
@@ -24,7 +26,17 @@ class PointFunction {
   virtual Eigen::VectorXd upperBounds() const { return Eigen::VectorXd::Zero(rows()); }
 };
 
-/// f(v_p) within bounds at every point of a phase. Each point fills its own dense block.
+/// Structural nonzeros of a point function: the union of the nonzero entries of its Jacobian
+/// and Hessian at three seeded random points in [-1, 1]^size. Exact for the smooth functions
+/// used here (trigonometric polynomials), whose entries vanish only on measure-zero sets.
+struct PointPattern {
+  std::vector<std::pair<int, int>> jacobian;  ///< (row, col)
+  std::vector<std::pair<int, int>> hessian;   ///< (row, col), row >= col
+};
+PointPattern probePattern(const PointFunction& f, int size);
+
+/// f(v_p) within bounds at every point of a phase. Each point fills its own block, with the
+/// entries of the probed pattern only (fewer nonzeros for Ipopt's linear solver).
 class PathConstraint : public ConstraintSet {
  public:
   PathConstraint(std::string name, const PhaseLayout& layout,
@@ -39,6 +51,7 @@ class PathConstraint : public ConstraintSet {
  private:
   PhaseLayout layout_;
   std::shared_ptr<const PointFunction> f_;
+  PointPattern pattern_;
 };
 
 /// The running cost sum_p w_p L(v_p), with the phase's quadrature weights; L has one row.
@@ -54,10 +67,12 @@ class QuadratureCost : public CostTerm {
   PhaseLayout layout_;
   std::shared_ptr<const PointFunction> f_;
   Eigen::VectorXd weights_;
+  PointPattern pattern_;
 };
 
-/// Appends the lower triangle of a dense symmetric block whose first row/column is variable
-/// `offset` (every entry, zeros included: the sparsity contract of nlp.hpp).
-void appendLowerTriangle(const Eigen::MatrixXd& block, int offset, Triplets& out);
+/// Appends the pattern's entries of a symmetric block whose first row/column is variable
+/// `offset` (zeros included: the sparsity contract of nlp.hpp).
+void appendPattern(const Eigen::MatrixXd& block, const std::vector<std::pair<int, int>>& entries,
+                   int offset, Triplets& out);
 
 }  // namespace gaitopt::ocp
