@@ -1,9 +1,8 @@
 #pragma once
 /// @file biped_dynamics.hpp
-/// The biped's dynamics as a collocation path constraint. State x = (theta, dtheta), its
-/// derivative xdot = (theta', ddtheta), inputs u = tau (joint torques, q-space), algebraic
-/// z = lambda (ground force at E, DSP only). Rows:
-///   theta' - dtheta = 0                                   (n, kinematic)
+/// The biped's dynamics as a collocation path constraint, on points of the second-order layout
+/// (collocation.hpp) v = [theta, dtheta, ddtheta, tau (, lambda)]: joint torques in q-space,
+/// lambda the ground force at E (DSP only). Rows:
 ///   SSP: D ddtheta + H dtheta + G - M^T tau = 0           (Mu 2.7, 2.43)
 ///   DSP: ... - J^T lambda = 0 and J ddtheta + Jdot dtheta = 0   (Mu 2.11, 2.9)
 /// Derivatives are the analytic ones of dynamics/residual_derivatives.hpp.
@@ -21,13 +20,10 @@ class BipedDynamics : public PointFunction {
   void hessian(const Eigen::VectorXd& v, const Eigen::VectorXd& weights,
                Eigen::Ref<Eigen::MatrixXd> hess) const override;
 
-  /// Point size: 5n (+ 2 in the DSP).
-  int pointSize() const { return 5 * n_ + (dsp_ ? 2 : 0); }
+  /// Point size: 4n (+ 2 in the DSP), the layout of dynamics/residual_derivatives.hpp.
+  int pointSize() const { return 4 * n_ + (dsp_ ? 2 : 0); }
 
  private:
-  /// Index in v of residual variable j (layout [theta, dtheta, ddtheta, tau, lambda]).
-  int column(int j) const { return j < 2 * n_ ? j : j + n_; }
-
   const dynamics::Model* model_;
   bool dsp_;
   int n_;

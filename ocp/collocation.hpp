@@ -19,22 +19,31 @@ const char* toString(Scheme scheme);
 /// @throws std::invalid_argument for anything but "trapezoidal" or "hermite_simpson".
 Scheme schemeFromString(const std::string& text);
 
-/// Where one phase's variables live: points in time order, each [x, xdot, u, z] contiguous.
+/// Where one phase's variables live: points in time order, each contiguous.
+/// First-order form (nq = 0): a point is [x, xdot, u, z].
+/// Second-order form (nq > 0, x = (q, v), nx = 2 nq): a point is [q, v, a, u, z] and
+/// xdot = (v, a) refers to the point's own v and a, so mechanical systems carry no duplicate
+/// of v and no kinematic rows qdot = v.
 struct PhaseLayout {
   Scheme scheme = Scheme::kHermiteSimpson;
   int segments = 0;
   double duration = 0;
   int nx = 0, nu = 0, nz = 0;
   int offset = 0;  ///< first variable of the phase in the decision vector
+  int nq = 0;      ///< > 0: second-order form with nx = 2 nq
 
   int points() const { return scheme == Scheme::kHermiteSimpson ? 2 * segments + 1 : segments + 1; }
-  int pointSize() const { return 2 * nx + nu + nz; }
+  int derivativeSize() const { return nq > 0 ? nq : nx; }  ///< xdot variables of a point
+  int pointSize() const { return nx + derivativeSize() + nu + nz; }
   int variables() const { return points() * pointSize(); }
   int pointOffset(int p) const { return offset + p * pointSize(); }
   int x(int p, int i) const { return pointOffset(p) + i; }
-  int xdot(int p, int i) const { return pointOffset(p) + nx + i; }
-  int u(int p, int i) const { return pointOffset(p) + 2 * nx + i; }
-  int z(int p, int i) const { return pointOffset(p) + 2 * nx + nu + i; }
+  int xdot(int p, int i) const {
+    if (nq > 0 && i < nq) return x(p, nq + i);  // dq/dt = v, stored in x
+    return pointOffset(p) + nx + (nq > 0 ? i - nq : i);
+  }
+  int u(int p, int i) const { return pointOffset(p) + nx + derivativeSize() + i; }
+  int z(int p, int i) const { return u(p, 0) + nu + i; }
   double segmentLength() const { return duration / segments; }
   /// Time of point p from the start of the phase.
   double time(int p) const;

@@ -6,18 +6,18 @@ constexpr double kInf = 1e20;  // Ipopt's infinity (nlp_upper_bound_inf)
 }
 
 void TorqueSquared::evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const {
-  f(0) = v.segment(4 * n_, n_).squaredNorm();
+  f(0) = v.segment(3 * n_, n_).squaredNorm();
 }
 
 void TorqueSquared::jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const {
   jac.setZero();
-  jac.block(0, 4 * n_, 1, n_) = 2 * v.segment(4 * n_, n_).transpose();
+  jac.block(0, 3 * n_, 1, n_) = 2 * v.segment(3 * n_, n_).transpose();
 }
 
 void TorqueSquared::hessian(const Eigen::VectorXd&, const Eigen::VectorXd& w,
                             Eigen::Ref<Eigen::MatrixXd> hess) const {
   hess.setZero();
-  hess.block(4 * n_, 4 * n_, n_, n_).diagonal().setConstant(2 * w(0));
+  hess.block(3 * n_, 3 * n_, n_, n_).diagonal().setConstant(2 * w(0));
 }
 
 void KneeDirection::evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const {

@@ -1,7 +1,7 @@
 #pragma once
 /// @file gait_costs.hpp
 /// Running costs and simple path constraints of the gait, as point functions of a collocation
-/// point v = [theta, dtheta, theta', ddtheta, tau] (see biped_dynamics.hpp).
+/// point v = [theta, dtheta, ddtheta, tau] (see biped_dynamics.hpp).
 #include "ocp/point_function.hpp"
 
 namespace gaitopt::ocp {

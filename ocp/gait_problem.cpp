@@ -19,11 +19,11 @@ namespace {
 constexpr double kInf = 1e20;
 using Bounds = std::pair<Eigen::VectorXd, Eigen::VectorXd>;
 
-/// Bounds of one point [theta, dtheta, theta', ddtheta, tau] from the robot and the switches.
+/// Bounds of one point [theta, dtheta, ddtheta, tau] from the robot and the switches.
 Bounds pointBounds(const dynamics::Model& model, const OcpConfig& c) {
   const int n = model.nLinks();
-  Eigen::VectorXd lo = Eigen::VectorXd::Constant(5 * n, -kInf);
-  Eigen::VectorXd hi = Eigen::VectorXd::Constant(5 * n, kInf);
+  Eigen::VectorXd lo = Eigen::VectorXd::Constant(4 * n, -kInf);
+  Eigen::VectorXd hi = Eigen::VectorXd::Constant(4 * n, kInf);
   for (int i = 0; i < n; ++i) {
     if (c.angle_range > 0) {  // |theta - upright|, upright = pi for the hanging swing leg
       const double up = i >= n - model.legLinks() ? std::numbers::pi : 0.0;
@@ -31,21 +31,21 @@ Bounds pointBounds(const dynamics::Model& model, const OcpConfig& c) {
       hi(i) = up + c.angle_range;
     }
     if (c.rate_limit > 0) {
-      lo(n + i) = lo(2 * n + i) = -c.rate_limit;
-      hi(n + i) = hi(2 * n + i) = c.rate_limit;
+      lo(n + i) = -c.rate_limit;
+      hi(n + i) = c.rate_limit;
     }
     const auto& joint = model.joints()[static_cast<size_t>(i)];
     const double limit = !joint.actuated ? 0.0 : (c.torque_limits ? joint.torque_limit : kInf);
-    lo(4 * n + i) = -limit;
-    hi(4 * n + i) = limit;
+    lo(3 * n + i) = -limit;
+    hi(3 * n + i) = limit;
   }
   return {lo, hi};
 }
 
 Eigen::VectorXd guessPoint(const gaits::Trajectory& guess, double t, int n) {
   const gaits::Knot k = guess.at(std::min(t, guess.endTime()));
-  Eigen::VectorXd v(5 * n);
-  v << k.theta, k.dtheta, k.dtheta, k.ddtheta, k.tau;
+  Eigen::VectorXd v(4 * n);
+  v << k.theta, k.dtheta, k.ddtheta, k.tau;
   return v;
 }
 
@@ -89,7 +89,7 @@ void addPhaseVariables(GaitProblem& p, const dynamics::Model& model, const OcpCo
   const int points = p.ssp.points();
   Eigen::VectorXd x0(p.ssp.variables());
   for (int k = 0; k < points; ++k)
-    x0.segment(k * 5 * n, 5 * n) = guessPoint(guess, p.ssp.time(k), n);
+    x0.segment(k * 4 * n, 4 * n) = guessPoint(guess, p.ssp.time(k), n);
   p.ssp.offset = p.nlp
                      .addVariables("ssp_points", p.ssp.variables(), lo.replicate(points, 1),
                                    hi.replicate(points, 1), x0)
@@ -137,7 +137,7 @@ GaitProblem buildGaitProblem(const dynamics::Model& model, const OcpConfig& conf
   const int n = model.nLinks();
   GaitProblem p;
   p.step_length = config.step_length;
-  p.ssp = PhaseLayout{config.scheme, phase.segments, phase.duration, 2 * n, n, 0, 0};
+  p.ssp = PhaseLayout{config.scheme, phase.segments, phase.duration, 2 * n, n, 0, 0, n};
   addPhaseVariables(p, model, config, guess);
   addImpactVariables(p, model, config);
   p.nlp.addConstraint(std::make_unique<CollocationDefects>(p.ssp, "ssp_defects"));
@@ -162,8 +162,8 @@ gaits::Trajectory reconstruct(const GaitProblem& problem, const dynamics::Model&
     knot.t = problem.ssp.time(k);
     knot.theta = v.segment(0, n);
     knot.dtheta = v.segment(n, n);
-    knot.ddtheta = v.segment(3 * n, n);
-    knot.tau = v.segment(4 * n, n);
+    knot.ddtheta = v.segment(2 * n, n);
+    knot.tau = v.segment(3 * n, n);
     knot.force_stance =
         dynamics::stanceForce<double>(model, knot.theta, knot.dtheta, knot.ddtheta, Vec2d::Zero());
     knots.push_back(std::move(knot));
