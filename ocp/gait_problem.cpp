@@ -3,27 +3,28 @@
 #include <numbers>
 #include <stdexcept>
 
-#include <fmt/format.h>
-
 #include "dynamics/ground.hpp"
 #include "dynamics/impact.hpp"
 #include "ocp/autodiff_constraint.hpp"
+#include "ocp/autodiff_point_function.hpp"
 #include "ocp/biped_dynamics.hpp"
+#include "ocp/contact_functions.hpp"
 #include "ocp/gait_costs.hpp"
 #include "ocp/gait_links.hpp"
-#include "ocp/point_function.hpp"
 
 namespace gaitopt::ocp {
 namespace {
 
 constexpr double kInf = 1e20;
 using Bounds = std::pair<Eigen::VectorXd, Eigen::VectorXd>;
+using Indices = std::vector<int>;
 
-/// Bounds of one point [theta, dtheta, ddtheta, tau] from the robot and the switches.
-Bounds pointBounds(const dynamics::Model& model, const OcpConfig& c) {
+/// Bounds of one point [theta, dtheta, ddtheta, tau (, lambda)] from the robot and switches.
+Bounds pointBounds(const dynamics::Model& model, const OcpConfig& c, bool dsp) {
   const int n = model.nLinks();
-  Eigen::VectorXd lo = Eigen::VectorXd::Constant(4 * n, -kInf);
-  Eigen::VectorXd hi = Eigen::VectorXd::Constant(4 * n, kInf);
+  const int size = 4 * n + (dsp ? 2 : 0);
+  Eigen::VectorXd lo = Eigen::VectorXd::Constant(size, -kInf);
+  Eigen::VectorXd hi = Eigen::VectorXd::Constant(size, kInf);
   for (int i = 0; i < n; ++i) {
     if (c.angle_range > 0) {  // |theta - upright|, upright = pi for the hanging swing leg
       const double up = i >= n - model.legLinks() ? std::numbers::pi : 0.0;
@@ -42,14 +43,18 @@ Bounds pointBounds(const dynamics::Model& model, const OcpConfig& c) {
   return {lo, hi};
 }
 
-Eigen::VectorXd guessPoint(const gaits::Trajectory& guess, double t, int n) {
-  const gaits::Knot k = guess.at(std::min(t, guess.endTime()));
-  Eigen::VectorXd v(4 * n);
-  v << k.theta, k.dtheta, k.ddtheta, k.tau;
+/// The guess at phase time t: the SSP side of the touchdown for the SSP, the DSP side after.
+Eigen::VectorXd guessPoint(const gaits::Trajectory& guess, double t, bool dsp, int n) {
+  const double ssp_end = guess.phaseDurations().front().second;
+  const double at = dsp ? std::min(ssp_end + t, guess.endTime()) : std::min(t, ssp_end - 1e-9);
+  const gaits::Knot k = guess.at(at);
+  Eigen::VectorXd v(4 * n + (dsp ? 2 : 0));
+  v.head(4 * n) << k.theta, k.dtheta, k.ddtheta, k.tau;
+  if (dsp) v.tail(2) = k.force_swing;
   return v;
 }
 
-/// Impact variables [qdot+, P_E (, P_B)] from the closed-form maps at the guess's strike state.
+/// Impact variables [qdot+, P_E (, P_B)] from the closed-form maps at the strike state.
 Eigen::VectorXd guessImpact(const dynamics::Model& model, const Eigen::VectorXd& strike,
                             bool both) {
   const int n = model.nLinks();
@@ -62,112 +67,186 @@ Eigen::VectorXd guessImpact(const dynamics::Model& model, const Eigen::VectorXd&
   return v;
 }
 
-std::vector<int> range(int first, int count) {
-  std::vector<int> idx(static_cast<size_t>(count));
+Indices range(int first, int count) {
+  Indices idx(static_cast<size_t>(count));
   for (int i = 0; i < count; ++i) idx[static_cast<size_t>(i)] = first + i;
   return idx;
 }
 
-std::vector<int> concat(std::vector<int> a, const std::vector<int>& b) {
+Indices concat(Indices a, const Indices& b) {
   a.insert(a.end(), b.begin(), b.end());
   return a;
 }
 
 /// A link constraint on `idx`; the functor is affine in all but the first `nonlinear` of them.
 template <class Fn>
-void addLink(Nlp& nlp, const std::string& name, int rows, std::vector<int> idx, int nonlinear,
-             Fn fn, double lo = 0.0, double hi = 0.0) {
+void addLink(Nlp& nlp, const std::string& name, int rows, Indices idx, int nonlinear, Fn fn,
+             double lo = 0.0, double hi = 0.0) {
   nlp.addConstraint(std::make_unique<AutoDiffConstraint<Fn>>(
       name, rows, std::move(idx), nonlinear, fn, Eigen::VectorXd::Constant(rows, lo),
       Eigen::VectorXd::Constant(rows, hi)));
 }
 
-void addPhaseVariables(GaitProblem& p, const dynamics::Model& model, const OcpConfig& c,
-                       const gaits::Trajectory& guess) {
+/// y = (a, b) -> b - a: one block of variables continues into another.
+struct Continuity {
+  template <class S>
+  dynamics::VecX<S> operator()(const dynamics::VecX<S>& y) const {
+    const auto half = y.size() / 2;
+    return y.tail(half) - y.head(half);
+  }
+};
+
+/// y = (a (4 rows: P_E then P_B)): impulses inside their friction cones, pushing up.
+struct ImpulseCones {
+  double mu;
+  template <class S>
+  dynamics::VecX<S> operator()(const dynamics::VecX<S>& y) const {
+    dynamics::VecX<S> g(6);
+    for (int tip = 0; tip < 2; ++tip) {
+      const S px = y(2 * tip), py = y(2 * tip + 1);
+      g.segment(3 * tip, 3) << py, mu * py - px, mu * py + px;
+    }
+    return g;
+  }
+};
+
+PhaseLayout addPhase(GaitProblem& p, const dynamics::Model& model, const OcpConfig& c,
+                     const gaits::Trajectory& guess, const PhaseConfig& phase, bool dsp) {
   const int n = model.nLinks();
-  const auto [lo, hi] = pointBounds(model, c);
-  const int points = p.ssp.points();
-  Eigen::VectorXd x0(p.ssp.variables());
-  for (int k = 0; k < points; ++k)
-    x0.segment(k * 4 * n, 4 * n) = guessPoint(guess, p.ssp.time(k), n);
-  p.ssp.offset = p.nlp
-                     .addVariables("ssp_points", p.ssp.variables(), lo.replicate(points, 1),
-                                   hi.replicate(points, 1), x0)
-                     .offset;
+  PhaseLayout l{c.scheme, phase.segments, phase.duration, 2 * n, n, dsp ? 2 : 0, 0, n};
+  const auto [lo, hi] = pointBounds(model, c, dsp);
+  Eigen::VectorXd x0(l.variables());
+  for (int k = 0; k < l.points(); ++k)
+    x0.segment(k * l.pointSize(), l.pointSize()) = guessPoint(guess, l.time(k), dsp, n);
+  l.offset = p.nlp
+                 .addVariables(dsp ? "dsp_points" : "ssp_points", l.variables(),
+                               lo.replicate(l.points(), 1), hi.replicate(l.points(), 1), x0)
+                 .offset;
+  return l;
 }
 
-void addImpactVariables(GaitProblem& p, const dynamics::Model& model, const OcpConfig& c) {
-  const int n = model.nLinks();
-  const bool both = c.impact == ImpactModel::kDouble;
-  const int size = n + 4 + (both ? 2 : 0);
-  const Eigen::VectorXd strike = p.ssp.point(p.nlp.initialGuess(), p.ssp.points() - 1);
-  Eigen::VectorXd lo = Eigen::VectorXd::Constant(size, -kInf);
-  Eigen::VectorXd hi = Eigen::VectorXd::Constant(size, kInf);
-  if (!both && c.trailing_lifts) lo(1) = 0;  // the old stance tip leaves the ground
-  p.impact_offset =
-      p.nlp.addVariables("impact", size, lo, hi, guessImpact(model, strike, both)).offset;
+template <class Fn>
+void addPath(GaitProblem& p, const PhaseLayout& l, const std::string& name, int rows, int nonlinear,
+             Fn fn, double lo, double hi) {
+  p.nlp.addConstraint(std::make_unique<PathConstraint>(
+      name, l,
+      std::make_shared<AutoDiffPointFunction<Fn>>(rows, nonlinear, fn,
+                                                  Eigen::VectorXd::Constant(rows, lo),
+                                                  Eigen::VectorXd::Constant(rows, hi))));
 }
 
-void addLinks(GaitProblem& p, const dynamics::Model& model, const OcpConfig& c) {
+void addPhaseConstraints(GaitProblem& p, const dynamics::Model& model, const OcpConfig& c,
+                         const PhaseLayout& l, bool dsp) {
   const int n = model.nLinks();
-  const bool both = c.impact == ImpactModel::kDouble;
+  const std::string phase = dsp ? "dsp" : "ssp";
+  p.nlp.addConstraint(std::make_unique<CollocationDefects>(l, phase + "_defects"));
+  p.nlp.addConstraint(std::make_unique<PathConstraint>(
+      phase + "_dynamics", l, std::make_shared<BipedDynamics>(model, dsp)));
+  if (c.knee_limits && model.legLinks() == 2)
+    p.nlp.addConstraint(
+        std::make_unique<PathConstraint>(phase + "_knees", l, std::make_shared<KneeDirection>(n)));
+  if (c.ground_contact) {
+    const bool zmp = c.zmp && model.joints().front().actuated;
+    const GroundContact contact{&model, dsp, zmp, p.step_length};
+    addPath(p, l, phase + "_ground_contact", contact.rows(), 2 * n, contact, 0.0, kInf);
+  }
+  if (!dsp && c.clearance >= 0)
+    addPath(p, l, "ssp_clearance", 1, n, SwingHeight{&model}, c.clearance, kInf);
+  p.nlp.addCost(std::make_unique<QuadratureCost>(phase + "_torque_squared", l,
+                                                 std::make_shared<TorqueSquared>(n)));
+}
+
+/// Touchdown at the end of the SSP: position, strike direction, impact; returns the indices of
+/// the rates right after it.
+Indices addTouchdown(GaitProblem& p, const dynamics::Model& model, const OcpConfig& c) {
+  const int n = model.nLinks();
   const int last = p.ssp.points() - 1;
-  const std::vector<int> theta_end = range(p.ssp.x(last, 0), n);
-  const std::vector<int> dtheta_end = range(p.ssp.x(last, n), n);
+  const Indices theta_end = range(p.ssp.x(last, 0), n);
+  const Indices dtheta_end = range(p.ssp.x(last, n), n);
+  const Indices strike = concat(theta_end, dtheta_end);
   // Every link is nonlinear in the strike angles only (the first n of its variables).
   addLink(p.nlp, "touchdown_position", 2, theta_end, n, TipAtTouchdown{&model, p.step_length});
+  if (c.impact == ImpactModel::kImpactless) {
+    addLink(p.nlp, "touchdown_at_rest", 1, strike, n, StrikeVelocity{&model});
+    return dtheta_end;
+  }
   if (c.swing_descends)
-    addLink(p.nlp, "strike_downward", 1, concat(theta_end, dtheta_end), n, StrikeVelocity{&model},
-            -kInf, 0.0);
-  addLink(p.nlp, "impact", n + 4 + (both ? 2 : 0),
-          concat(concat(theta_end, dtheta_end), range(p.impact_offset, n + 4 + (both ? 2 : 0))), n,
+    addLink(p.nlp, "strike_downward", 1, strike, n, StrikeVelocity{&model}, -kInf, 0.0);
+  const bool both = c.impact == ImpactModel::kDouble;
+  const int size = n + 4 + (both ? 2 : 0);
+  Eigen::VectorXd lo = Eigen::VectorXd::Constant(size, -kInf), hi = -lo;
+  if (!both && c.trailing_lifts) lo(1) = 0;  // the old stance tip leaves the ground
+  p.impact_offset =
+      p.nlp
+          .addVariables("impact", size, lo, hi,
+                        guessImpact(model, p.ssp.point(p.nlp.initialGuess(), last), both))
+          .offset;
+  addLink(p.nlp, "impact", size, concat(strike, range(p.impact_offset, size)), n,
           RigidImpact{&model, both});
-  const std::vector<int> start = range(p.ssp.x(0, 0), 2 * n);
-  addLink(p.nlp, "periodicity", 2 * n,
-          concat(concat(theta_end, range(p.impact_offset + 2, n)), start), 0, Periodicity{&model});
+  if (both && c.ground_contact)
+    addLink(p.nlp, "impulse_cones", 6, range(p.impact_offset + n + 2, 4), 0,
+            ImpulseCones{model.friction()}, 0.0, kInf);
+  return range(p.impact_offset + 2, n);
 }
 
 }  // namespace
 
 GaitProblem buildGaitProblem(const dynamics::Model& model, const OcpConfig& config,
                              const gaits::Trajectory& guess) {
-  const PhaseConfig& phase = config.phases.front();
   if (guess.nLinks() != model.nLinks())
     throw std::invalid_argument("initial guess and robot have different numbers of links");
   const int n = model.nLinks();
   GaitProblem p;
   p.step_length = config.step_length;
-  p.ssp = PhaseLayout{config.scheme, phase.segments, phase.duration, 2 * n, n, 0, 0, n};
-  addPhaseVariables(p, model, config, guess);
-  addImpactVariables(p, model, config);
-  p.nlp.addConstraint(std::make_unique<CollocationDefects>(p.ssp, "ssp_defects"));
-  p.nlp.addConstraint(std::make_unique<PathConstraint>(
-      "ssp_dynamics", p.ssp, std::make_shared<BipedDynamics>(model, false)));
-  if (config.knee_limits && model.legLinks() == 2)
-    p.nlp.addConstraint(
-        std::make_unique<PathConstraint>("knees", p.ssp, std::make_shared<KneeDirection>(n)));
-  addLinks(p, model, config);
-  p.nlp.addCost(std::make_unique<QuadratureCost>("torque_squared", p.ssp,
-                                                 std::make_shared<TorqueSquared>(n)));
+  p.ssp = addPhase(p, model, config, guess, config.phases.front(), false);
+  addPhaseConstraints(p, model, config, p.ssp, false);
+  const int last = p.ssp.points() - 1;
+  Indices theta_end = range(p.ssp.x(last, 0), n);
+  Indices rates_end = addTouchdown(p, model, config);
+  if (config.phases.size() == 2) {
+    p.dsp = addPhase(p, model, config, guess, config.phases.back(), true);
+    addPhaseConstraints(p, model, config, *p.dsp, true);
+    // The DSP starts where the touchdown left the robot.
+    addLink(p.nlp, "touchdown_to_dsp", 2 * n,
+            concat(concat(theta_end, rates_end), range(p.dsp->x(0, 0), 2 * n)), 0, Continuity{});
+    const int dsp_last = p.dsp->points() - 1;
+    theta_end = range(p.dsp->x(dsp_last, 0), n);
+    rates_end = range(p.dsp->x(dsp_last, n), n);
+  }
+  addLink(p.nlp, "periodicity", 2 * n,
+          concat(concat(theta_end, rates_end), range(p.ssp.x(0, 0), 2 * n)), 0,
+          Periodicity{&model});
   return p;
 }
 
-gaits::Trajectory reconstruct(const GaitProblem& problem, const dynamics::Model& model,
-                              const Eigen::VectorXd& x) {
+namespace {
+
+void appendKnots(std::vector<gaits::Knot>& knots, const PhaseLayout& l,
+                 const dynamics::Model& model, const Eigen::VectorXd& x, bool dsp, double t0) {
   const int n = model.nLinks();
-  std::vector<gaits::Knot> knots;
-  for (int k = 0; k < problem.ssp.points(); ++k) {
-    const Eigen::VectorXd v = problem.ssp.point(x, k);
+  for (int k = 0; k < l.points(); ++k) {
+    const Eigen::VectorXd v = l.point(x, k);
     gaits::Knot knot;
-    knot.t = problem.ssp.time(k);
+    knot.t = t0 + l.time(k);
+    knot.phase = dsp ? gaits::Phase::kDsp : gaits::Phase::kSsp;
     knot.theta = v.segment(0, n);
     knot.dtheta = v.segment(n, n);
     knot.ddtheta = v.segment(2 * n, n);
     knot.tau = v.segment(3 * n, n);
-    knot.force_stance =
-        dynamics::stanceForce<double>(model, knot.theta, knot.dtheta, knot.ddtheta, Vec2d::Zero());
+    if (dsp) knot.force_swing = v.segment<2>(4 * n);
+    knot.force_stance = dynamics::stanceForce<double>(model, knot.theta, knot.dtheta, knot.ddtheta,
+                                                      knot.force_swing);
     knots.push_back(std::move(knot));
   }
+}
+
+}  // namespace
+
+gaits::Trajectory reconstruct(const GaitProblem& problem, const dynamics::Model& model,
+                              const Eigen::VectorXd& x) {
+  std::vector<gaits::Knot> knots;
+  appendKnots(knots, problem.ssp, model, x, false, 0.0);
+  if (problem.dsp) appendKnots(knots, *problem.dsp, model, x, true, problem.ssp.duration);
   return gaits::Trajectory(model.name(), problem.step_length, std::move(knots));
 }
 

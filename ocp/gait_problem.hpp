@@ -1,9 +1,12 @@
 #pragma once
 /// @file gait_problem.hpp
 /// The periodic gait as one NLP (DESIGN.md sec. 6): a single-support phase collocated with the
-/// pinned-chain dynamics, the heel-strike impact at its end (rigid, single or double, impulses
-/// as variables), and relabelling back to the start of the phase. The initial guess is the
-/// polynomial gait of Mu ch. 3 sampled on the mesh.
+/// pinned-chain dynamics (Mu 2.7), the touchdown at its end (rigid single or double impact with
+/// the impulses as variables, or impactless), optionally a double-support phase with both tips
+/// pinned and the tip force as a variable (2.11), and relabelling (2.38) back to the start.
+/// The initial guess is the polynomial gait of Mu ch. 3 sampled on the mesh.
+#include <optional>
+
 #include <Eigen/Core>
 
 #include "dynamics/model.hpp"
@@ -17,16 +20,17 @@ namespace gaitopt::ocp {
 struct GaitProblem {
   Nlp nlp;
   PhaseLayout ssp;
-  int impact_offset = 0;  ///< qdot+ (n + 2), P_E (2) [, P_B (2)]
+  std::optional<PhaseLayout> dsp;
+  int impact_offset = -1;  ///< qdot+ (n + 2), P_E (2) [, P_B (2)]; -1 when impactless
   double step_length = 0;
 };
 
-/// @throws std::invalid_argument when the guess does not cover the phase.
+/// @throws std::invalid_argument when the guess does not fit the robot.
 GaitProblem buildGaitProblem(const dynamics::Model& model, const OcpConfig& config,
                              const gaits::Trajectory& guess);
 
 /// The solution as a Trajectory: one knot per collocation point (state, accelerations,
-/// torques, ground force at B from total momentum).
+/// torques, tip forces), with the touchdown as an SSP -> DSP switch pair.
 gaits::Trajectory reconstruct(const GaitProblem& problem, const dynamics::Model& model,
                               const Eigen::VectorXd& x);
 

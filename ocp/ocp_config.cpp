@@ -19,7 +19,7 @@ std::string relativeTo(const std::string& file, const std::string& path) {
 PhaseConfig readPhase(const YamlReader& r) {
   r.allowOnly({"name", "duration", "segments"});
   PhaseConfig p;
-  p.name = r.choice("name", {"SSP"});
+  p.name = r.choice("name", {"SSP", "DSP"});
   p.duration = r.number("duration", config::inRange(0.01, 10.0, "[s]"));
   const double segments = r.number("segments", config::inRange(1, 1000, "(whole number)"));
   if (segments != std::floor(segments)) r.fail("segments", "expected a whole number of segments");
@@ -29,7 +29,10 @@ PhaseConfig readPhase(const YamlReader& r) {
 
 void readConstraints(const YamlReader& r, OcpConfig& c) {
   r.allowOnly({"torque_limits", "knee_limits", "angle_range", "rate_limit", "swing_descends",
-               "trailing_lifts"});
+               "trailing_lifts", "ground_contact", "zmp", "clearance"});
+  c.ground_contact = r.booleanOr("ground_contact", true);
+  c.zmp = r.booleanOr("zmp", true);
+  c.clearance = r.numberOr("clearance", -1.0, config::inRange(-1.0, 1.0, "[m] (negative: off)"));
   c.torque_limits = r.booleanOr("torque_limits", true);
   c.knee_limits = r.booleanOr("knee_limits", true);
   c.angle_range = r.numberOr("angle_range", 0.0, config::inRange(0, std::numbers::pi, "[rad]"));
@@ -60,13 +63,21 @@ OcpConfig loadOcpConfig(const std::string& path) {
   c.guess_gait_path = relativeTo(path, root.string("initial_guess"));
   c.step_length = root.number("step_length", config::inRange(0.01, 5.0, "[m]"));
   for (const auto& item : root.list("phases")) c.phases.push_back(readPhase(item));
-  if (c.phases.size() != 1)
-    root.fail("phases", "expected exactly one SSP phase (double support is not supported yet)");
+  if (c.phases.front().name != "SSP" || c.phases.size() > 2 ||
+      (c.phases.size() == 2 && c.phases.back().name != "DSP"))
+    root.fail("phases", "expected [SSP] or [SSP, DSP]");
   c.scheme = root.choice("scheme", {"trapezoidal", "hermite_simpson"}) == "trapezoidal"
                  ? Scheme::kTrapezoidal
                  : Scheme::kHermiteSimpson;
-  c.impact = root.choice("impact", {"single", "double"}) == "double" ? ImpactModel::kDouble
-                                                                     : ImpactModel::kSingle;
+  const std::string impact = root.choice("impact", {"single", "double", "impactless"});
+  c.impact = impact == "single"   ? ImpactModel::kSingle
+             : impact == "double" ? ImpactModel::kDouble
+                                  : ImpactModel::kImpactless;
+  if ((c.phases.size() == 2) == (c.impact == ImpactModel::kSingle))
+    root.fail("impact", c.phases.size() == 2
+                            ? "a step with a DSP needs a double or impactless touchdown"
+                            : "a step without a DSP needs a single impact (the old stance tip "
+                              "lifts off)");
   c.cost = root.choice("cost", {"torque_squared"});
   if (root.has("constraints")) readConstraints(root.map("constraints"), c);
   if (root.has("solver")) readSolver(root.map("solver"), c.solver);

@@ -11,12 +11,14 @@
 namespace gaitopt::ocp {
 
 struct PhaseConfig {
-  std::string name;  ///< "SSP" (this version solves single-support steps)
+  std::string name;  ///< "SSP", then optionally "DSP"
   double duration = 0;
   int segments = 0;
 };
 
-enum class ImpactModel { kSingle, kDouble };
+/// Touchdown: rigid single impact (B lifts off; SSP-only steps), rigid double impact (both tips
+/// stay; leads into a DSP), or impactless (zero swing-tip velocity at touchdown, Mu ch. 3).
+enum class ImpactModel { kSingle, kDouble, kImpactless };
 
 struct OcpConfig {
   std::string name;
@@ -34,6 +36,9 @@ struct OcpConfig {
   double rate_limit = 0;       ///< |dtheta| bound [rad/s] (0: off)
   bool swing_descends = true;  ///< swing tip vertical velocity <= 0 at strike
   bool trailing_lifts = true;  ///< old stance tip vertical velocity >= 0 after a single impact
+  bool ground_contact = true;  ///< unilateral forces and friction cones at the tips in contact
+  bool zmp = true;             ///< ZMP inside the support (only if the ankle is actuated)
+  double clearance = -1;       ///< swing tip height >= clearance in the SSP [m] (< 0: off)
   SolverOptions solver;
 };
 
