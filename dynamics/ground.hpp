@@ -12,8 +12,8 @@ template <class S>
 Vec2<S> stanceForce(const Model& model, const Vec<S>& theta, const Vec<S>& dtheta,
                     const Vec<S>& ddtheta, const Vec2<S>& force_swing) {
   // Scalar on the right: Eigen's nested AutoDiff types only support matrix * scalar.
-  Vec2<S> f = pointAcceleration(model.totalComWeights(), theta, dtheta, ddtheta) *
-              S(model.totalMass());
+  Vec2<S> f =
+      pointAcceleration(model.totalComWeights(), theta, dtheta, ddtheta) * S(model.totalMass());
   f(1) += model.totalMass() * model.gravity();
   return f - force_swing;
 }

@@ -6,11 +6,10 @@
 #include "dynamics/ground.hpp"
 #include "dynamics/impact.hpp"
 #include "ocp/autodiff_constraint.hpp"
-#include "ocp/autodiff_point_function.hpp"
 #include "ocp/biped_dynamics.hpp"
-#include "ocp/contact_functions.hpp"
-#include "ocp/gait_costs.hpp"
 #include "ocp/gait_links.hpp"
+#include "ocp/ground_contact.hpp"
+#include "ocp/path_functions.hpp"
 
 namespace gaitopt::ocp {
 namespace {
@@ -125,16 +124,6 @@ PhaseLayout addPhase(GaitProblem& p, const dynamics::Model& model, const OcpConf
   return l;
 }
 
-template <class Fn>
-void addPath(GaitProblem& p, const PhaseLayout& l, const std::string& name, int rows, int nonlinear,
-             Fn fn, double lo, double hi) {
-  p.nlp.addConstraint(std::make_unique<PathConstraint>(
-      name, l,
-      std::make_shared<AutoDiffPointFunction<Fn>>(rows, nonlinear, fn,
-                                                  Eigen::VectorXd::Constant(rows, lo),
-                                                  Eigen::VectorXd::Constant(rows, hi))));
-}
-
 void addPhaseConstraints(GaitProblem& p, const dynamics::Model& model, const OcpConfig& c,
                          const PhaseLayout& l, bool dsp) {
   const int n = model.nLinks();
@@ -147,11 +136,13 @@ void addPhaseConstraints(GaitProblem& p, const dynamics::Model& model, const Ocp
         std::make_unique<PathConstraint>(phase + "_knees", l, std::make_shared<KneeDirection>(n)));
   if (c.ground_contact) {
     const bool zmp = c.zmp && model.joints().front().actuated;
-    const GroundContact contact{&model, dsp, zmp, p.step_length};
-    addPath(p, l, phase + "_ground_contact", contact.rows(), 2 * n, contact, 0.0, kInf);
+    p.nlp.addConstraint(std::make_unique<PathConstraint>(
+        phase + "_ground_contact", l,
+        std::make_shared<GroundContact>(model, dsp, zmp, p.step_length)));
   }
   if (!dsp && c.clearance >= 0)
-    addPath(p, l, "ssp_clearance", 1, n, SwingHeight{&model}, c.clearance, kInf);
+    p.nlp.addConstraint(std::make_unique<PathConstraint>(
+        "ssp_clearance", l, std::make_shared<SwingHeight>(model, c.clearance)));
   p.nlp.addCost(std::make_unique<QuadratureCost>(phase + "_torque_squared", l,
                                                  std::make_shared<TorqueSquared>(n)));
 }

@@ -186,6 +186,8 @@ SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options) {
   app->Options()->SetIntegerValue("max_iter", options.max_iterations);
   app->Options()->SetStringValue("hessian_approximation", options.hessian);
   app->Options()->SetStringValue("linear_solver", options.linear_solver);
+  app->Options()->SetStringValue("mu_strategy", options.mu_strategy);
+  app->Options()->SetNumericValue("mu_init", options.mu_init);
   app->Options()->SetIntegerValue("print_level", options.print_level);
   app->Options()->SetStringValue("sb", "yes");  // no Ipopt banner
   if (app->Initialize() != Ipopt::Solve_Succeeded)

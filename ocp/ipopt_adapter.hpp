@@ -12,12 +12,14 @@
 namespace gaitopt::ocp {
 
 struct SolverOptions {
-  double tolerance = 1e-6;              ///< Ipopt tol
-  int max_iterations = 500;             ///< Ipopt max_iter
-  std::string hessian = "exact";        ///< "exact" or "limited-memory"
-  std::string linear_solver = "mumps";  ///< Debian's Ipopt ships MUMPS
-  int print_level = 0;                  ///< 0 silent ... 5 Ipopt's iteration table
-  bool progress = false;                ///< one line per iteration on stdout (ours)
+  double tolerance = 1e-6;               ///< Ipopt tol
+  int max_iterations = 500;              ///< Ipopt max_iter
+  std::string hessian = "exact";         ///< "exact" or "limited-memory"
+  std::string linear_solver = "mumps";   ///< Debian's Ipopt ships MUMPS
+  std::string mu_strategy = "adaptive";  ///< barrier update: "monotone" or "adaptive"
+  double mu_init = 0.1;                  ///< initial barrier parameter
+  int print_level = 0;                   ///< 0 silent ... 5 Ipopt's iteration table
+  bool progress = false;                 ///< one line per iteration on stdout (ours)
 };
 
 struct SolveResult {

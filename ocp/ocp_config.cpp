@@ -42,7 +42,9 @@ void readConstraints(const YamlReader& r, OcpConfig& c) {
 }
 
 void readSolver(const YamlReader& r, SolverOptions& s) {
-  r.allowOnly({"tolerance", "max_iterations", "hessian", "print_level"});
+  r.allowOnly({"tolerance", "max_iterations", "hessian", "print_level", "mu_strategy", "mu_init"});
+  if (r.has("mu_strategy")) s.mu_strategy = r.choice("mu_strategy", {"monotone", "adaptive"});
+  s.mu_init = r.numberOr("mu_init", s.mu_init, config::inRange(1e-12, 1e3, ""));
   s.tolerance = r.numberOr("tolerance", s.tolerance, config::inRange(1e-14, 1e-1, ""));
   s.max_iterations =
       static_cast<int>(r.numberOr("max_iterations", s.max_iterations, config::inRange(1, 1e5, "")));

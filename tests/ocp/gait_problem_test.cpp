@@ -15,6 +15,7 @@
 #include "gaits/polynomial_gait.hpp"
 #include "ocp/gait_problem.hpp"
 #include "ocp/ipopt_adapter.hpp"
+#include "support/nlp_derivatives.hpp"
 
 namespace gaitopt::ocp {
 namespace {
@@ -28,43 +29,16 @@ gaits::Trajectory polynomialGuess(const dynamics::Model& model, const OcpConfig&
   return gaits::buildTrajectory(gait, model, 1000);
 }
 
-Eigen::MatrixXd dense(const Triplets& t, int rows, int cols) {
-  Eigen::SparseMatrix<double> m(rows, cols);
-  m.setFromTriplets(t.begin(), t.end());
-  return Eigen::MatrixXd(m);
-}
-
 TEST(RabbitGaitProblem, JacobianAndLagrangianHessianEqualCentralDifferences) {
   auto c = loadOcpConfig(kConfig);
   c.phases.front().segments = 3;  // small: every column is differenced
   const auto model = dynamics::loadRobot(c.robot_path);
   const GaitProblem p = buildGaitProblem(model, c, polynomialGuess(model, c));
-  const Nlp& nlp = p.nlp;
-  const int n = nlp.variables(), m = nlp.constraints();
-  const Eigen::VectorXd x = nlp.initialGuess() + 0.05 * Eigen::VectorXd::Random(n);
-  const Eigen::VectorXd lambda = Eigen::VectorXd::Random(m);
-  const double sigma = 0.3;
-  const Eigen::MatrixXd jac = dense(nlp.jacobianTriplets(x), m, n);
-  const Eigen::MatrixXd hess =
-      dense(nlp.hessianTriplets(x, sigma, lambda), n, n).selfadjointView<Eigen::Lower>();
-  auto lagrangianGradient = [&](const Eigen::VectorXd& z) -> Eigen::VectorXd {
-    return sigma * nlp.costGradient(z) + dense(nlp.jacobianTriplets(z), m, n).transpose() * lambda;
-  };
-  Eigen::MatrixXd fd_jac(m, n), fd_hess(n, n);
-  const double h = 1e-6;
-  for (int k = 0; k < n; ++k) {
-    Eigen::VectorXd xp = x, xm = x;
-    xp(k) += h;
-    xm(k) -= h;
-    fd_jac.col(k) = (nlp.constraintValues(xp) - nlp.constraintValues(xm)) / (2 * h);
-    fd_hess.col(k) = (lagrangianGradient(xp) - lagrangianGradient(xm)) / (2 * h);
-  }
-  const double jac_err = (fd_jac - jac).norm() / jac.norm();
-  const double hess_err = (fd_hess - hess).norm() / hess.norm();
-  RecordProperty("jacobian_relative_error", fmt::format("{:.2e}", jac_err));
-  RecordProperty("hessian_relative_error", fmt::format("{:.2e}", hess_err));
-  EXPECT_LT(jac_err, 1e-6);
-  EXPECT_LT(hess_err, 1e-6);
+  const test::DerivativeErrors e = test::compareWithCentralDifferences(p.nlp, 0.05);
+  RecordProperty("jacobian_relative_error", fmt::format("{:.2e}", e.jacobian));
+  RecordProperty("hessian_relative_error", fmt::format("{:.2e}", e.hessian));
+  EXPECT_LT(e.jacobian, 1e-6);
+  EXPECT_LT(e.hessian, 1e-6);
 }
 
 class RabbitSolution : public ::testing::Test {

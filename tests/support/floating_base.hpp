@@ -1,8 +1,8 @@
 #pragma once
 /// An independent reference formulation for the tests: the chain with a free base,
 /// q = (x_b, y_b, theta_1..theta_n), mass matrix (dynamics/floating_base.hpp) and forces
-/// assembled from the CoM Jacobians (virtual work), not from Mu's closed forms. Contacts at B and E enter through their
-/// Jacobians and are solved as KKT systems (notes/mu2004.md sec. 3.5).
+/// assembled from the CoM Jacobians (virtual work), not from Mu's closed forms. Contacts at B and E
+/// enter through their Jacobians and are solved as KKT systems (notes/mu2004.md sec. 3.5).
 #include <Eigen/Dense>
 
 #include "dynamics/floating_base.hpp"

@@ -1,4 +1,6 @@
-#include "ocp/gait_costs.hpp"
+#include "ocp/path_functions.hpp"
+
+#include <cmath>
 
 namespace gaitopt::ocp {
 namespace {
@@ -37,6 +39,25 @@ Eigen::VectorXd KneeDirection::lowerBounds() const {
 }
 Eigen::VectorXd KneeDirection::upperBounds() const {
   return Eigen::Vector2d(kInf, 0);
+}
+
+void SwingHeight::evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const {
+  const auto& w = model_->tipWeights();
+  f(0) = 0;
+  for (int j = 0; j < model_->nLinks(); ++j) f(0) += w(j) * std::cos(v(j));
+}
+
+void SwingHeight::jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const {
+  const auto& w = model_->tipWeights();
+  jac.setZero();
+  for (int j = 0; j < model_->nLinks(); ++j) jac(0, j) = -w(j) * std::sin(v(j));
+}
+
+void SwingHeight::hessian(const Eigen::VectorXd& v, const Eigen::VectorXd& weights,
+                          Eigen::Ref<Eigen::MatrixXd> hess) const {
+  const auto& w = model_->tipWeights();
+  hess.setZero();
+  for (int j = 0; j < model_->nLinks(); ++j) hess(j, j) = -weights(0) * w(j) * std::cos(v(j));
 }
 
 }  // namespace gaitopt::ocp

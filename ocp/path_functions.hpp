@@ -1,7 +1,8 @@
 #pragma once
-/// @file gait_costs.hpp
-/// Running costs and simple path constraints of the gait, as point functions of a collocation
+/// @file path_functions.hpp
+/// Running costs and kinematic path constraints of the gait, as point functions of a collocation
 /// point v = [theta, dtheta, ddtheta, tau] (see biped_dynamics.hpp).
+#include "dynamics/model.hpp"
 #include "ocp/point_function.hpp"
 
 namespace gaitopt::ocp {
@@ -37,6 +38,25 @@ class KneeDirection : public PointFunction {
 
  private:
   int n_;
+};
+
+/// Swing-tip height above the ground, y_E = sum_j a_j l_j cos(theta_j) (Mu 2.1) [m]; bounded
+/// below by the clearance.
+class SwingHeight : public PointFunction {
+ public:
+  SwingHeight(const dynamics::Model& model, double clearance)
+      : model_(&model), clearance_(clearance) {}
+  int rows() const override { return 1; }
+  void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override;
+  void jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const override;
+  void hessian(const Eigen::VectorXd& v, const Eigen::VectorXd& w,
+               Eigen::Ref<Eigen::MatrixXd> hess) const override;
+  Eigen::VectorXd lowerBounds() const override { return Eigen::VectorXd::Constant(1, clearance_); }
+  Eigen::VectorXd upperBounds() const override { return Eigen::VectorXd::Constant(1, 1e20); }
+
+ private:
+  const dynamics::Model* model_;
+  double clearance_;
 };
 
 }  // namespace gaitopt::ocp

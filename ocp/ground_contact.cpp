@@ -1,0 +1,72 @@
+#include "ocp/ground_contact.hpp"
+
+#include "dynamics/ground.hpp"
+#include "dynamics/point_acceleration_derivatives.hpp"
+
+namespace gaitopt::ocp {
+namespace {
+
+using Row = Eigen::Matrix<double, 1, 5>;  // coefficients of (F_Bx, F_By, F_Ex, F_Ey, tau0)
+
+}  // namespace
+
+GroundContact::GroundContact(const dynamics::Model& model, bool dsp, bool zmp, double step_length)
+    : model_(&model), dsp_(dsp), n_(model.nLinks()) {
+  const double mu = model.friction();
+  std::vector<Row> rows{Row(0, 1, 0, 0, 0), Row(-1, mu, 0, 0, 0), Row(1, mu, 0, 0, 0)};
+  if (dsp) {
+    rows.push_back(Row(0, 0, 0, 1, 0));
+    rows.push_back(Row(0, 0, -1, mu, 0));
+    rows.push_back(Row(0, 0, 1, mu, 0));
+  }
+  if (zmp) {
+    const double heel = model.foot().heel;
+    const double hi = (dsp ? step_length : 0.0) + model.foot().toe;
+    // M = step_length F_Ey - tau0; M + heel Fy >= 0 and hi Fy - M >= 0.
+    rows.push_back(Row(0, heel, 0, step_length + heel, -1));
+    rows.push_back(Row(0, hi, 0, hi - step_length, 1));
+  }
+  rows_.resize(static_cast<Eigen::Index>(rows.size()), 5);
+  for (size_t r = 0; r < rows.size(); ++r) rows_.row(static_cast<Eigen::Index>(r)) = rows[r];
+}
+
+Eigen::Matrix<double, 5, 1> GroundContact::contactQuantities(const Eigen::VectorXd& v) const {
+  const int n = n_;
+  const Vec2d f_e = dsp_ ? Vec2d(v.segment<2>(4 * n)) : Vec2d::Zero();
+  const Vec2d f_b =
+      dynamics::stanceForce<double>(*model_, v.head(n), v.segment(n, n), v.segment(2 * n, n), f_e);
+  Eigen::Matrix<double, 5, 1> s;
+  s << f_b, f_e, v(3 * n);
+  return s;
+}
+
+void GroundContact::evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const {
+  f = rows_ * contactQuantities(v);
+}
+
+void GroundContact::jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const {
+  const int n = n_;
+  // ds/dv: F_B through m a_com(theta, dtheta, ddtheta) and -F_E; F_E and tau0 directly.
+  Eigen::MatrixXd ds = Eigen::MatrixXd::Zero(5, v.size());
+  ds.topLeftCorner(2, 3 * n) = model_->totalMass() * dynamics::pointAccelerationJacobian(
+                                                         model_->totalComWeights(), v.head(n),
+                                                         v.segment(n, n), v.segment(2 * n, n));
+  if (dsp_) {
+    ds.block(0, 4 * n, 2, 2) = -Eigen::Matrix2d::Identity();
+    ds.block(2, 4 * n, 2, 2) = Eigen::Matrix2d::Identity();
+  }
+  ds(4, 3 * n) = 1;
+  jac = rows_ * ds;
+}
+
+void GroundContact::hessian(const Eigen::VectorXd& v, const Eigen::VectorXd& w,
+                            Eigen::Ref<Eigen::MatrixXd> hess) const {
+  const int n = n_;
+  hess.setZero();
+  // Only F_B is nonlinear: weight of a_com = m * (rows^T w) restricted to F_B.
+  const Eigen::Vector2d c = model_->totalMass() * (rows_.transpose() * w).head<2>();
+  hess.topLeftCorner(3 * n, 3 * n) = dynamics::pointAccelerationHessian(
+      model_->totalComWeights(), v.head(n), v.segment(n, n), v.segment(2 * n, n), c);
+}
+
+}  // namespace gaitopt::ocp

@@ -1,0 +1,39 @@
+#pragma once
+/// @file ground_contact.hpp
+/// Contact conditions at a collocation point v = [theta, dtheta, ddtheta, tau (, lambda)]
+/// (DESIGN.md sec. 6); every row is >= 0 when its condition holds:
+///   F_By, mu F_By - F_Bx, mu F_By + F_Bx                 (unilateral, Coulomb friction at B)
+///   F_Ey, mu F_Ey - F_Ex, mu F_Ey + F_Ex                 (the same at E, DSP only)
+///   M + heel Fy, hi Fy - M                                (ZMP in [-heel, hi], if enabled)
+/// with F_B = m (a_com + g e_y) - F_E from total linear momentum (ground.hpp), F_E = lambda,
+/// M = x_zmp Fy = step_length F_Ey - tau0 (moment of the ground wrench about B, ground moment
+/// -tau0), Fy = F_By + F_Ey, hi = toe (SSP) or step_length + toe (DSP).
+/// Every row is linear in s = (F_B, F_E, tau0); F_B is the only nonlinear part, so the
+/// derivatives are those of a_com (point_acceleration_derivatives.hpp), exact and cheap.
+#include "dynamics/model.hpp"
+#include "ocp/point_function.hpp"
+
+namespace gaitopt::ocp {
+
+class GroundContact : public PointFunction {
+ public:
+  GroundContact(const dynamics::Model& model, bool dsp, bool zmp, double step_length);
+  int rows() const override { return static_cast<int>(rows_.rows()); }
+  void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override;
+  void jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const override;
+  void hessian(const Eigen::VectorXd& v, const Eigen::VectorXd& w,
+               Eigen::Ref<Eigen::MatrixXd> hess) const override;
+  Eigen::VectorXd lowerBounds() const override { return Eigen::VectorXd::Zero(rows()); }
+  Eigen::VectorXd upperBounds() const override { return Eigen::VectorXd::Constant(rows(), 1e20); }
+
+ private:
+  /// s = (F_Bx, F_By, F_Ex, F_Ey, tau0) at the point.
+  Eigen::Matrix<double, 5, 1> contactQuantities(const Eigen::VectorXd& v) const;
+
+  const dynamics::Model* model_;
+  bool dsp_;
+  int n_;
+  Eigen::Matrix<double, Eigen::Dynamic, 5> rows_;  // g = rows_ * s
+};
+
+}  // namespace gaitopt::ocp
