@@ -1,8 +1,10 @@
 /// @file ocp_bench.cpp
-/// Solve times of the RABBIT benchmark (Kelly 2017; configs/ocp/rabbit_kelly2017.yaml) from the
-/// polynomial guess: Hermite-Simpson with 6, 15 and 25 segments, exact Hessian versus Ipopt's
-/// limited-memory approximation. Each case is solved `repeats` times; the table gives medians
-/// and the ratio of each median wall time to the exact-Hessian one of the same mesh.
+/// Solve times from the polynomial guess, exact Hessian versus Ipopt's limited-memory
+/// approximation: the default five-link problem (configs/ocp/mu2004_walk.yaml: SSP 30 + DSP 6
+/// Hermite-Simpson segments, double impact) and the RABBIT benchmark of Kelly 2017
+/// (configs/ocp/rabbit_kelly2017.yaml) at 6, 15 and 25 segments. Each case is solved `repeats`
+/// times; the table gives medians and the ratio of each median wall time to the exact-Hessian
+/// one of the same problem.
 /// Usage: ocp_bench [repeats]
 #include <algorithm>
 #include <cstdio>
@@ -12,7 +14,7 @@
 #include <fmt/format.h>
 
 #include "dynamics/robot_config.hpp"
-#include "gaits/polynomial_gait.hpp"
+#include "gaits/hip_plan_search.hpp"
 #include "ocp/gait_problem.hpp"
 #include "ocp/ipopt_adapter.hpp"
 
@@ -26,17 +28,12 @@ double median(std::vector<double> v) {
 }
 
 struct Row {
-  int segments;
-  std::string hessian;
   ocp::SolveResult last;
   double wall, callbacks;
 };
 
-Row run(const ocp::OcpConfig& base, const dynamics::Model& model, const gaits::Trajectory& guess,
-        int segments, const std::string& hessian, int repeats) {
-  ocp::OcpConfig c = base;
-  c.phases.front().segments = segments;
-  c.solver.hessian = hessian;
+Row run(const ocp::OcpConfig& c, const dynamics::Model& model, const gaits::Trajectory& guess,
+        int repeats) {
   const ocp::GaitProblem p = ocp::buildGaitProblem(model, c, guess);
   std::vector<double> wall, callbacks;
   ocp::SolveResult r;
@@ -45,35 +42,47 @@ Row run(const ocp::OcpConfig& base, const dynamics::Model& model, const gaits::T
     wall.push_back(r.wall_time_s);
     callbacks.push_back(r.callback_time_s);
   }
-  return {segments, hessian, r, median(wall), median(callbacks)};
+  return {r, median(wall), median(callbacks)};
+}
+
+/// The config's polynomial gait with its hip plan chosen as `gaitopt optimize` does.
+gaits::Trajectory guessFor(const dynamics::Model& model, const ocp::OcpConfig& c) {
+  const auto params = gaits::loadGait(c.guess_gait_path);
+  const gaits::PolynomialGait gait(model, params, gaits::searchHipPlan(model, params).plan);
+  return gaits::buildTrajectory(gait, model, 1000);
+}
+
+/// One table row per Hessian mode for `config` with the SSP cut into `segments`.
+void benchmark(const std::string& label, ocp::OcpConfig config, int segments, int repeats) {
+  const auto model = dynamics::loadRobot(config.robot_path);
+  const gaits::Trajectory guess = guessFor(model, config);
+  config.phases.front().segments = segments;
+  double exact_wall = 0;
+  for (const std::string hessian : {"exact", "limited-memory"}) {
+    config.solver.hessian = hessian;
+    const Row r = run(config, model, guess, repeats);
+    if (hessian == "exact") exact_wall = r.wall;
+    fmt::print("| {} | {} | {} | {} | {} | {:.4f} | {:.4f} | {:.4f} | {:.0f} % | {:.2f} |\n", label,
+               segments, hessian, r.last.status, r.last.iterations, r.last.cost, r.wall,
+               r.callbacks, 100 * r.callbacks / r.wall, r.wall / exact_wall);
+  }
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 7;
-  const auto config =
-      ocp::loadOcpConfig(std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/rabbit_kelly2017.yaml");
-  const auto model = dynamics::loadRobot(config.robot_path);
-  const auto gp = gaits::loadGait(config.guess_gait_path);
-  const gaits::PolynomialGait gait(
-      model, gp, {*gp.hip_velocity_start, *gp.hip_velocity_touchdown, *gp.hip_dsp_start});
-  const gaits::Trajectory guess = gaits::buildTrajectory(gait, model, 1000);
-
-  fmt::print("RABBIT (Kelly 2017), Hermite-Simpson, tol {:g}, {} solves per row, medians\n\n",
-             config.solver.tolerance, repeats);
+  const std::string dir = std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/";
+  const auto five_link = ocp::loadOcpConfig(dir + "mu2004_walk.yaml");
+  const auto rabbit = ocp::loadOcpConfig(dir + "rabbit_kelly2017.yaml");
+  fmt::print("Hermite-Simpson, Ipopt tol {:g}, {} solves per row, medians\n\n",
+             five_link.solver.tolerance, repeats);
   fmt::print(
-      "| segments | Hessian | status | iterations | cost J | wall s | callbacks s | "
-      "callback share | wall / exact |\n|---:|---|---|---:|---:|---:|---:|---:|---:|\n");
-  for (int segments : {6, 15, 25}) {
-    double exact_wall = 0;
-    for (const std::string hessian : {"exact", "limited-memory"}) {
-      const Row r = run(config, model, guess, segments, hessian, repeats);
-      if (hessian == "exact") exact_wall = r.wall;
-      fmt::print("| {} | {} | {} | {} | {:.4f} | {:.4f} | {:.4f} | {:.0f} % | {:.2f} |\n", segments,
-                 hessian, r.last.status, r.last.iterations, r.last.cost, r.wall, r.callbacks,
-                 100 * r.callbacks / r.wall, r.wall / exact_wall);
-    }
-  }
+      "| problem | SSP segments | Hessian | status | iterations | cost J | wall s | "
+      "callbacks s | callback share | wall / exact |\n"
+      "|---|---:|---|---|---:|---:|---:|---:|---:|---:|\n");
+  benchmark("five-link SSP+DSP (mu2004_walk)", five_link, five_link.phases.front().segments,
+            repeats);
+  for (int segments : {6, 15, 25}) benchmark("RABBIT (Kelly 2017)", rabbit, segments, repeats);
   return 0;
 }
