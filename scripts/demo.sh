@@ -32,7 +32,18 @@ echo "== gaitopt poly: Mu (2004) ch. 3 polynomial gait of the five-link robot"
 "$bin" poly --robot "configs/robots/mu2004_five_link.yaml" \
   --gait "configs/gaits/mu2004.yaml" --out "results/poly_mu2004"
 
+echo "== gaitopt optimize: the default five-link problem from the polynomial gait"
+"$bin" optimize --config configs/ocp/mu2004_walk.yaml --out results/opt_mu2004 --quiet
+echo "== gaitopt optimize: the RABBIT benchmark of Kelly (2017)"
+"$bin" optimize --config configs/ocp/rabbit_kelly2017.yaml --out results/opt_rabbit --quiet
+
+echo "== polynomial (A) versus optimal (B) gait of the five-link robot"
+/usr/bin/python3 scripts/compare_gaits.py results/poly_mu2004 results/opt_mu2004 \
+  results/poly_vs_opt_mu2004.md
+
 echo "Results are in $root/results/:"
 echo "  inspect/*.json          robot models and dynamics at a posture"
 echo "  convention.png          angle convention"
 echo "  poly_mu2004/            polynomial gait: trajectory.csv (1 kHz), summary.json, *.png"
+echo "  opt_mu2004/, opt_rabbit/  optimal gaits, same files"
+echo "  poly_vs_opt_mu2004.md   the comparison table above"
