@@ -41,7 +41,7 @@ void writeResult(const OptimizeOptions& o, const dynamics::Model& model,
                  const std::string& dir) {
   std::filesystem::create_directories(dir);
   const gaits::Trajectory traj = ocp::reconstruct(problem, model, r.x);
-  gaits::writeTrajectoryCsv(traj.resample(o.rate_hz), model, dir + "/trajectory.csv");
+  gaits::writeTrajectoryCsv(traj.resample(o.output.rate_hz), model, dir + "/trajectory.csv");
   auto summary = gaits::gaitSummary(
       traj, model,
       {o.config_path, r.status, r.iterations, r.wall_time_s, r.callback_time_s, "torque_squared"});
@@ -53,7 +53,7 @@ void writeResult(const OptimizeOptions& o, const dynamics::Model& model,
                     {"segments", problem.ssp.segments},
                     {"scheme", ocp::toString(problem.ssp.scheme)}};
   gaits::writeJsonFile(summary, dir + "/summary.json");
-  if (o.plots) runPlotScript("gait_plots.py", fmt::format("'{}'", dir));
+  if (o.output.plots) runPlotScript("gait_plots.py", fmt::format("'{}'", dir));
 }
 
 }  // namespace
@@ -75,7 +75,7 @@ void runOptimize(const OptimizeOptions& o) {
       "({:.3f} s in our callbacks)\n",
       r.status, r.iterations, r.cost, r.max_violation, r.wall_time_s, r.callback_time_s);
   // A failed solve never overwrites a result: its last iterate goes to OUT.failed.
-  const std::string dir = r.success ? o.out_dir : o.out_dir + ".failed";
+  const std::string dir = r.success ? o.output.out_dir : o.output.out_dir + ".failed";
   writeResult(o, model, problem, r, dir);
   if (!r.success)
     throw std::runtime_error(
@@ -90,14 +90,8 @@ void registerOptimizeCommand(CLI::App& app) {
   cmd->add_option("--config", options->config_path, "OCP YAML (configs/ocp/*.yaml)")
       ->required()
       ->option_text("FILE");
-  cmd->add_option("--out", options->out_dir, "Result folder (created)")
-      ->required()
-      ->option_text("DIR");
-  cmd->add_option("--rate", options->rate_hz, "Sample rate of trajectory.csv [Hz]")
-      ->check(CLI::Range(1.0, 1e6))
-      ->default_val(1000);
+  addOutputOptions(cmd, options->output);
   cmd->add_flag("--quiet", options->quiet, "No per-iteration progress");
-  cmd->add_flag("!--no-plots", options->plots, "Skip the pictures");
   cmd->footer("Exit codes: 0 ok, 2 bad input, 1 solver failure (last iterate in DIR.failed).");
   cmd->callback([options] { runSubcommand([&] { runOptimize(*options); }); });
 }

@@ -7,14 +7,14 @@
 
 #include <CLI/CLI.hpp>
 
+#include "apps/output_options.hpp"
+
 namespace gaitopt::apps {
 
 struct OptimizeOptions {
   std::string config_path;
-  std::string out_dir;
-  double rate_hz = 1000;
+  OutputOptions output;
   bool quiet = false;
-  bool plots = true;
 };
 
 void runOptimize(const OptimizeOptions& options);

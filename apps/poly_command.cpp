@@ -53,24 +53,25 @@ void runPoly(const PolyOptions& options) {
       search.plan.velocity_touchdown, search.plan.dsp_start, search.margin);
 
   const gaits::PolynomialGait gait(model, params, search.plan);
-  const gaits::Trajectory traj = gaits::buildTrajectory(gait, model, options.rate_hz);
+  const gaits::Trajectory traj = gaits::buildTrajectory(gait, model, options.output.rate_hz);
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  std::filesystem::create_directories(options.out_dir);
-  gaits::writeTrajectoryCsv(traj, model, options.out_dir + "/trajectory.csv");
+  std::filesystem::create_directories(options.output.out_dir);
+  gaits::writeTrajectoryCsv(traj, model, options.output.out_dir + "/trajectory.csv");
   auto summary = gaits::gaitSummary(traj, model, {options.gait_path, "designed", 0, elapsed, 0});
   summary.update(gaitJson(params, search));
-  gaits::writeJsonFile(summary, options.out_dir + "/summary.json");
+  gaits::writeJsonFile(summary, options.output.out_dir + "/summary.json");
   fmt::print(
       "poly: energy {:.2f} J, CoT {:.4f}, min normal force {:.1f} N, max friction ratio "
       "{:.3f}, min ZMP margin {:.4f} m\n",
       summary["energy_J"].get<double>(), summary["cost_of_transport"].get<double>(),
       summary["min_normal_force"].get<double>(), summary["max_friction_ratio"].get<double>(),
       summary["min_zmp_margin"].get<double>());
-  if (options.plots) runPlotScript("gait_plots.py", fmt::format("'{}'", options.out_dir));
+  if (options.output.plots)
+    runPlotScript("gait_plots.py", fmt::format("'{}'", options.output.out_dir));
   fmt::print("poly: wrote {}/trajectory.csv ({} samples), summary.json and pictures\n",
-             options.out_dir, traj.knots().size());
+             options.output.out_dir, traj.knots().size());
 }
 
 void registerPolyCommand(CLI::App& app) {
@@ -83,13 +84,7 @@ void registerPolyCommand(CLI::App& app) {
   cmd->add_option("--gait", options->gait_path, "Gait YAML (configs/gaits/*.yaml)")
       ->required()
       ->option_text("FILE");
-  cmd->add_option("--out", options->out_dir, "Result folder (created)")
-      ->required()
-      ->option_text("DIR");
-  cmd->add_option("--rate", options->rate_hz, "Sample rate of trajectory.csv [Hz]")
-      ->check(CLI::Range(1.0, 1e6))
-      ->default_val(1000);
-  cmd->add_flag("!--no-plots", options->plots, "Skip the pictures");
+  addOutputOptions(cmd, options->output);
   cmd->footer(
       "Exit codes: 0 ok, 2 bad input file or usage, 3 gait cannot be realised (a leg "
       "cannot reach), 1 other failure.");

@@ -6,14 +6,14 @@
 
 #include <CLI/CLI.hpp>
 
+#include "apps/output_options.hpp"
+
 namespace gaitopt::apps {
 
 struct PolyOptions {
   std::string robot_path;
   std::string gait_path;
-  std::string out_dir;
-  double rate_hz = 1000;
-  bool plots = true;
+  OutputOptions output;
 };
 
 void runPoly(const PolyOptions& options);

@@ -2,7 +2,6 @@
 // adaptive 7(8) Runge-Kutta-Fehlberg scheme from Boost.Odeint at tolerance 1e-13.
 #include <gtest/gtest.h>
 
-#include <boost/numeric/odeint.hpp>
 #include <vector>
 
 #include <fmt/format.h>
@@ -10,51 +9,31 @@
 #include "dynamics/energy.hpp"
 #include "dynamics/ssp_dynamics.hpp"
 #include "support/fixtures.hpp"
+#include "support/ssp_simulation.hpp"
 
 namespace gaitopt::test {
 namespace {
-
-using State = std::vector<double>;
-
-double totalEnergy(const dynamics::Model& m, const State& x) {
-  const int n = m.nLinks();
-  const VecD th = Eigen::Map<const Eigen::VectorXd>(x.data(), n);
-  const VecD dth = Eigen::Map<const Eigen::VectorXd>(x.data() + n, n);
-  return dynamics::kineticEnergy(m, th, dth) + dynamics::potentialEnergy(m, th);
-}
 
 class EnergyTest : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(EnergyTest, ZeroTorqueFreeMotionConservesEnergyOverTwoSeconds) {
   const auto model = loadNamed(GetParam());
   const int n = model.nLinks();
-  auto rhs = [&](const State& x, State& dxdt, double) {
-    const VecD th = Eigen::Map<const Eigen::VectorXd>(x.data(), n);
-    const VecD dth = Eigen::Map<const Eigen::VectorXd>(x.data() + n, n);
-    const VecD dd = dynamics::sspForwardDynamics(model, th, dth, VecD::Zero(n));
-    for (int i = 0; i < n; ++i) {
-      dxdt[static_cast<size_t>(i)] = dth(i);
-      dxdt[static_cast<size_t>(n + i)] = dd(i);
-    }
-  };
   std::mt19937 rng(7);
   const VecD th0 = randomPosture(rng, model);
   const VecD dth0 = randomVec(rng, n, -1, 1);
-  State x(th0.data(), th0.data() + n);
-  x.insert(x.end(), dth0.data(), dth0.data() + n);
-  const double e0 = totalEnergy(model, x);
-
-  namespace ode = boost::numeric::odeint;
+  auto energy = [&](const VecD& th, const VecD& dth) {
+    return dynamics::kineticEnergy(model, th, dth) + dynamics::potentialEnergy(model, th);
+  };
+  const double e0 = energy(th0, dth0);
   double max_drift = 0;
   double max_kinetic = 0;
-  auto observe = [&](const State& s, double) {
-    max_drift = std::max(max_drift, std::abs(totalEnergy(model, s) - e0));
-    const VecD th = Eigen::Map<const Eigen::VectorXd>(s.data(), n);
-    const VecD dth = Eigen::Map<const Eigen::VectorXd>(s.data() + n, n);
-    max_kinetic = std::max(max_kinetic, dynamics::kineticEnergy(model, th, dth));
-  };
-  ode::integrate_adaptive(ode::make_controlled(1e-13, 1e-13, ode::runge_kutta_fehlberg78<State>()),
-                          rhs, x, 0.0, 2.0, 1e-3, observe);
+  simulateSsp(
+      model, th0, dth0, [n](double) { return VecD(VecD::Zero(n)); }, evenTimes(2.0, 2000), 1e-13,
+      [&](double, const VecD& th, const VecD& dth) {
+        max_drift = std::max(max_drift, std::abs(energy(th, dth) - e0));
+        max_kinetic = std::max(max_kinetic, dynamics::kineticEnergy(model, th, dth));
+      });
   // The motion must be violent enough to test something: the robot falls and flails.
   EXPECT_GT(max_kinetic, 0.2 * std::abs(e0));
   EXPECT_LT(max_drift / std::abs(e0), 1e-8) << "max drift " << max_drift << " J of " << e0;

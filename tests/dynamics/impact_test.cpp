@@ -102,10 +102,10 @@ TEST_P(ImpactTest, ClosedFormsSatisfyTheImplicitImpactResidual) {
     const auto s = dynamics::singleImpact(model_, theta, dtheta);
     Eigen::VectorXd qplus(n + 2);
     qplus << s.trailing_velocity, s.dtheta_plus;
-    EXPECT_LT(dynamics::impactResidual<double>(model_, theta, dtheta, qplus, s.impulse_leading,
-                                               nullptr)
-                  .norm(),
-              1e-9);
+    EXPECT_LT(
+        dynamics::impactResidual<double>(model_, theta, dtheta, qplus, s.impulse_leading, nullptr)
+            .norm(),
+        1e-9);
     const auto d = dynamics::doubleImpact(model_, theta, dtheta);
     qplus << 0, 0, d.dtheta_plus;
     const Vec2d p_b = d.impulse_trailing;

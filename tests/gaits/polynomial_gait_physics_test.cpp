@@ -3,7 +3,6 @@
 // independent re-simulation of the exported torques.
 #include <gtest/gtest.h>
 
-#include <boost/numeric/odeint.hpp>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -17,6 +16,7 @@
 #include "gaits/metrics.hpp"
 #include "gaits/trajectory_csv.hpp"
 #include "support/fixtures.hpp"
+#include "support/ssp_simulation.hpp"
 
 namespace gaitopt::test {
 namespace {
@@ -114,32 +114,17 @@ TEST_F(MuGaitPhysics, ExportedTorquesReproduceTheSspByForwardSimulation) {
   const gaits::Trajectory imported = gaits::readTrajectoryCsv(path, *model_);
   std::filesystem::remove(path);
 
-  const int n = model_->nLinks();
-  using State = std::vector<double>;
-  auto rhs = [&](const State& x, State& dx, double t) {
-    const VecD th = Eigen::Map<const Eigen::VectorXd>(x.data(), n);
-    const VecD dth = Eigen::Map<const Eigen::VectorXd>(x.data() + n, n);
-    const VecD tau = imported.at(std::min(t, params_->ssp_duration - 1e-12)).tau;
-    const VecD dd = dynamics::sspForwardDynamics(*model_, th, dth, tau);
-    for (int i = 0; i < n; ++i) {
-      dx[static_cast<size_t>(i)] = dth(i);
-      dx[static_cast<size_t>(n + i)] = dd(i);
-    }
-  };
-  const auto& k0 = imported.knots().front();
-  State x(k0.theta.data(), k0.theta.data() + n);
-  x.insert(x.end(), k0.dtheta.data(), k0.dtheta.data() + n);
+  const double t_s = params_->ssp_duration - 1e-12;  // the SSP side of the touchdown
   double max_err = 0;
-  auto observe = [&](const State& s, double t) {
-    const auto ref = imported.at(std::min(t, params_->ssp_duration - 1e-12));
-    for (int i = 0; i < n; ++i)
-      max_err = std::max(max_err, std::abs(s[static_cast<size_t>(i)] - ref.theta(i)));
-  };
-  namespace ode = boost::numeric::odeint;
-  std::vector<double> times;
-  for (int k = 0; k <= 600; ++k) times.push_back(params_->ssp_duration * k / 600);
-  ode::integrate_times(ode::make_dense_output(1e-10, 1e-10, ode::runge_kutta_dopri5<State>()), rhs,
-                       x, times, 1e-4, observe);
+  const auto& k0 = imported.knots().front();
+  test::simulateSsp(
+      *model_, k0.theta, k0.dtheta,
+      [&](double t) { return VecD(imported.at(std::min(t, t_s)).tau); },
+      test::evenTimes(params_->ssp_duration, 600), 1e-10,
+      [&](double t, const VecD& theta, const VecD&) {
+        const VecD ref = imported.at(std::min(t, t_s)).theta;
+        max_err = std::max(max_err, (theta - ref).cwiseAbs().maxCoeff());
+      });
   RecordProperty("resimulation_max_angle_error_rad", fmt::format("{:.3e}", max_err));
   EXPECT_LT(max_err, 1e-3);
 }

@@ -4,8 +4,6 @@
 // re-simulation of the optimal torques).
 #include <gtest/gtest.h>
 
-#include <boost/numeric/odeint.hpp>
-
 #include <fmt/format.h>
 
 #include "dynamics/impact.hpp"
@@ -16,6 +14,7 @@
 #include "ocp/gait_problem.hpp"
 #include "ocp/ipopt_adapter.hpp"
 #include "support/nlp_derivatives.hpp"
+#include "support/ssp_simulation.hpp"
 
 namespace gaitopt::ocp {
 namespace {
@@ -97,8 +96,6 @@ TEST_F(RabbitSolution, ClosedFormImpactAndRelabelReturnToTheStart) {
 
 TEST_F(RabbitSolution, ForwardSimulationOfTheOptimalTorquesReproducesTheStates) {
   const auto traj = reconstruct(*problem_, *model_, result_->x);
-  const int n = model_->nLinks();
-  using State = std::vector<double>;
   // Hermite-Simpson controls are quadratic on a segment: interpolate through node, midpoint, node.
   const PhaseLayout& l = problem_->ssp;
   auto torque = [&](double t) {
@@ -109,30 +106,16 @@ TEST_F(RabbitSolution, ForwardSimulationOfTheOptimalTorquesReproducesTheStates) 
     const auto& b = traj.knots()[2 * seg + 2].tau;
     return VecD(a * (2 * s - 1) * (s - 1) + m * 4 * s * (1 - s) + b * s * (2 * s - 1));
   };
-  auto rhs = [&](const State& x, State& dx, double t) {
-    const VecD th = Eigen::Map<const Eigen::VectorXd>(x.data(), n);
-    const VecD dth = Eigen::Map<const Eigen::VectorXd>(x.data() + n, n);
-    const VecD dd = dynamics::sspForwardDynamics(*model_, th, dth, torque(t));
-    for (int i = 0; i < n; ++i) {
-      dx[static_cast<size_t>(i)] = dth(i);
-      dx[static_cast<size_t>(n + i)] = dd(i);
-    }
-  };
-  const auto& k0 = traj.knots().front();
-  State x(k0.theta.data(), k0.theta.data() + n);
-  x.insert(x.end(), k0.dtheta.data(), k0.dtheta.data() + n);
   std::vector<double> times;
   for (const auto& k : traj.knots()) times.push_back(k.t);
   double max_err = 0;
   size_t index = 0;
-  auto observe = [&](const State& s, double) {
-    const auto& ref = traj.knots()[index++].theta;
-    for (int i = 0; i < n; ++i)
-      max_err = std::max(max_err, std::abs(s[static_cast<size_t>(i)] - ref(i)));
-  };
-  namespace ode = boost::numeric::odeint;
-  ode::integrate_times(ode::make_dense_output(1e-10, 1e-10, ode::runge_kutta_dopri5<State>()), rhs,
-                       x, times, 1e-4, observe);
+  const auto& k0 = traj.knots().front();
+  test::simulateSsp(*model_, k0.theta, k0.dtheta, torque, times, 1e-10,
+                    [&](double, const VecD& theta, const VecD&) {
+                      const VecD ref = traj.knots()[index++].theta;
+                      max_err = std::max(max_err, (theta - ref).cwiseAbs().maxCoeff());
+                    });
   RecordProperty("resimulation_max_angle_error_rad", fmt::format("{:.3e}", max_err));
   EXPECT_LT(max_err, 1e-2);
 }

@@ -1,0 +1,25 @@
+#pragma once
+/// @file output_options.hpp
+/// The options shared by every command that writes a result folder.
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace gaitopt::apps {
+
+struct OutputOptions {
+  std::string out_dir;
+  double rate_hz = 1000;  ///< sample rate of trajectory.csv [Hz]
+  bool plots = true;
+};
+
+/// Adds --out DIR (required), --rate HZ and --no-plots to `cmd`.
+inline void addOutputOptions(CLI::App* cmd, OutputOptions& o) {
+  cmd->add_option("--out", o.out_dir, "Result folder (created)")->required()->option_text("DIR");
+  cmd->add_option("--rate", o.rate_hz, "Sample rate of trajectory.csv [Hz]")
+      ->check(CLI::Range(1.0, 1e6))
+      ->default_val(1000);
+  cmd->add_flag("!--no-plots", o.plots, "Skip the pictures");
+}
+
+}  // namespace gaitopt::apps

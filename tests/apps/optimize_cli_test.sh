@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# End-to-end checks of `gaitopt optimize`: the RABBIT benchmark, outputs and exit codes.
+# Usage: optimize_cli_test.sh <path to gaitopt binary> <repo root>
+set -u
+[[ $# -eq 2 ]] || { echo "usage: $0 <gaitopt binary> <repo root>" >&2; exit 1; }
+GAITOPT=$1
+ROOT=$2
+CONFIG="$ROOT/configs/ocp/rabbit_kelly2017.yaml"
+# shellcheck source=tests/apps/cli_test_lib.sh
+source "$(dirname "$0")/cli_test_lib.sh"
+
+# (a) the benchmark solves; the summary carries the solver's figures; the CSV is dense.
+run optimize --config "$CONFIG" --out "$TMP/opt" --rate 200 --quiet --no-plots
+[[ $RC -eq 0 ]] || fail "(a) optimize exited $RC: $(cat "$TMP/err")"
+grep -q "Solve_Succeeded" "$TMP/out" || fail "(a) no status line: $(cat "$TMP/out")"
+rows=$(($(wc -l <"$TMP/opt/trajectory.csv") - 1))
+[[ $rows -eq 141 ]] || fail "(a) expected 141 rows at 200 Hz over 0.7 s, got $rows"
+check_json "(a) summary" "$TMP/opt/summary.json" <<'PY'
+assert d["status"] == "Solve_Succeeded", d["status"]
+assert abs(d["cost"] - 390.79) < 0.05, d["cost"]
+assert d["iterations"] > 0 and d["wall_time_s"] > d["callback_time_s"] > 0
+assert d["max_violation"] < 1e-6, d["max_violation"]
+assert d["impact_energy_loss_J"] > 0, d["impact_energy_loss_J"]
+assert max(abs(t) for t in d["peak_torque"][1:]) <= 100 + 1e-6 and d["peak_torque"][0] == 0
+PY
+
+# (b) a config with a typo: exit 2, file and key named, no output folder.
+sed 's/step_length:/step_lenght:/' "$CONFIG" >"$TMP/typo.yaml"
+sed -i "s|\.\./|$ROOT/configs/|" "$TMP/typo.yaml"
+run optimize --config "$TMP/typo.yaml" --out "$TMP/typo" --quiet --no-plots
+[[ $RC -eq 2 ]] || fail "(b) expected exit 2, got $RC: $(cat "$TMP/err")"
+grep -q "typo.yaml.*key 'step_lenght': unknown key" "$TMP/err" || fail "(b) $(cat "$TMP/err")"
+[[ ! -e "$TMP/typo" ]] || fail "(b) an output folder was created for a bad input"
+
+# (c) an iteration limit too small to converge: exit 1, nothing in DIR, last iterate in DIR.failed.
+sed "s|max_iterations: 500|max_iterations: 2|; s|\.\./|$ROOT/configs/|" "$CONFIG" >"$TMP/short.yaml"
+run optimize --config "$TMP/short.yaml" --out "$TMP/short" --quiet --no-plots
+[[ $RC -eq 1 ]] || fail "(c) expected exit 1, got $RC"
+grep -q "Maximum_Iterations_Exceeded" "$TMP/err" || fail "(c) $(cat "$TMP/err")"
+[[ ! -e "$TMP/short" && -f "$TMP/short.failed/summary.json" ]] || fail "(c) outputs misplaced"
+echo "optimize CLI: all checks passed"
