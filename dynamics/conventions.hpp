@@ -50,7 +50,4 @@ using MatD = Mat<double>;
 using Vec2d = Vec2<double>;
 using Mat2Xd = Mat2X<double>;
 
-/// Index of the two tips in force/impulse pairs.
-enum class Tip { kStance = 0, kSwing = 1 };
-
 }  // namespace gaitopt

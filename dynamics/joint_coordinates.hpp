@@ -2,6 +2,8 @@
 /// @file joint_coordinates.hpp
 /// Absolute angles theta <-> relative joint angles q, and joint torques <-> generalised torques
 /// (Mu 2.41-2.44). q = M theta with M lower bidiagonal: q0 = theta_1, q_j = theta_j - theta_{j+1}.
+#include <Eigen/LU>
+
 #include "dynamics/conventions.hpp"
 
 namespace gaitopt::dynamics {

@@ -46,8 +46,7 @@ VariableBlock Nlp::addVariables(const std::string& name, int size, const Eigen::
   if (lower.size() != size || upper.size() != size || initial.size() != size)
     throw std::invalid_argument(
         fmt::format("variable block '{}': bounds and guess need {} entries", name, size));
-  VariableBlock block{name, variables(), size};
-  blocks_.push_back(block);
+  const VariableBlock block{name, variables(), size};
   x0_ = append(x0_, initial);
   xl_ = append(xl_, lower);
   xu_ = append(xu_, upper);
@@ -65,12 +64,6 @@ int Nlp::constraints() const {
   int m = 0;
   for (const auto& s : sets_) m += s->rows();
   return m;
-}
-
-void Nlp::setInitialGuess(const Eigen::VectorXd& x0) {
-  if (x0.size() != x0_.size())
-    throw std::invalid_argument("initial guess has the wrong number of variables");
-  x0_ = x0;
 }
 
 Eigen::VectorXd Nlp::constraintLower() const {

@@ -93,12 +93,10 @@ class Nlp {
   int variables() const { return static_cast<int>(x0_.size()); }
   int constraints() const;
   const Eigen::VectorXd& initialGuess() const { return x0_; }
-  void setInitialGuess(const Eigen::VectorXd& x0);
   const Eigen::VectorXd& lowerBounds() const { return xl_; }
   const Eigen::VectorXd& upperBounds() const { return xu_; }
   Eigen::VectorXd constraintLower() const;
   Eigen::VectorXd constraintUpper() const;
-  const std::vector<VariableBlock>& blocks() const { return blocks_; }
   const std::vector<std::unique_ptr<ConstraintSet>>& constraintSets() const { return sets_; }
 
   double cost(const Eigen::VectorXd& x) const;
@@ -111,7 +109,6 @@ class Nlp {
                            const Eigen::VectorXd& lambda) const;
 
  private:
-  std::vector<VariableBlock> blocks_;
   Eigen::VectorXd x0_, xl_, xu_;
   std::vector<std::unique_ptr<ConstraintSet>> sets_;
   std::vector<std::unique_ptr<CostTerm>> costs_;

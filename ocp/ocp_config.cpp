@@ -68,9 +68,7 @@ OcpConfig loadOcpConfig(const std::string& path) {
   if (c.phases.front().name != "SSP" || c.phases.size() > 2 ||
       (c.phases.size() == 2 && c.phases.back().name != "DSP"))
     root.fail("phases", "expected [SSP] or [SSP, DSP]");
-  c.scheme = root.choice("scheme", {"trapezoidal", "hermite_simpson"}) == "trapezoidal"
-                 ? Scheme::kTrapezoidal
-                 : Scheme::kHermiteSimpson;
+  c.scheme = schemeFromString(root.choice("scheme", {"trapezoidal", "hermite_simpson"}));
   const std::string impact = root.choice("impact", {"single", "double", "impactless"});
   c.impact = impact == "single"   ? ImpactModel::kSingle
              : impact == "double" ? ImpactModel::kDouble

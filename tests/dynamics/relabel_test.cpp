@@ -5,6 +5,7 @@
 #include "dynamics/joint_coordinates.hpp"
 #include "dynamics/kinematics.hpp"
 #include "dynamics/relabel.hpp"
+#include "dynamics/ssp_dynamics.hpp"
 #include "support/fixtures.hpp"
 
 namespace gaitopt::test {
@@ -67,6 +68,18 @@ TEST_P(RelabelTest, JointCoordinatesAreInverseAndPreserveVirtualWork) {
     // Virtual work T_theta . dtheta = tau . dq (Mu 2.42).
     const VecD dtheta = randomVec(rng_, n, -1, 1);
     EXPECT_NEAR(t_theta.dot(dtheta), tau.dot(dynamics::toJoint(dtheta)), 1e-10);
+  }
+}
+
+TEST_P(RelabelTest, JointSpaceMassMatrixGivesTheSameKineticEnergy) {
+  // D_q = M^-T D M^-1 (Mu 2.44a): 1/2 dq^T D_q dq = 1/2 dtheta^T D dtheta with dq = M dtheta.
+  for (int trial = 0; trial < 20; ++trial) {
+    const VecD theta = randomPosture(rng_, model_);
+    const VecD dtheta = randomVec(rng_, model_.nLinks(), -3, 3);
+    const VecD dq = dynamics::toJoint(dtheta);
+    const MatD d_q = dynamics::jointSpaceMassMatrix(dynamics::massMatrix(model_, theta));
+    EXPECT_NEAR(0.5 * dq.dot(d_q * dq), dynamics::kineticEnergy<double>(model_, theta, dtheta),
+                1e-10);
   }
 }
 
