@@ -1,8 +1,8 @@
 #pragma once
 /// @file optimize_command.hpp
-/// `gaitopt optimize --config FILE --out DIR [--rate HZ] [--quiet] [--no-plots]`: solves the
-/// gait OCP of the config from its polynomial initial guess and writes trajectory.csv,
-/// summary.json and pictures.
+/// `gaitopt optimize --config FILE --out DIR [--warm-start DIR] [--rate HZ] [--quiet]
+/// [--no-plots]`: solves the gait OCP of the config from its polynomial initial guess (or from a
+/// previous result) and writes trajectory.csv, summary.json and pictures.
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -14,6 +14,7 @@ namespace gaitopt::apps {
 struct OptimizeOptions {
   std::string config_path;
   OutputOptions output;
+  std::string warm_start;  ///< result folder whose trajectory.csv seeds the solve ("" = none)
   bool quiet = false;
 };
 

@@ -188,6 +188,8 @@ SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options) {
   app->Options()->SetStringValue("linear_solver", options.linear_solver);
   app->Options()->SetStringValue("mu_strategy", options.mu_strategy);
   app->Options()->SetNumericValue("mu_init", options.mu_init);
+  app->Options()->SetNumericValue("bound_push", options.bound_push);
+  app->Options()->SetNumericValue("bound_frac", options.bound_frac);
   app->Options()->SetIntegerValue("print_level", options.print_level);
   app->Options()->SetStringValue("sb", "yes");  // no Ipopt banner
   if (app->Initialize() != Ipopt::Solve_Succeeded)

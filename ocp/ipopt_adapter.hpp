@@ -18,6 +18,8 @@ struct SolverOptions {
   std::string linear_solver = "mumps";   ///< Debian's Ipopt ships MUMPS
   std::string mu_strategy = "adaptive";  ///< barrier update: "monotone" or "adaptive"
   double mu_init = 0.1;                  ///< initial barrier parameter
+  double bound_push = 0.01;              ///< how far Ipopt moves the start inside the bounds
+  double bound_frac = 0.01;              ///< the same, relative to the bound interval
   int print_level = 0;                   ///< 0 silent ... 5 Ipopt's iteration table
   bool progress = false;                 ///< one line per iteration on stdout (ours)
 };
