@@ -41,15 +41,15 @@ double impactLoss(const ocp::GaitProblem& p, const dynamics::Model& model,
 }
 
 void writeResult(const OptimizeOptions& o, const dynamics::Model& model,
-                 const ocp::GaitProblem& problem, const ocp::SolveResult& r,
-                 const std::string& dir) {
+                 const ocp::OcpConfig& config, const ocp::GaitProblem& problem,
+                 const ocp::SolveResult& r, const std::string& dir) {
   std::filesystem::create_directories(dir);
   const gaits::Trajectory traj = ocp::reconstruct(problem, model, r.x);
   const gaits::Trajectory dense = traj.resample(o.output.rate_hz);
   gaits::writeTrajectoryCsv(dense, model, dir + "/trajectory.csv");
   auto summary = gaits::gaitSummary(
       traj, model,
-      {o.config_path, r.status, r.iterations, r.wall_time_s, r.callback_time_s, "torque_squared"});
+      {o.config_path, r.status, r.iterations, r.wall_time_s, r.callback_time_s, config.cost});
   summary["cost"] = r.cost;  // the solver's objective (the scheme's own quadrature)
   if (problem.impact_offset >= 0) summary["impact_energy_loss_J"] = impactLoss(problem, model, r.x);
   summary["max_violation"] = r.max_violation;
@@ -90,7 +90,7 @@ void runOptimize(const OptimizeOptions& o) {
       r.status, r.iterations, r.cost, r.max_violation, r.wall_time_s, r.callback_time_s);
   // A failed solve never overwrites a result: its last iterate goes to OUT.failed.
   const std::string dir = r.success ? o.output.out_dir : o.output.out_dir + ".failed";
-  writeResult(o, model, problem, r, dir);
+  writeResult(o, model, config, problem, r, dir);
   if (!r.success)
     throw std::runtime_error(
         fmt::format("solver status {}; last iterate written to {}", r.status, dir));

@@ -26,12 +26,18 @@ void BipedDynamics::evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorX
 }
 
 void BipedDynamics::jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const {
-  jac = dynamics::residualJacobian(*model_, unpack(v, n_, dsp_), dsp_);
+  // The point may carry more variables (work slacks) after the residual's own.
+  const Eigen::MatrixXd rj = dynamics::residualJacobian(*model_, unpack(v, n_, dsp_), dsp_);
+  jac.setZero();
+  jac.leftCols(rj.cols()) = rj;
 }
 
 void BipedDynamics::hessian(const Eigen::VectorXd& v, const Eigen::VectorXd& weights,
                             Eigen::Ref<Eigen::MatrixXd> hess) const {
-  hess = dynamics::residualHessian(*model_, unpack(v, n_, dsp_), dsp_, weights);
+  const Eigen::MatrixXd rh =
+      dynamics::residualHessian(*model_, unpack(v, n_, dsp_), dsp_, weights);
+  hess.setZero();
+  hess.topLeftCorner(rh.rows(), rh.cols()) = rh;
 }
 
 }  // namespace gaitopt::ocp

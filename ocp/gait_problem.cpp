@@ -5,6 +5,7 @@
 
 #include "dynamics/ground.hpp"
 #include "dynamics/impact.hpp"
+#include "dynamics/joint_coordinates.hpp"
 #include "ocp/autodiff_constraint.hpp"
 #include "ocp/biped_dynamics.hpp"
 #include "ocp/gait_links.hpp"
@@ -18,10 +19,24 @@ constexpr double kInf = 1e20;
 using Bounds = std::pair<Eigen::VectorXd, Eigen::VectorXd>;
 using Indices = std::vector<int>;
 
-/// Bounds of one point [theta, dtheta, ddtheta, tau (, lambda)] from the robot and switches.
+bool absWork(const OcpConfig& c) {
+  return c.cost == "abs_work";
+}
+
+/// Algebraic variables of a point: lambda (DSP), then the work slacks s+, s- (abs_work cost).
+int algebraicSize(const OcpConfig& c, bool dsp, int n) {
+  return (dsp ? 2 : 0) + (absWork(c) ? 2 * n : 0);
+}
+
+/// Where the work slacks start in a point [theta, dtheta, ddtheta, tau, (lambda), s+, s-].
+int slackOffset(bool dsp, int n) {
+  return 4 * n + (dsp ? 2 : 0);
+}
+
+/// Bounds of one point from the robot and switches.
 Bounds pointBounds(const dynamics::Model& model, const OcpConfig& c, bool dsp) {
   const int n = model.nLinks();
-  const int size = 4 * n + (dsp ? 2 : 0);
+  const int size = 4 * n + algebraicSize(c, dsp, n);
   Eigen::VectorXd lo = Eigen::VectorXd::Constant(size, -kInf);
   Eigen::VectorXd hi = Eigen::VectorXd::Constant(size, kInf);
   for (int i = 0; i < n; ++i) {
@@ -39,17 +54,25 @@ Bounds pointBounds(const dynamics::Model& model, const OcpConfig& c, bool dsp) {
     lo(3 * n + i) = -limit;
     hi(3 * n + i) = limit;
   }
+  if (absWork(c)) lo.tail(2 * n).setZero();  // s+, s- >= 0
   return {lo, hi};
 }
 
-/// The guess at phase time t: the SSP side of the touchdown for the SSP, the DSP side after.
-Eigen::VectorXd guessPoint(const gaits::Trajectory& guess, double t, bool dsp, int n) {
+/// The guess at phase time t: the SSP side of the touchdown for the SSP, the DSP side after;
+/// work slacks split the guess's joint power into its positive and negative parts.
+Eigen::VectorXd guessPoint(const gaits::Trajectory& guess, const OcpConfig& c, double t, bool dsp,
+                           int n) {
   const double ssp_end = guess.phaseDurations().front().second;
   const double at = dsp ? std::min(ssp_end + t, guess.endTime()) : std::min(t, ssp_end - 1e-9);
   const gaits::Knot k = guess.at(at);
-  Eigen::VectorXd v(4 * n + (dsp ? 2 : 0));
+  Eigen::VectorXd v(4 * n + algebraicSize(c, dsp, n));
   v.head(4 * n) << k.theta, k.dtheta, k.ddtheta, k.tau;
-  if (dsp) v.tail(2) = k.force_swing;
+  if (dsp) v.segment<2>(4 * n) = k.force_swing;
+  if (absWork(c)) {
+    const Eigen::VectorXd power = k.tau.cwiseProduct(dynamics::toJoint<double>(VecD(k.dtheta)));
+    v.segment(slackOffset(dsp, n), n) = power.cwiseMax(0.0);
+    v.segment(slackOffset(dsp, n) + n, n) = (-power).cwiseMax(0.0);
+  }
   return v;
 }
 
@@ -112,16 +135,34 @@ struct ImpulseCones {
 PhaseLayout addPhase(GaitProblem& p, const dynamics::Model& model, const OcpConfig& c,
                      const gaits::Trajectory& guess, const PhaseConfig& phase, bool dsp) {
   const int n = model.nLinks();
-  PhaseLayout l{c.scheme, phase.segments, phase.duration, 2 * n, n, dsp ? 2 : 0, 0, n};
+  PhaseLayout l{c.scheme, phase.segments, phase.duration, 2 * n, n, algebraicSize(c, dsp, n), 0, n};
   const auto [lo, hi] = pointBounds(model, c, dsp);
   Eigen::VectorXd x0(l.variables());
   for (int k = 0; k < l.points(); ++k)
-    x0.segment(k * l.pointSize(), l.pointSize()) = guessPoint(guess, l.time(k), dsp, n);
+    x0.segment(k * l.pointSize(), l.pointSize()) = guessPoint(guess, c, l.time(k), dsp, n);
   l.offset = p.nlp
                  .addVariables(dsp ? "dsp_points" : "ssp_points", l.variables(),
                                lo.replicate(l.points(), 1), hi.replicate(l.points(), 1), x0)
                  .offset;
   return l;
+}
+
+/// Torque squared, or absolute work through slacks plus a small torque-squared regulariser.
+void addPhaseCost(GaitProblem& p, const OcpConfig& c, const PhaseLayout& l, bool dsp, int n) {
+  const std::string phase = dsp ? "dsp" : "ssp";
+  if (!absWork(c)) {
+    p.nlp.addCost(std::make_unique<QuadratureCost>(phase + "_torque_squared", l,
+                                                   std::make_shared<TorqueSquared>(n)));
+    return;
+  }
+  p.nlp.addConstraint(std::make_unique<PathConstraint>(
+      phase + "_work_split", l, std::make_shared<WorkSplit>(n, slackOffset(dsp, n))));
+  p.nlp.addCost(std::make_unique<QuadratureCost>(
+      phase + "_abs_work", l, std::make_shared<AbsoluteWork>(n, slackOffset(dsp, n))));
+  if (c.torque_regularization > 0)
+    p.nlp.addCost(std::make_unique<QuadratureCost>(
+        phase + "_torque_regularization", l,
+        std::make_shared<TorqueSquared>(n, c.torque_regularization)));
 }
 
 void addPhaseConstraints(GaitProblem& p, const dynamics::Model& model, const OcpConfig& c,
@@ -143,8 +184,7 @@ void addPhaseConstraints(GaitProblem& p, const dynamics::Model& model, const Ocp
   if (!dsp && c.clearance >= 0)
     p.nlp.addConstraint(std::make_unique<PathConstraint>(
         "ssp_clearance", l, std::make_shared<SwingHeight>(model, c.clearance)));
-  p.nlp.addCost(std::make_unique<QuadratureCost>(phase + "_torque_squared", l,
-                                                 std::make_shared<TorqueSquared>(n)));
+  addPhaseCost(p, c, l, dsp, n);
 }
 
 /// Touchdown at the end of the SSP: position, strike direction, impact; returns the indices of

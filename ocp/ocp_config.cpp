@@ -57,7 +57,7 @@ void readSolver(const YamlReader& r, SolverOptions& s) {
 OcpConfig loadOcpConfig(const std::string& path) {
   const YamlReader root = YamlReader::fromFile(path);
   root.allowOnly({"name", "description", "robot", "initial_guess", "step_length", "phases",
-                  "scheme", "impact", "cost", "constraints", "solver"});
+                  "scheme", "impact", "cost", "torque_regularization", "constraints", "solver"});
   OcpConfig c;
   c.name = root.string("name");
   root.stringOr("description", "");
@@ -78,7 +78,9 @@ OcpConfig loadOcpConfig(const std::string& path) {
                             ? "a step with a DSP needs a double or impactless touchdown"
                             : "a step without a DSP needs a single impact (the old stance tip "
                               "lifts off)");
-  c.cost = root.choice("cost", {"torque_squared"});
+  c.cost = root.choice("cost", {"torque_squared", "abs_work"});
+  c.torque_regularization = root.numberOr("torque_regularization", c.torque_regularization,
+                                          config::inRange(0, 1e3, "(weight of sum tau^2)"));
   if (root.has("constraints")) readConstraints(root.map("constraints"), c);
   if (root.has("solver")) readSolver(root.map("solver"), c.solver);
   return c;

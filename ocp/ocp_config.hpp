@@ -28,7 +28,8 @@ struct OcpConfig {
   std::vector<PhaseConfig> phases;
   Scheme scheme = Scheme::kHermiteSimpson;
   ImpactModel impact = ImpactModel::kSingle;
-  std::string cost = "torque_squared";
+  std::string cost = "torque_squared";  ///< "torque_squared" or "abs_work" (with slacks)
+  double torque_regularization = 1e-3;  ///< weight of the torque-squared term added to abs_work
   // Constraint switches and bounds.
   bool torque_limits = true;   ///< |tau_j| <= robot torque limit; unactuated joints at 0
   bool knee_limits = true;     ///< knees never hyperextend (stance q1 >= 0, swing <= 0)

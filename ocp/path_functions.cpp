@@ -8,18 +8,54 @@ constexpr double kInf = 1e20;  // Ipopt's infinity (nlp_upper_bound_inf)
 }
 
 void TorqueSquared::evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const {
-  f(0) = v.segment(3 * n_, n_).squaredNorm();
+  f(0) = weight_ * v.segment(3 * n_, n_).squaredNorm();
 }
 
 void TorqueSquared::jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const {
   jac.setZero();
-  jac.block(0, 3 * n_, 1, n_) = 2 * v.segment(3 * n_, n_).transpose();
+  jac.block(0, 3 * n_, 1, n_) = 2 * weight_ * v.segment(3 * n_, n_).transpose();
 }
 
 void TorqueSquared::hessian(const Eigen::VectorXd&, const Eigen::VectorXd& w,
                             Eigen::Ref<Eigen::MatrixXd> hess) const {
   hess.setZero();
-  hess.block(3 * n_, 3 * n_, n_, n_).diagonal().setConstant(2 * w(0));
+  hess.block(3 * n_, 3 * n_, n_, n_).diagonal().setConstant(2 * weight_ * w(0));
+}
+
+namespace {
+
+/// Row j of M (Mu 2.41): dq_j = dtheta_j (j = 0) or dtheta_{j-1} - dtheta_j.
+double jointRate(const Eigen::VectorXd& v, int n, int j) {
+  return j == 0 ? v(n) : v(n + j - 1) - v(n + j);
+}
+
+}  // namespace
+
+void WorkSplit::evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const {
+  for (int j = 0; j < n_; ++j)
+    f(j) = v(3 * n_ + j) * jointRate(v, n_, j) - v(offset_ + j) + v(offset_ + n_ + j);
+}
+
+void WorkSplit::jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const {
+  jac.setZero();
+  for (int j = 0; j < n_; ++j) {
+    const double tau = v(3 * n_ + j);
+    jac(j, 3 * n_ + j) = jointRate(v, n_, j);
+    jac(j, n_ + j) = j == 0 ? tau : -tau;
+    if (j > 0) jac(j, n_ + j - 1) = tau;
+    jac(j, offset_ + j) = -1;
+    jac(j, offset_ + n_ + j) = 1;
+  }
+}
+
+void WorkSplit::hessian(const Eigen::VectorXd&, const Eigen::VectorXd& w,
+                        Eigen::Ref<Eigen::MatrixXd> hess) const {
+  hess.setZero();
+  for (int j = 0; j < n_; ++j) {  // d2 (tau_j dq_j) / dtau_j ddtheta_k = M_jk
+    const int t = 3 * n_ + j;
+    hess(t, n_ + j) = hess(n_ + j, t) = j == 0 ? w(j) : -w(j);
+    if (j > 0) hess(t, n_ + j - 1) = hess(n_ + j - 1, t) = w(j);
+  }
 }
 
 void KneeDirection::evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const {

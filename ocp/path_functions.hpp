@@ -7,10 +7,10 @@
 
 namespace gaitopt::ocp {
 
-/// L = sum_j tau_j^2 (Kelly 2017's cost) [N^2 m^2].
+/// L = weight * sum_j tau_j^2 (Kelly 2017's cost; a small weight regularises abs_work) [N^2 m^2].
 class TorqueSquared : public PointFunction {
  public:
-  explicit TorqueSquared(int n_links) : n_(n_links) {}
+  explicit TorqueSquared(int n_links, double weight = 1.0) : n_(n_links), weight_(weight) {}
   int rows() const override { return 1; }
   void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override;
   void jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const override;
@@ -19,6 +19,46 @@ class TorqueSquared : public PointFunction {
 
  private:
   int n_;
+  double weight_;
+};
+
+/// Absolute mechanical work made smooth with slack variables (DESIGN.md sec. 6): each joint's
+/// power tau_j dq_j = s+_j - s-_j with s+, s- >= 0 (WorkSplit), and the running cost
+/// L = sum_j (s+_j + s-_j), which equals sum_j |tau_j dq_j| at the optimum. The slacks sit at
+/// `slack_offset` in the point: s+ (n) then s- (n).
+class AbsoluteWork : public PointFunction {
+ public:
+  AbsoluteWork(int n_links, int slack_offset) : n_(n_links), offset_(slack_offset) {}
+  int rows() const override { return 1; }
+  void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override {
+    f(0) = v.segment(offset_, 2 * n_).sum();
+  }
+  void jacobian(const Eigen::VectorXd&, Eigen::Ref<Eigen::MatrixXd> jac) const override {
+    jac.setZero();
+    jac.block(0, offset_, 1, 2 * n_).setOnes();
+  }
+  void hessian(const Eigen::VectorXd&, const Eigen::VectorXd&,
+               Eigen::Ref<Eigen::MatrixXd> hess) const override {
+    hess.setZero();
+  }
+
+ private:
+  int n_, offset_;
+};
+
+/// tau_j dq_j - s+_j + s-_j = 0 with dq = M dtheta (Mu 2.41): joint power split into its
+/// positive and negative parts.
+class WorkSplit : public PointFunction {
+ public:
+  WorkSplit(int n_links, int slack_offset) : n_(n_links), offset_(slack_offset) {}
+  int rows() const override { return n_; }
+  void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override;
+  void jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const override;
+  void hessian(const Eigen::VectorXd& v, const Eigen::VectorXd& w,
+               Eigen::Ref<Eigen::MatrixXd> hess) const override;
+
+ private:
+  int n_, offset_;
 };
 
 /// Knees never hyperextend: stance knee q1 = theta_1 - theta_2 >= 0 and swing knee
