@@ -9,7 +9,7 @@
 #include "dynamics/energy.hpp"
 #include "dynamics/ssp_dynamics.hpp"
 #include "support/fixtures.hpp"
-#include "support/ssp_simulation.hpp"
+#include "support/chain_simulation.hpp"
 
 namespace gaitopt::test {
 namespace {

@@ -16,7 +16,7 @@
 #include "gaits/metrics.hpp"
 #include "gaits/trajectory_csv.hpp"
 #include "support/fixtures.hpp"
-#include "support/ssp_simulation.hpp"
+#include "support/chain_simulation.hpp"
 
 namespace gaitopt::test {
 namespace {

@@ -14,8 +14,8 @@
 #include "gaits/polynomial_gait.hpp"
 #include "ocp/gait_problem.hpp"
 #include "ocp/ipopt_adapter.hpp"
+#include "support/chain_simulation.hpp"
 #include "support/nlp_derivatives.hpp"
-#include "support/ssp_simulation.hpp"
 
 namespace gaitopt::ocp {
 namespace {
@@ -97,15 +97,9 @@ TEST_F(RabbitSolution, ClosedFormImpactAndRelabelReturnToTheStart) {
 
 TEST_F(RabbitSolution, ForwardSimulationOfTheOptimalTorquesReproducesTheStates) {
   const auto traj = reconstruct(*problem_, *model_, result_->x);
-  // Hermite-Simpson controls are quadratic on a segment: interpolate through node, midpoint, node.
   const PhaseLayout& l = problem_->ssp;
   auto torque = [&](double t) {
-    const int seg = std::min(static_cast<int>(t / l.segmentLength()), l.segments - 1);
-    const double s = t / l.segmentLength() - seg;  // in [0, 1]
-    const auto& a = traj.knots()[2 * seg].tau;
-    const auto& m = traj.knots()[2 * seg + 1].tau;
-    const auto& b = traj.knots()[2 * seg + 2].tau;
-    return VecD(a * (2 * s - 1) * (s - 1) + m * 4 * s * (1 - s) + b * s * (2 * s - 1));
+    return test::hermiteSimpsonControl(traj.knots(), l.segmentLength(), l.segments, t);
   };
   std::vector<double> times;
   for (const auto& k : traj.knots()) times.push_back(k.t);
