@@ -58,4 +58,4 @@ PY
 echo
 ocp="$1/bench/ocp_bench"
 [[ -x "$ocp" ]] || { echo "error: $ocp not built" >&2; exit 1; }
-"$ocp" 7
+"$ocp" 5
