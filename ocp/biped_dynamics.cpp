@@ -34,8 +34,7 @@ void BipedDynamics::jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixX
 
 void BipedDynamics::hessian(const Eigen::VectorXd& v, const Eigen::VectorXd& weights,
                             Eigen::Ref<Eigen::MatrixXd> hess) const {
-  const Eigen::MatrixXd rh =
-      dynamics::residualHessian(*model_, unpack(v, n_, dsp_), dsp_, weights);
+  const Eigen::MatrixXd rh = dynamics::residualHessian(*model_, unpack(v, n_, dsp_), dsp_, weights);
   hess.setZero();
   hess.topLeftCorner(rh.rows(), rh.cols()) = rh;
 }

@@ -24,16 +24,19 @@ struct TipAtTouchdown {
   }
 };
 
-/// y = (theta_end, dtheta_end): vertical velocity of the swing tip at strike (bound <= 0).
+/// y = (theta_end, dtheta_end): velocity of the swing tip at strike; `vertical_only` keeps
+/// its y component (bounded <= 0 before an impact), else both (= 0 for an impactless
+/// touchdown: a tip still sliding would carry its velocity into the DSP).
 struct StrikeVelocity {
   const dynamics::Model* model;
+  bool vertical_only = true;
   template <class S>
   dynamics::VecX<S> operator()(const dynamics::VecX<S>& y) const {
     const int n = model->nLinks();
     const Vec<S> theta = y.head(n), dtheta = y.tail(n);
-    dynamics::VecX<S> g(1);
-    g(0) = dynamics::pointVelocity<S>(model->tipWeights(), theta, dtheta)(1);
-    return g;
+    const Vec2<S> v = dynamics::pointVelocity<S>(model->tipWeights(), theta, dtheta);
+    if (vertical_only) return dynamics::VecX<S>::Constant(1, v(1));
+    return v;
   }
 };
 

@@ -198,11 +198,11 @@ Indices addTouchdown(GaitProblem& p, const dynamics::Model& model, const OcpConf
   // Every link is nonlinear in the strike angles only (the first n of its variables).
   addLink(p.nlp, "touchdown_position", 2, theta_end, n, TipAtTouchdown{&model, p.step_length});
   if (c.impact == ImpactModel::kImpactless) {
-    addLink(p.nlp, "touchdown_at_rest", 1, strike, n, StrikeVelocity{&model});
+    addLink(p.nlp, "touchdown_at_rest", 2, strike, n, StrikeVelocity{&model, false});
     return dtheta_end;
   }
   if (c.swing_descends)
-    addLink(p.nlp, "strike_downward", 1, strike, n, StrikeVelocity{&model}, -kInf, 0.0);
+    addLink(p.nlp, "strike_downward", 1, strike, n, StrikeVelocity{&model, true}, -kInf, 0.0);
   const bool both = c.impact == ImpactModel::kDouble;
   const int size = n + 4 + (both ? 2 : 0);
   Eigen::VectorXd lo = Eigen::VectorXd::Constant(size, -kInf), hi = -lo;

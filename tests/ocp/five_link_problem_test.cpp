@@ -86,6 +86,18 @@ TEST_F(FiveLinkSolution, ConvergesAndBeatsThePolynomialGait) {
   EXPECT_LT(result_->cost, gaits::torqueSquaredIntegral(*guess_));
 }
 
+TEST_F(FiveLinkSolution, ImpactlessTouchdownFindsTheSameOptimum) {
+  // The torque-squared optimum lands without impact (its touchdown velocity jump is ~1e-7), so
+  // imposing an impactless touchdown (tip at rest, Mu ch. 3) must reach the same cost; a tip
+  // allowed to slide into the DSP would reach a lower one.
+  EXPECT_LT(gaits::touchdownVelocityJump(*traj_, *model_), 1e-5);
+  OcpConfig c = *config_;
+  c.impact = ImpactModel::kImpactless;
+  const SolveResult r = solveWithIpopt(buildGaitProblem(*model_, c, *guess_).nlp, c.solver);
+  ASSERT_EQ(r.status, "Solve_Succeeded");
+  EXPECT_NEAR(r.cost, result_->cost, 1e-4 * result_->cost);
+}
+
 TEST_F(FiveLinkSolution, ContactForcesAreUnilateralAndInsideTheFrictionCones) {
   const double mu = model_->friction();
   for (const auto& k : traj_->knots()) {
