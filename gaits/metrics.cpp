@@ -122,28 +122,38 @@ double minZmpMargin(const Trajectory& traj, const dynamics::Model& model) {
   return lowest;
 }
 
-double touchdownVelocityJump(const Trajectory& traj, const dynamics::Model& model) {
+namespace {
+
+/// The state before touchdown and the rates after the rigid double impact (Mu 2.27-2.28) that
+/// the DSP would have to start from if the swing tip hit the ground with that state's
+/// velocity; empty without a DSP.
+struct TouchdownImpact {
+  VecD theta, dtheta_minus, dtheta_plus;
+};
+
+std::optional<TouchdownImpact> touchdownImpact(const Trajectory& traj,
+                                               const dynamics::Model& model) {
   requireSameRobot(traj, model);
   const auto k = touchdownKnot(traj);
-  if (!k) return 0.0;
+  if (!k) return std::nullopt;
   const Knot& pre = traj.knots()[*k];
-  const VecD dtheta = pre.dtheta;
-  // Rigid double impact (Mu 2.27-2.28): the rates the DSP would have to start from if the
-  // swing tip hit the ground with the SSP knot's velocity.
-  const auto impact = dynamics::doubleImpact(model, VecD(pre.theta), dtheta);
-  return (impact.dtheta_plus - dtheta).norm();
+  TouchdownImpact t{pre.theta, pre.dtheta, {}};
+  t.dtheta_plus = dynamics::doubleImpact(model, t.theta, t.dtheta_minus).dtheta_plus;
+  return t;
+}
+
+}  // namespace
+
+double touchdownVelocityJump(const Trajectory& traj, const dynamics::Model& model) {
+  const auto t = touchdownImpact(traj, model);
+  return t ? (t->dtheta_plus - t->dtheta_minus).norm() : 0.0;
 }
 
 double impactEnergyLoss(const Trajectory& traj, const dynamics::Model& model) {
-  requireSameRobot(traj, model);
-  const auto k = touchdownKnot(traj);
-  if (!k) return 0.0;
-  const Knot& pre = traj.knots()[*k];
-  const VecD theta = pre.theta;
-  const VecD dtheta = pre.dtheta;
-  const auto impact = dynamics::doubleImpact(model, theta, dtheta);
-  return dynamics::kineticEnergy<double>(model, theta, dtheta) -
-         dynamics::kineticEnergy<double>(model, theta, impact.dtheta_plus);
+  const auto t = touchdownImpact(traj, model);
+  if (!t) return 0.0;
+  return dynamics::kineticEnergy<double>(model, t->theta, t->dtheta_minus) -
+         dynamics::kineticEnergy<double>(model, t->theta, t->dtheta_plus);
 }
 
 }  // namespace gaitopt::gaits
