@@ -49,7 +49,7 @@ void writeResult(const OptimizeOptions& o, const dynamics::Model& model,
   gaits::writeTrajectoryCsv(dense, model, dir + "/trajectory.csv");
   auto summary = gaits::gaitSummary(
       traj, model,
-      {o.config_path, r.status, r.iterations, r.wall_time_s, r.callback_time_s, config.cost});
+      {o.config_path, r.status, r.iterations, r.wall_time_s, r.callback_time_s, config.cost.primary()});
   summary["cost"] = r.cost;  // the solver's objective (the scheme's own quadrature)
   if (problem.impact_offset >= 0) summary["impact_energy_loss_J"] = impactLoss(problem, model, r.x);
   summary["max_violation"] = r.max_violation;

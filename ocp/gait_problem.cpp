@@ -1,5 +1,6 @@
 #include "ocp/gait_problem.hpp"
 
+#include <cmath>
 #include <numbers>
 #include <stdexcept>
 
@@ -8,6 +9,7 @@
 #include "dynamics/joint_coordinates.hpp"
 #include "ocp/autodiff_constraint.hpp"
 #include "ocp/biped_dynamics.hpp"
+#include "ocp/collocation_interpolation.hpp"
 #include "ocp/gait_links.hpp"
 #include "ocp/ground_contact.hpp"
 #include "ocp/path_functions.hpp"
@@ -20,7 +22,7 @@ using Bounds = std::pair<Eigen::VectorXd, Eigen::VectorXd>;
 using Indices = std::vector<int>;
 
 bool absWork(const OcpConfig& c) {
-  return c.cost == "abs_work";
+  return c.cost.needsWorkSlacks();
 }
 
 /// Algebraic variables of a point: lambda (DSP), then the work slacks s+, s- (abs_work cost).
@@ -132,10 +134,30 @@ struct ImpulseCones {
   }
 };
 
+/// A free duration T is a variable of its own, ahead of the phase's points.
+int addDuration(GaitProblem& p, const PhaseConfig& phase, bool dsp) {
+  if (!phase.freeDuration()) return -1;
+  return p.nlp
+      .addVariables(dsp ? "dsp_duration" : "ssp_duration", 1,
+                    Eigen::VectorXd::Constant(1, phase.duration_min),
+                    Eigen::VectorXd::Constant(1, phase.duration_max),
+                    Eigen::VectorXd::Constant(1, phase.duration))
+      .offset;
+}
+
 PhaseLayout addPhase(GaitProblem& p, const dynamics::Model& model, const OcpConfig& c,
                      const gaits::Trajectory& guess, const PhaseConfig& phase, bool dsp) {
   const int n = model.nLinks();
-  PhaseLayout l{c.scheme, phase.segments, phase.duration, 2 * n, n, algebraicSize(c, dsp, n), 0, n};
+  PhaseLayout l{.scheme = c.scheme,
+                .segments = phase.segments,
+                .duration = phase.duration,
+                .nx = 2 * n,
+                .nu = n,
+                .nz = algebraicSize(c, dsp, n),
+                .nq = n,
+                .mesh = phase.mesh};
+  l.validate();
+  l.duration_index = addDuration(p, phase, dsp);
   const auto [lo, hi] = pointBounds(model, c, dsp);
   Eigen::VectorXd x0(l.variables());
   for (int k = 0; k < l.points(); ++k)
@@ -147,22 +169,22 @@ PhaseLayout addPhase(GaitProblem& p, const dynamics::Model& model, const OcpConf
   return l;
 }
 
-/// Torque squared, or absolute work through slacks plus a small torque-squared regulariser.
-void addPhaseCost(GaitProblem& p, const OcpConfig& c, const PhaseLayout& l, bool dsp, int n) {
+/// The weighted running costs: torque squared, and absolute work through slacks, alone or
+/// per weight and step length (cost of transport, W / (m g d)).
+void addPhaseCost(GaitProblem& p, const dynamics::Model& model, const OcpConfig& c,
+                  const PhaseLayout& l, bool dsp) {
+  const int n = model.nLinks();
   const std::string phase = dsp ? "dsp" : "ssp";
-  if (!absWork(c)) {
-    p.nlp.addCost(std::make_unique<QuadratureCost>(phase + "_torque_squared", l,
-                                                   std::make_shared<TorqueSquared>(n)));
-    return;
-  }
+  if (c.cost.torque_squared > 0)
+    p.nlp.addCost(std::make_unique<QuadratureCost>(
+        phase + "_torque_squared", l, std::make_shared<TorqueSquared>(n, c.cost.torque_squared)));
+  if (!absWork(c)) return;
   p.nlp.addConstraint(std::make_unique<PathConstraint>(
       phase + "_work_split", l, std::make_shared<WorkSplit>(n, slackOffset(dsp, n))));
+  const double weight = c.cost.abs_work + c.cost.cost_of_transport /
+                                              (model.totalMass() * model.gravity() * c.step_length);
   p.nlp.addCost(std::make_unique<QuadratureCost>(
-      phase + "_abs_work", l, std::make_shared<AbsoluteWork>(n, slackOffset(dsp, n))));
-  if (c.torque_regularization > 0)
-    p.nlp.addCost(std::make_unique<QuadratureCost>(
-        phase + "_torque_regularization", l,
-        std::make_shared<TorqueSquared>(n, c.torque_regularization)));
+      phase + "_abs_work", l, std::make_shared<AbsoluteWork>(n, slackOffset(dsp, n), weight)));
 }
 
 void addPhaseConstraints(GaitProblem& p, const dynamics::Model& model, const OcpConfig& c,
@@ -184,7 +206,7 @@ void addPhaseConstraints(GaitProblem& p, const dynamics::Model& model, const Ocp
   if (!dsp && c.clearance >= 0)
     p.nlp.addConstraint(std::make_unique<PathConstraint>(
         "ssp_clearance", l, std::make_shared<SwingHeight>(model, c.clearance)));
-  addPhaseCost(p, c, l, dsp, n);
+  addPhaseCost(p, model, c, l, dsp);
 }
 
 /// Touchdown at the end of the SSP: position, strike direction, impact; returns the indices of
@@ -220,6 +242,28 @@ Indices addTouchdown(GaitProblem& p, const dynamics::Model& model, const OcpConf
   return range(p.impact_offset + 2, n);
 }
 
+/// y = free durations: their sum plus the fixed ones equals the step duration.
+struct DurationSum {
+  double fixed;
+  template <class S>
+  dynamics::VecX<S> operator()(const dynamics::VecX<S>& y) const {
+    return dynamics::VecX<S>::Constant(1, y.sum() + fixed);
+  }
+};
+
+void addStepDuration(GaitProblem& p, double step_duration) {
+  Indices free;
+  double fixed = 0;
+  for (const PhaseLayout* l : {&p.ssp, p.dsp ? &*p.dsp : nullptr}) {
+    if (l == nullptr) continue;
+    if (l->freeDuration())
+      free.push_back(l->duration_index);
+    else
+      fixed += l->duration;
+  }
+  addLink(p.nlp, "step_duration", 1, free, 0, DurationSum{fixed}, step_duration, step_duration);
+}
+
 }  // namespace
 
 GaitProblem buildGaitProblem(const dynamics::Model& model, const OcpConfig& config,
@@ -247,28 +291,51 @@ GaitProblem buildGaitProblem(const dynamics::Model& model, const OcpConfig& conf
   addLink(p.nlp, "periodicity", 2 * n,
           concat(concat(theta_end, rates_end), range(p.ssp.x(0, 0), 2 * n)), 0,
           Periodicity{&model});
+  if (config.step_duration > 0) addStepDuration(p, config.step_duration);
   return p;
 }
 
 namespace {
 
+/// A knot from one point's variables [theta, dtheta, ddtheta, tau, (lambda), ...].
+gaits::Knot knotOf(const Eigen::VectorXd& v, const dynamics::Model& model, bool dsp, double t) {
+  const int n = model.nLinks();
+  gaits::Knot knot;
+  knot.t = t;
+  knot.phase = dsp ? gaits::Phase::kDsp : gaits::Phase::kSsp;
+  knot.theta = v.segment(0, n);
+  knot.dtheta = v.segment(n, n);
+  knot.ddtheta = v.segment(2 * n, n);
+  knot.tau = v.segment(3 * n, n);
+  if (dsp) knot.force_swing = v.segment<2>(4 * n);
+  knot.force_stance =
+      dynamics::stanceForce<double>(model, knot.theta, knot.dtheta, knot.ddtheta, knot.force_swing);
+  return knot;
+}
+
 void appendKnots(std::vector<gaits::Knot>& knots, const PhaseLayout& l,
                  const dynamics::Model& model, const Eigen::VectorXd& x, bool dsp, double t0) {
-  const int n = model.nLinks();
-  for (int k = 0; k < l.points(); ++k) {
-    const Eigen::VectorXd v = l.point(x, k);
-    gaits::Knot knot;
-    knot.t = t0 + l.time(k);
-    knot.phase = dsp ? gaits::Phase::kDsp : gaits::Phase::kSsp;
-    knot.theta = v.segment(0, n);
-    knot.dtheta = v.segment(n, n);
-    knot.ddtheta = v.segment(2 * n, n);
-    knot.tau = v.segment(3 * n, n);
-    if (dsp) knot.force_swing = v.segment<2>(4 * n);
-    knot.force_stance = dynamics::stanceForce<double>(model, knot.theta, knot.dtheta, knot.ddtheta,
-                                                      knot.force_swing);
-    knots.push_back(std::move(knot));
+  for (int k = 0; k < l.points(); ++k)
+    knots.push_back(knotOf(l.point(x, k), model, dsp, t0 + l.time(k, l.durationAt(x))));
+}
+
+/// Knots on the grid j / rate_hz inside the phase plus both ends, from the scheme's own
+/// polynomials.
+void appendDenseKnots(std::vector<gaits::Knot>& knots, const PhaseLayout& l,
+                      const dynamics::Model& model, const Eigen::VectorXd& x, bool dsp, double t0,
+                      double rate_hz) {
+  const double total = l.durationAt(x);
+  const double gap = 1e-3 / rate_hz;  // no sliver next to an end
+  auto add = [&](double t) {
+    knots.push_back(knotOf(interpolatePoint(l, x, t), model, dsp, t0 + t));
+  };
+  add(0.0);
+  for (auto j = static_cast<long>(std::floor(t0 * rate_hz)) + 1;; ++j) {
+    const double t = static_cast<double>(j) / rate_hz - t0;
+    if (t > total - gap) break;
+    if (t > gap) add(t);
   }
+  add(total);
 }
 
 }  // namespace
@@ -277,7 +344,17 @@ gaits::Trajectory reconstruct(const GaitProblem& problem, const dynamics::Model&
                               const Eigen::VectorXd& x) {
   std::vector<gaits::Knot> knots;
   appendKnots(knots, problem.ssp, model, x, false, 0.0);
-  if (problem.dsp) appendKnots(knots, *problem.dsp, model, x, true, problem.ssp.duration);
+  if (problem.dsp) appendKnots(knots, *problem.dsp, model, x, true, problem.ssp.durationAt(x));
+  return gaits::Trajectory(model.name(), problem.step_length, std::move(knots));
+}
+
+gaits::Trajectory reconstructDense(const GaitProblem& problem, const dynamics::Model& model,
+                                   const Eigen::VectorXd& x, double rate_hz) {
+  if (!(rate_hz > 0)) throw std::invalid_argument("the sample rate must be positive");
+  std::vector<gaits::Knot> knots;
+  appendDenseKnots(knots, problem.ssp, model, x, false, 0.0, rate_hz);
+  if (problem.dsp)
+    appendDenseKnots(knots, *problem.dsp, model, x, true, problem.ssp.durationAt(x), rate_hz);
   return gaits::Trajectory(model.name(), problem.step_length, std::move(knots));
 }
 

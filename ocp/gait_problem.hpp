@@ -34,4 +34,9 @@ GaitProblem buildGaitProblem(const dynamics::Model& model, const OcpConfig& conf
 gaits::Trajectory reconstruct(const GaitProblem& problem, const dynamics::Model& model,
                               const Eigen::VectorXd& x);
 
+/// The solution sampled at `rate_hz` (plus each phase's ends) from the collocation scheme's
+/// own interpolating polynomials (collocation_interpolation.hpp): the export a controller gets.
+gaits::Trajectory reconstructDense(const GaitProblem& problem, const dynamics::Model& model,
+                                   const Eigen::VectorXd& x, double rate_hz);
+
 }  // namespace gaitopt::ocp

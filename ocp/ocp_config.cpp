@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <numbers>
 
+#include <fmt/format.h>
+
 #include "config/yaml_reader.hpp"
 
 namespace gaitopt::ocp {
@@ -17,14 +19,33 @@ std::string relativeTo(const std::string& file, const std::string& path) {
 }
 
 PhaseConfig readPhase(const YamlReader& r) {
-  r.allowOnly({"name", "duration", "segments"});
+  r.allowOnly({"name", "duration", "duration_min", "duration_max", "segments"});
   PhaseConfig p;
   p.name = r.choice("name", {"SSP", "DSP"});
   p.duration = r.number("duration", config::inRange(0.01, 10.0, "[s]"));
+  if (r.has("duration_min") || r.has("duration_max")) {
+    p.duration_min =
+        r.number("duration_min", config::inRange(0.01, p.duration, "[s], <= duration"));
+    p.duration_max =
+        r.number("duration_max", config::inRange(p.duration, 10.0, "[s], >= duration"));
+  }
   const double segments = r.number("segments", config::inRange(1, 1000, "(whole number)"));
   if (segments != std::floor(segments)) r.fail("segments", "expected a whole number of segments");
   p.segments = static_cast<int>(segments);
   return p;
+}
+
+/// A step duration fixes SSP + DSP; it must be reachable within the phases' bounds.
+void checkStepDuration(const YamlReader& root, const OcpConfig& c) {
+  double lo = 0, hi = 0;
+  for (const auto& p : c.phases) {
+    lo += p.freeDuration() ? p.duration_min : p.duration;
+    hi += p.freeDuration() ? p.duration_max : p.duration;
+  }
+  if (c.step_duration < lo || c.step_duration > hi || lo == hi)
+    root.fail("step_duration", fmt::format("expected a value in [{}, {}] s that free phase "
+                                           "durations (duration_min/max) can reach",
+                                           lo, hi));
 }
 
 void readConstraints(const YamlReader& r, OcpConfig& c) {
@@ -41,6 +62,27 @@ void readConstraints(const YamlReader& r, OcpConfig& c) {
   c.trailing_lifts = r.booleanOr("trailing_lifts", true);
 }
 
+CostWeights readCost(const YamlReader& r) {
+  r.allowOnly({"torque_squared", "abs_work", "cost_of_transport"});
+  const auto weight = config::inRange(0, 1e6, "(weight)");
+  CostWeights w;
+  w.torque_squared = r.numberOr("torque_squared", 0.0, weight);
+  w.abs_work = r.numberOr("abs_work", 0.0, weight);
+  w.cost_of_transport = r.numberOr("cost_of_transport", 0.0, weight);
+  if (w.torque_squared + w.abs_work + w.cost_of_transport == 0)
+    r.fail("torque_squared", "expected at least one positive cost weight");
+  return w;
+}
+
+MeshRefinement readRefinement(const YamlReader& r) {
+  r.allowOnly({"tolerance", "max_rounds"});
+  MeshRefinement m;
+  m.tolerance = r.number("tolerance", config::inRange(1e-9, 1e3, "[N m s]"));
+  m.max_rounds =
+      static_cast<int>(r.numberOr("max_rounds", m.max_rounds, config::inRange(1, 10, "")));
+  return m;
+}
+
 void readSolver(const YamlReader& r, SolverOptions& s) {
   r.allowOnly({"tolerance", "max_iterations", "hessian", "print_level", "mu_strategy", "mu_init"});
   if (r.has("mu_strategy")) s.mu_strategy = r.choice("mu_strategy", {"monotone", "adaptive"});
@@ -54,10 +96,16 @@ void readSolver(const YamlReader& r, SolverOptions& s) {
 
 }  // namespace
 
+std::string CostWeights::primary() const {
+  if (cost_of_transport > 0) return "cost_of_transport";
+  return abs_work > 0 ? "abs_work" : "torque_squared";
+}
+
 OcpConfig loadOcpConfig(const std::string& path) {
   const YamlReader root = YamlReader::fromFile(path);
   root.allowOnly({"name", "description", "robot", "initial_guess", "step_length", "phases",
-                  "scheme", "impact", "cost", "torque_regularization", "constraints", "solver"});
+                  "step_duration", "scheme", "impact", "cost", "mesh_refinement", "constraints",
+                  "solver"});
   OcpConfig c;
   c.name = root.string("name");
   root.stringOr("description", "");
@@ -68,6 +116,8 @@ OcpConfig loadOcpConfig(const std::string& path) {
   if (c.phases.front().name != "SSP" || c.phases.size() > 2 ||
       (c.phases.size() == 2 && c.phases.back().name != "DSP"))
     root.fail("phases", "expected [SSP] or [SSP, DSP]");
+  c.step_duration = root.numberOr("step_duration", 0.0, config::inRange(0.02, 20.0, "[s]"));
+  if (c.step_duration > 0) checkStepDuration(root, c);
   c.scheme = schemeFromString(root.choice("scheme", {"trapezoidal", "hermite_simpson"}));
   const std::string impact = root.choice("impact", {"single", "double", "impactless"});
   c.impact = impact == "single"   ? ImpactModel::kSingle
@@ -78,9 +128,8 @@ OcpConfig loadOcpConfig(const std::string& path) {
                             ? "a step with a DSP needs a double or impactless touchdown"
                             : "a step without a DSP needs a single impact (the old stance tip "
                               "lifts off)");
-  c.cost = root.choice("cost", {"torque_squared", "abs_work"});
-  c.torque_regularization = root.numberOr("torque_regularization", c.torque_regularization,
-                                          config::inRange(0, 1e3, "(weight of sum tau^2)"));
+  c.cost = readCost(root.map("cost"));
+  if (root.has("mesh_refinement")) c.refinement = readRefinement(root.map("mesh_refinement"));
   if (root.has("constraints")) readConstraints(root.map("constraints"), c);
   if (root.has("solver")) readSolver(root.map("solver"), c.solver);
   return c;

@@ -11,9 +11,33 @@
 namespace gaitopt::ocp {
 
 struct PhaseConfig {
-  std::string name;  ///< "SSP", then optionally "DSP"
-  double duration = 0;
+  std::string name;         ///< "SSP", then optionally "DSP"
+  double duration = 0;      ///< fixed T, or the initial T when free
+  double duration_min = 0;  ///< bounds of a free T; both 0 when fixed [s]
+  double duration_max = 0;
   int segments = 0;
+  std::vector<double> mesh;  ///< segment boundaries as fractions of T; empty: equal segments
+
+  bool freeDuration() const { return duration_max > 0; }
+};
+
+/// Weights of the running-cost terms; those at 0 are left out. Cost of transport is the
+/// absolute work per weight and distance, W / (m g d) (dimensionless).
+struct CostWeights {
+  double torque_squared = 0;  ///< integral of sum_j tau_j^2 [N^2 m^2 s]
+  double abs_work = 0;        ///< integral of sum_j |tau_j dq_j| [J]
+  double cost_of_transport = 0;
+
+  bool needsWorkSlacks() const { return abs_work > 0 || cost_of_transport > 0; }
+  /// The main term, for summaries: cost_of_transport, else abs_work, else torque_squared.
+  std::string primary() const;
+};
+
+/// Mesh refinement (Betts 2010, ch. 4.7): re-solve with the segments whose collocation error
+/// exceeds `tolerance` split, until none does or `max_rounds` re-solves were made.
+struct MeshRefinement {
+  double tolerance = 0;  ///< per-segment dynamics defect integral [N m s]; 0: off
+  int max_rounds = 4;
 };
 
 /// Touchdown: rigid single impact (B lifts off; SSP-only steps), rigid double impact (both tips
@@ -26,10 +50,11 @@ struct OcpConfig {
   std::string guess_gait_path;  ///< polynomial gait used as the initial guess
   double step_length = 0;       ///< tips apart at touchdown [m]
   std::vector<PhaseConfig> phases;
+  double step_duration = 0;  ///< with free durations: SSP + DSP = step_duration (0: free) [s]
   Scheme scheme = Scheme::kHermiteSimpson;
   ImpactModel impact = ImpactModel::kSingle;
-  std::string cost = "torque_squared";  ///< "torque_squared" or "abs_work" (with slacks)
-  double torque_regularization = 1e-3;  ///< weight of the torque-squared term added to abs_work
+  CostWeights cost;
+  MeshRefinement refinement;
   // Constraint switches and bounds.
   bool torque_limits = true;   ///< |tau_j| <= robot torque limit; unactuated joints at 0
   bool knee_limits = true;     ///< knees never hyperextend (stance q1 >= 0, swing <= 0)

@@ -24,18 +24,19 @@ class TorqueSquared : public PointFunction {
 
 /// Absolute mechanical work made smooth with slack variables (DESIGN.md sec. 6): each joint's
 /// power tau_j dq_j = s+_j - s-_j with s+, s- >= 0 (WorkSplit), and the running cost
-/// L = sum_j (s+_j + s-_j), which equals sum_j |tau_j dq_j| at the optimum. The slacks sit at
-/// `slack_offset` in the point: s+ (n) then s- (n).
+/// L = weight sum_j (s+_j + s-_j), which equals weight sum_j |tau_j dq_j| at the optimum. The
+/// slacks sit at `slack_offset` in the point: s+ (n) then s- (n).
 class AbsoluteWork : public PointFunction {
  public:
-  AbsoluteWork(int n_links, int slack_offset) : n_(n_links), offset_(slack_offset) {}
+  AbsoluteWork(int n_links, int slack_offset, double weight = 1.0)
+      : n_(n_links), offset_(slack_offset), weight_(weight) {}
   int rows() const override { return 1; }
   void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override {
-    f(0) = v.segment(offset_, 2 * n_).sum();
+    f(0) = weight_ * v.segment(offset_, 2 * n_).sum();
   }
   void jacobian(const Eigen::VectorXd&, Eigen::Ref<Eigen::MatrixXd> jac) const override {
     jac.setZero();
-    jac.block(0, offset_, 1, 2 * n_).setOnes();
+    jac.block(0, offset_, 1, 2 * n_).setConstant(weight_);
   }
   void hessian(const Eigen::VectorXd&, const Eigen::VectorXd&,
                Eigen::Ref<Eigen::MatrixXd> hess) const override {
@@ -44,6 +45,7 @@ class AbsoluteWork : public PointFunction {
 
  private:
   int n_, offset_;
+  double weight_;
 };
 
 /// tau_j dq_j - s+_j + s-_j = 0 with dq = M dtheta (Mu 2.41): joint power split into its

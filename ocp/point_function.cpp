@@ -1,5 +1,6 @@
 #include "ocp/point_function.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -85,6 +86,10 @@ QuadratureCost::QuadratureCost(std::string name, const PhaseLayout& layout,
 }
 
 double QuadratureCost::value(const Eigen::VectorXd& x) const {
+  return layout_.durationAt(x) * unitDurationValue(x);
+}
+
+double QuadratureCost::unitDurationValue(const Eigen::VectorXd& x) const {
   double total = 0;
   Eigen::VectorXd f(1);
   for (int p = 0; p < layout_.points(); ++p) {
@@ -94,20 +99,34 @@ double QuadratureCost::value(const Eigen::VectorXd& x) const {
   return total;
 }
 
+// With a free T the cost T sum_p w_p L(v_p) also varies with T: d/dT = sum_p w_p L(v_p) and
+// d2/dT dv_p = w_p dL/dv_p.
 void QuadratureCost::gradient(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> grad) const {
+  const double duration = layout_.durationAt(x);
   Eigen::MatrixXd jac(1, layout_.pointSize());
   for (int p = 0; p < layout_.points(); ++p) {
     f_->jacobian(layout_.point(x, p), jac);
     grad.segment(layout_.pointOffset(p), layout_.pointSize()) +=
-        weights_(p) * jac.row(0).transpose();
+        duration * weights_(p) * jac.row(0).transpose();
   }
+  if (layout_.freeDuration()) grad(layout_.duration_index) += unitDurationValue(x);
 }
 
 void QuadratureCost::hessian(const Eigen::VectorXd& x, double factor, Triplets& out) const {
+  const double scale = factor * layout_.durationAt(x);
+  const int t = layout_.duration_index;
   Eigen::MatrixXd block(layout_.pointSize(), layout_.pointSize());
+  Eigen::MatrixXd jac(1, layout_.pointSize());
   for (int p = 0; p < layout_.points(); ++p) {
-    f_->hessian(layout_.point(x, p), Eigen::VectorXd::Constant(1, factor * weights_(p)), block);
+    const Eigen::VectorXd v = layout_.point(x, p);
+    f_->hessian(v, Eigen::VectorXd::Constant(1, scale * weights_(p)), block);
     appendPattern(block, pattern_.hessian, layout_.pointOffset(p), out);
+    if (t < 0) continue;
+    f_->jacobian(v, jac);
+    for (const auto& [r, c] : pattern_.jacobian) {
+      const int col = layout_.pointOffset(p) + c;
+      out.emplace_back(std::max(t, col), std::min(t, col), factor * weights_(p) * jac(r, c));
+    }
   }
 }
 

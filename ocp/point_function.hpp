@@ -54,7 +54,8 @@ class PathConstraint : public ConstraintSet {
   PointPattern pattern_;
 };
 
-/// The running cost sum_p w_p L(v_p), with the phase's quadrature weights; L has one row.
+/// The running cost T sum_p w_p L(v_p), with the phase's quadrature weights for unit
+/// duration; L has one row. A free T is differentiated too.
 class QuadratureCost : public CostTerm {
  public:
   QuadratureCost(std::string name, const PhaseLayout& layout,
@@ -64,6 +65,8 @@ class QuadratureCost : public CostTerm {
   void hessian(const Eigen::VectorXd& x, double factor, Triplets& out) const override;
 
  private:
+  double unitDurationValue(const Eigen::VectorXd& x) const;  ///< sum_p w_p L(v_p)
+
   PhaseLayout layout_;
   std::shared_ptr<const PointFunction> f_;
   Eigen::VectorXd weights_;

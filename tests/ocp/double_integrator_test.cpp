@@ -7,8 +7,10 @@
 #include <cmath>
 
 #include "ocp/collocation.hpp"
+#include "ocp/collocation_interpolation.hpp"
 #include "ocp/ipopt_adapter.hpp"
 #include "ocp/point_function.hpp"
+#include "support/nlp_derivatives.hpp"
 
 namespace gaitopt::ocp {
 namespace {
@@ -48,16 +50,24 @@ class Effort : public PointFunction {
   }
 };
 
+/// The problem on `layout`; with a free duration (layout.duration_index = 0, points at
+/// offset 1) T is the first variable, within [0.5, 2].
 Nlp buildProblem(const PhaseLayout& layout) {
   Nlp nlp;
+  if (layout.freeDuration())
+    nlp.addVariables("duration", 1, Eigen::VectorXd::Constant(1, 0.5),
+                     Eigen::VectorXd::Constant(1, 2.0), Eigen::VectorXd::Constant(1, 1.0));
   const int n = layout.variables();
   const double inf = 1e20;
   Eigen::VectorXd lo = Eigen::VectorXd::Constant(n, -inf), hi = Eigen::VectorXd::Constant(n, inf);
   const int last = layout.points() - 1;
-  lo(layout.x(0, 0)) = hi(layout.x(0, 0)) = 0;  // boundary conditions as bounds (ifopt style)
-  lo(layout.x(0, 1)) = hi(layout.x(0, 1)) = 0;
-  lo(layout.x(last, 0)) = hi(layout.x(last, 0)) = 1;
-  lo(layout.x(last, 1)) = hi(layout.x(last, 1)) = 0;
+  auto fix = [&](int p, int i, double value) {  // boundary conditions as bounds (ifopt style)
+    lo(layout.x(p, i) - layout.offset) = hi(layout.x(p, i) - layout.offset) = value;
+  };
+  fix(0, 0, 0);
+  fix(0, 1, 0);
+  fix(last, 0, 1);
+  fix(last, 1, 0);
   nlp.addVariables("points", n, lo, hi, Eigen::VectorXd::Zero(n));
   nlp.addConstraint(std::make_unique<CollocationDefects>(layout));
   nlp.addConstraint(
@@ -67,7 +77,7 @@ Nlp buildProblem(const PhaseLayout& layout) {
 }
 
 PhaseLayout layoutFor(Scheme scheme, int segments) {
-  return PhaseLayout{scheme, segments, 1.0, 2, 1, 0, 0};
+  return PhaseLayout{.scheme = scheme, .segments = segments, .duration = 1.0, .nx = 2, .nu = 1};
 }
 
 SolveResult solve(const PhaseLayout& layout) {
@@ -91,6 +101,33 @@ TEST(DoubleIntegrator, HermiteSimpsonRecoversTheExactCubic) {
   EXPECT_GT(r.iterations, 0);
 }
 
+TEST(DoubleIntegrator, HermiteSimpsonIsExactOnAnUnequalMeshAndBetweenItsNodes) {
+  PhaseLayout layout = layoutFor(Scheme::kHermiteSimpson, 4);
+  layout.mesh = {0.0, 0.1, 0.45, 0.5, 1.0};
+  const SolveResult r = solve(layout);
+  ASSERT_TRUE(r.success) << r.status;
+  EXPECT_NEAR(r.cost, 12.0, 1e-7);
+  for (int j = 0; j <= 40; ++j) {  // the scheme's cubic state and quadratic control
+    const double t = j / 40.0;
+    const Eigen::VectorXd v = interpolatePoint(layout, r.x, t);
+    EXPECT_NEAR(v(0), 3 * t * t - 2 * t * t * t, 1e-8) << t;
+    EXPECT_NEAR(v(1), 6 * t - 6 * t * t, 1e-8) << t;
+    EXPECT_NEAR(v(4), 6 - 12 * t, 1e-7) << t;
+  }
+}
+
+TEST(DoubleIntegrator, FreeDurationReachesTheAnalyticOptimum) {
+  // Effort 12 / T^3 over [0.5, 2] s: the optimum is the longest motion, T = 2, cost 1.5.
+  PhaseLayout layout = layoutFor(Scheme::kHermiteSimpson, 5);
+  layout.duration_index = 0;
+  layout.offset = 1;
+  const SolveResult r = solve(layout);
+  ASSERT_TRUE(r.success) << r.status;
+  EXPECT_NEAR(r.x(0), 2.0, 1e-6);
+  EXPECT_NEAR(r.cost, 1.5, 1e-6);
+  EXPECT_NEAR(interpolatePoint(layout, r.x, 1.0)(0), 0.5, 1e-8);  // x(T/2) = 1/2 by symmetry
+}
+
 TEST(DoubleIntegrator, TrapezoidalConvergesWithOrderTwo) {
   std::vector<double> errors;
   for (int segments : {8, 16, 32}) {
@@ -102,28 +139,16 @@ TEST(DoubleIntegrator, TrapezoidalConvergesWithOrderTwo) {
   EXPECT_NEAR(order, 2.0, 0.2) << "errors " << errors[0] << " " << errors[1] << " " << errors[2];
 }
 
-TEST(DoubleIntegrator, JacobianAndHessianEqualCentralDifferences) {
+TEST(DoubleIntegrator, JacobianHessianAndGradientEqualCentralDifferences) {
   for (Scheme scheme : {Scheme::kTrapezoidal, Scheme::kHermiteSimpson}) {
-    const Nlp nlp = buildProblem(layoutFor(scheme, 4));
-    const int n = nlp.variables();
-    const Eigen::VectorXd x = Eigen::VectorXd::Random(n);
-    const Eigen::VectorXd lambda = Eigen::VectorXd::Random(nlp.constraints());
-    Eigen::SparseMatrix<double> jac(nlp.constraints(), n), hess(n, n);
-    const Triplets jt = nlp.jacobianTriplets(x), ht = nlp.hessianTriplets(x, 0.7, lambda);
-    jac.setFromTriplets(jt.begin(), jt.end());
-    hess.setFromTriplets(ht.begin(), ht.end());
-    const Eigen::MatrixXd h_full = Eigen::MatrixXd(hess).selfadjointView<Eigen::Lower>();
-    const double step = 1e-6;
-    for (int k = 0; k < n; ++k) {
-      Eigen::VectorXd xp = x, xm = x;
-      xp(k) += step;
-      xm(k) -= step;
-      const Eigen::VectorXd dg = (nlp.constraintValues(xp) - nlp.constraintValues(xm)) / (2 * step);
-      EXPECT_LT((dg - Eigen::MatrixXd(jac).col(k)).norm(), 1e-7);
-      const Eigen::VectorXd dgrad =
-          0.7 * (nlp.costGradient(xp) - nlp.costGradient(xm)) / (2 * step);
-      EXPECT_LT((dgrad - h_full.col(k)).norm(), 1e-6);  // constraints are linear here
-    }
+    PhaseLayout layout = layoutFor(scheme, 4);
+    layout.mesh = {0.0, 0.2, 0.3, 0.7, 1.0};
+    layout.duration_index = 0;  // free T: bilinear defects and a scaled quadrature
+    layout.offset = 1;
+    const test::DerivativeErrors e = test::compareWithCentralDifferences(buildProblem(layout), 0.5);
+    EXPECT_LT(e.jacobian, 1e-8) << toString(scheme);
+    EXPECT_LT(e.hessian, 1e-7) << toString(scheme);
+    EXPECT_LT(e.gradient, 1e-8) << toString(scheme);
   }
 }
 

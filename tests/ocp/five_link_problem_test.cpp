@@ -14,6 +14,7 @@
 #include "gaits/consistency.hpp"
 #include "gaits/hip_plan_search.hpp"
 #include "gaits/metrics.hpp"
+#include "ocp/collocation_interpolation.hpp"
 #include "ocp/gait_problem.hpp"
 #include "ocp/ipopt_adapter.hpp"
 #include "support/chain_simulation.hpp"
@@ -41,6 +42,28 @@ TEST(FiveLinkProblem, JacobianAndLagrangianHessianEqualCentralDifferences) {
   RecordProperty("hessian_relative_error", fmt::format("{:.2e}", e.hessian));
   EXPECT_LT(e.jacobian, 1e-6);
   EXPECT_LT(e.hessian, 1e-6);
+}
+
+TEST(FiveLinkProblem, FreeDurationsUnequalMeshAndCostOfTransportHaveExactDerivatives) {
+  // Free T makes the defects bilinear and scales every quadrature: the T rows and columns of
+  // the Jacobian and Hessian, the step-duration link and the cost of transport are differenced.
+  auto c = loadOcpConfig(kConfig);
+  c.phases.front().segments = 2;
+  c.phases.front().mesh = {0.0, 0.3, 1.0};
+  c.phases.back().segments = 1;
+  for (auto& phase : c.phases) {
+    phase.duration_min = 0.5 * phase.duration;
+    phase.duration_max = 1.5 * phase.duration;
+  }
+  c.step_duration = 0.7;
+  c.cost = CostWeights{.torque_squared = 1e-3, .cost_of_transport = 1.0};
+  const auto model = dynamics::loadRobot(c.robot_path);
+  const GaitProblem p = buildGaitProblem(model, c, muGuess(model, c));
+  ASSERT_TRUE(p.ssp.freeDuration() && p.dsp->freeDuration());
+  const test::DerivativeErrors e = test::compareWithCentralDifferences(p.nlp, 0.02);
+  EXPECT_LT(e.jacobian, 1e-6);
+  EXPECT_LT(e.hessian, 1e-6);
+  EXPECT_LT(e.gradient, 1e-6);
 }
 
 class FiveLinkSolution : public ::testing::Test {
@@ -145,13 +168,14 @@ TEST_F(FiveLinkSolution, SegmentwiseResimulationThroughTheHybridModelReproducesT
                                          knots.begin() + static_cast<long>(first) + l.points());
       const auto& start = ref[static_cast<size_t>(2 * seg)];
       const auto& end = ref[static_cast<size_t>(2 * seg + 2)];
-      const double t0 = l.time(2 * seg);
+      const double t0 = l.time(2 * seg), h = l.time(2 * seg + 2) - t0;
+      const int n = model_->nLinks();
       test::simulateChain(
           *model_, in_dsp, start.theta, start.dtheta,
-          [&](double t) {
-            return test::hermiteSimpsonControl(ref, l.segmentLength(), l.segments, t0 + t);
+          [&](double t) -> VecD {
+            return interpolatePoint(l, result_->x, t0 + t).segment(3 * n, n);
           },
-          {0.0, l.segmentLength()}, 1e-11,
+          {0.0, h}, 1e-11,
           [&](double t, const VecD& theta, const VecD&) {
             if (t > 0) err = std::max(err, (theta - VecD(end.theta)).cwiseAbs().maxCoeff());
           });

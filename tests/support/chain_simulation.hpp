@@ -55,18 +55,6 @@ inline void simulateSsp(const dynamics::Model& model, const VecD& theta0, const 
   simulateChain(model, false, theta0, dtheta0, torque, times, tolerance, observe);
 }
 
-/// Hermite-Simpson controls are quadratic on a segment: the value at time t (from the phase
-/// start) through the node, midpoint and node knots of `knots` (2 segments + 1 per segment).
-inline VecD hermiteSimpsonControl(const std::vector<gaits::Knot>& knots, double segment_length,
-                                  int segments, double t) {
-  const int seg = std::clamp(static_cast<int>(t / segment_length), 0, segments - 1);
-  const double s = t / segment_length - seg;  // in [0, 1]
-  const VecD a = knots[static_cast<size_t>(2 * seg)].tau;
-  const VecD m = knots[static_cast<size_t>(2 * seg + 1)].tau;
-  const VecD b = knots[static_cast<size_t>(2 * seg + 2)].tau;
-  return a * (2 * s - 1) * (s - 1) + m * 4 * s * (1 - s) + b * s * (2 * s - 1);
-}
-
 /// Evenly spaced times from 0 to `duration`, `count` intervals.
 inline std::vector<double> evenTimes(double duration, int count) {
   std::vector<double> times;

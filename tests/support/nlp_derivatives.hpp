@@ -11,6 +11,7 @@ namespace gaitopt::test {
 struct DerivativeErrors {
   double jacobian = 0;  ///< ||FD - exact||_F / ||exact||_F
   double hessian = 0;
+  double gradient = 0;  ///< of the cost
 };
 
 inline Eigen::MatrixXd denseOf(const ocp::Triplets& t, int rows, int cols) {
@@ -33,6 +34,7 @@ inline DerivativeErrors compareWithCentralDifferences(const ocp::Nlp& nlp, doubl
            denseOf(nlp.jacobianTriplets(z), m, n).transpose() * lambda;
   };
   Eigen::MatrixXd fd_jac(m, n), fd_hess(n, n);
+  Eigen::VectorXd fd_grad(n);
   const double h = 1e-6;
   for (int k = 0; k < n; ++k) {
     Eigen::VectorXd xp = x, xm = x;
@@ -40,8 +42,11 @@ inline DerivativeErrors compareWithCentralDifferences(const ocp::Nlp& nlp, doubl
     xm(k) -= h;
     fd_jac.col(k) = (nlp.constraintValues(xp) - nlp.constraintValues(xm)) / (2 * h);
     fd_hess.col(k) = (gradient(xp) - gradient(xm)) / (2 * h);
+    fd_grad(k) = (nlp.cost(xp) - nlp.cost(xm)) / (2 * h);
   }
-  return {(fd_jac - jac).norm() / jac.norm(), (fd_hess - hess).norm() / hess.norm()};
+  const Eigen::VectorXd grad = nlp.costGradient(x);
+  return {(fd_jac - jac).norm() / jac.norm(), (fd_hess - hess).norm() / hess.norm(),
+          (fd_grad - grad).norm() / grad.norm()};
 }
 
 }  // namespace gaitopt::test

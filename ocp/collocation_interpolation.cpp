@@ -1,0 +1,55 @@
+#include "ocp/collocation_interpolation.hpp"
+
+#include <algorithm>
+#include <array>
+
+namespace gaitopt::ocp {
+namespace {
+
+constexpr int kMaxBasis = 3;
+using Basis = std::array<double, kMaxBasis>;
+
+/// Lagrange basis at s = tau / h on the points of one segment: (0, 1) for trapezoidal,
+/// (0, 1/2, 1) for Hermite-Simpson.
+Basis lagrange(Scheme scheme, double s) {
+  if (scheme == Scheme::kTrapezoidal) return {1 - s, s, 0};
+  return {(2 * s - 1) * (s - 1), 4 * s * (1 - s), s * (2 * s - 1)};
+}
+
+/// Integrals of the same basis from 0 to s, in units of h; at s = 1 they are the trapezoid
+/// and Simpson weights, at s = 1/2 (5/24, 1/3, -1/24), the separated Hermite condition.
+Basis lagrangeIntegral(Scheme scheme, double s) {
+  if (scheme == Scheme::kTrapezoidal) return {s - s * s / 2, s * s / 2, 0};
+  const double s2 = s * s, s3 = s2 * s;
+  return {2 * s3 / 3 - 3 * s2 / 2 + s, 2 * s2 - 4 * s3 / 3, 2 * s3 / 3 - s2 / 2};
+}
+
+}  // namespace
+
+int segmentAt(const PhaseLayout& layout, double t, double total) {
+  const double s = t / total;
+  int k = 0;
+  while (k + 1 < layout.segments && layout.fraction(k + 1) <= s) ++k;
+  return k;
+}
+
+Eigen::VectorXd interpolatePoint(const PhaseLayout& l, const Eigen::VectorXd& decision, double t) {
+  const double total = l.durationAt(decision);
+  const int k = segmentAt(l, t, total);
+  const double h = total * l.segmentFraction(k);
+  const double s = std::clamp((t - total * l.fraction(k)) / h, 0.0, 1.0);
+  const int first = k * l.pointsPerSegment(), count = l.pointsPerSegment() + 1;
+  const Basis value = lagrange(l.scheme, s), integral = lagrangeIntegral(l.scheme, s);
+  Eigen::VectorXd point = Eigen::VectorXd::Zero(l.pointSize());
+  for (int j = 0; j < count; ++j)
+    point += value[static_cast<size_t>(j)] * l.point(decision, first + j);
+  for (int i = 0; i < l.nx; ++i) {  // x = x_k + integral of the interpolated xdot
+    double x = decision(l.x(first, i));
+    for (int j = 0; j < count; ++j)
+      x += h * integral[static_cast<size_t>(j)] * decision(l.xdot(first + j, i));
+    point(i) = x;
+  }
+  return point;
+}
+
+}  // namespace gaitopt::ocp
