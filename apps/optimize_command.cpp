@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "apps/command_runner.hpp"
 #include "apps/plotting.hpp"
@@ -13,7 +14,7 @@
 #include "gaits/gait_summary.hpp"
 #include "gaits/hip_plan_search.hpp"
 #include "gaits/trajectory_csv.hpp"
-#include "ocp/gait_problem.hpp"
+#include "ocp/gait_solve.hpp"
 
 namespace gaitopt::apps {
 namespace {
@@ -40,16 +41,31 @@ double impactLoss(const ocp::GaitProblem& p, const dynamics::Model& model,
          dynamics::kineticEnergy<double>(model, theta, dtheta_plus, base);
 }
 
+nlohmann::ordered_json meshHistory(const std::vector<ocp::MeshRound>& history) {
+  auto rounds = nlohmann::ordered_json::array();
+  for (const auto& m : history)
+    rounds.push_back({{"segments", m.segments},
+                      {"status", m.status},
+                      {"iterations", m.iterations},
+                      {"cost", m.cost},
+                      {"max_segment_error_Nms", m.max_segment_error},
+                      {"wall_time_s", m.wall_time_s}});
+  return rounds;
+}
+
 void writeResult(const OptimizeOptions& o, const dynamics::Model& model,
-                 const ocp::OcpConfig& config, const ocp::GaitProblem& problem,
-                 const ocp::SolveResult& r, const std::string& dir) {
+                 const ocp::OcpConfig& config, const ocp::GaitSolution& solution,
+                 const std::string& dir) {
+  const ocp::GaitProblem& problem = solution.problem;
+  const ocp::SolveResult& r = solution.result;
   std::filesystem::create_directories(dir);
   const gaits::Trajectory traj = ocp::reconstruct(problem, model, r.x);
-  const gaits::Trajectory dense = traj.resample(o.output.rate_hz);
+  // Between the points the export follows the scheme's own polynomials.
+  const gaits::Trajectory dense = ocp::reconstructDense(problem, model, r.x, o.output.rate_hz);
   gaits::writeTrajectoryCsv(dense, model, dir + "/trajectory.csv");
-  auto summary = gaits::gaitSummary(
-      traj, model,
-      {o.config_path, r.status, r.iterations, r.wall_time_s, r.callback_time_s, config.cost.primary()});
+  auto summary = gaits::gaitSummary(traj, model,
+                                    {o.config_path, r.status, r.iterations, r.wall_time_s,
+                                     r.callback_time_s, config.cost.primary()});
   summary["cost"] = r.cost;  // the solver's objective (the scheme's own quadrature)
   if (problem.impact_offset >= 0) summary["impact_energy_loss_J"] = impactLoss(problem, model, r.x);
   summary["max_violation"] = r.max_violation;
@@ -57,8 +73,9 @@ void writeResult(const OptimizeOptions& o, const dynamics::Model& model,
   summary["max_defect_between_nodes"] = gaits::maxDynamicsResidual(dense, model);
   summary["nlp"] = {{"variables", problem.nlp.variables()},
                     {"constraints", problem.nlp.constraints()},
-                    {"segments", problem.ssp.segments},
+                    {"segments", solution.history.back().segments},
                     {"scheme", ocp::toString(problem.ssp.scheme)}};
+  summary["mesh_history"] = meshHistory(solution.history);
   gaits::writeJsonFile(summary, dir + "/summary.json");
   if (o.output.plots) runPlotScript("gait_plots.py", fmt::format("'{}'", dir));
 }
@@ -69,28 +86,24 @@ void runOptimize(const OptimizeOptions& o) {
   ocp::OcpConfig config = ocp::loadOcpConfig(o.config_path);
   const dynamics::Model model = dynamics::loadRobot(config.robot_path);
   if (!o.quiet) fmt::print("optimize: {} on {}\n", config.name, model.name());
-  const ocp::GaitProblem problem =
-      ocp::buildGaitProblem(model, config, initialGuess(model, config, o.warm_start));
-  if (!o.quiet)
-    fmt::print("optimize: {} variables, {} constraints, {} {} segments, {} Hessian\n",
-               problem.nlp.variables(), problem.nlp.constraints(), problem.ssp.segments,
-               ocp::toString(problem.ssp.scheme), config.solver.hessian);
   config.solver.progress = !o.quiet;
-  if (!o.warm_start.empty()) {
-    // Start near the previous optimum: a small barrier and small pushes off the bounds, else
-    // the interior-point method first walks away from it (19 instead of 76 iterations).
-    config.solver.mu_init = 1e-5;
-    config.solver.bound_push = 1e-6;
-    config.solver.bound_frac = 1e-6;
-  }
-  const ocp::SolveResult r = ocp::solveWithIpopt(problem.nlp, config.solver);
+  if (!o.warm_start.empty()) config.solver = ocp::warmStarted(config.solver);
+  const ocp::GaitSolution solution = ocp::solveGait(
+      model, config, initialGuess(model, config, o.warm_start), [&](const ocp::MeshRound& m) {
+        if (!o.quiet)
+          fmt::print(
+              "optimize: mesh {} segments, {} after {} iterations, cost {:.6g}, max "
+              "segment error {:.2e} N m s\n",
+              fmt::join(m.segments, "+"), m.status, m.iterations, m.cost, m.max_segment_error);
+      });
+  const ocp::SolveResult& r = solution.result;
   fmt::print(
       "optimize: {} after {} iterations, cost {:.6g}, max violation {:.2e}, {:.3f} s "
       "({:.3f} s in our callbacks)\n",
       r.status, r.iterations, r.cost, r.max_violation, r.wall_time_s, r.callback_time_s);
   // A failed solve never overwrites a result: its last iterate goes to OUT.failed.
   const std::string dir = r.success ? o.output.out_dir : o.output.out_dir + ".failed";
-  writeResult(o, model, config, problem, r, dir);
+  writeResult(o, model, config, solution, dir);
   if (!r.success)
     throw std::runtime_error(
         fmt::format("solver status {}; last iterate written to {}", r.status, dir));

@@ -206,4 +206,11 @@ SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options) {
   return result;
 }
 
+SolverOptions warmStarted(SolverOptions options) {
+  options.mu_init = 1e-5;
+  options.bound_push = 1e-6;
+  options.bound_frac = 1e-6;
+  return options;
+}
+
 }  // namespace gaitopt::ocp

@@ -51,4 +51,30 @@ cold, warm = (json.load(open(f)) for f in sys.argv[1:3])
 assert abs(warm["cost"] - cold["cost"]) < 1e-4 * cold["cost"], (warm["cost"], cold["cost"])
 assert warm["iterations"] < cold["iterations"], (warm["iterations"], cold["iterations"])
 PY
+# (e) every shipped OCP config converges.
+for config in "$ROOT"/configs/ocp/*.yaml; do
+  name=$(basename "$config" .yaml)
+  run optimize --config "$config" --out "$TMP/shipped_$name" --quiet --no-plots --rate 100
+  [[ $RC -eq 0 ]] || fail "(e) $name exited $RC: $(cat "$TMP/err")"
+done
+check_json "(e) free durations" "$TMP/shipped_mu2004_walk_cot/summary.json" <<'PY'
+ssp, dsp = (p["duration"] for p in d["phases"])
+assert abs(ssp + dsp - 0.7) < 1e-9 and 0.45 <= ssp <= 0.65 and 0.05 <= dsp <= 0.25, d["phases"]
+assert d["cost_type"] == "cost_of_transport"
+PY
+
+# (f) mesh refinement: the summary's history shows the worst segment error falling below the
+# requested tolerance on a mesh finer than the configured one.
+sed "s|^solver:|mesh_refinement: {tolerance: 5.0e-5, max_rounds: 4}\nsolver:|; s|\.\./|$ROOT/configs/|" \
+  "$CONFIG" >"$TMP/refine.yaml"
+run optimize --config "$TMP/refine.yaml" --out "$TMP/refine" --quiet --no-plots
+[[ $RC -eq 0 ]] || fail "(f) exited $RC: $(cat "$TMP/err")"
+check_json "(f) mesh history" "$TMP/refine/summary.json" <<'PY'
+h = d["mesh_history"]
+assert len(h) >= 2, h
+errors = [r["max_segment_error_Nms"] for r in h]
+assert all(b < a for a, b in zip(errors, errors[1:])), errors
+assert errors[-1] <= 5.0e-5 and h[-1]["segments"][0] > 25, h
+assert d["iterations"] == sum(r["iterations"] for r in h)
+PY
 echo "optimize CLI: all checks passed"

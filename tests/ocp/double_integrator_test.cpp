@@ -9,6 +9,7 @@
 #include "ocp/collocation.hpp"
 #include "ocp/collocation_interpolation.hpp"
 #include "ocp/ipopt_adapter.hpp"
+#include "ocp/mesh_refinement.hpp"
 #include "ocp/point_function.hpp"
 #include "support/nlp_derivatives.hpp"
 
@@ -126,6 +127,30 @@ TEST(DoubleIntegrator, FreeDurationReachesTheAnalyticOptimum) {
   EXPECT_NEAR(r.x(0), 2.0, 1e-6);
   EXPECT_NEAR(r.cost, 1.5, 1e-6);
   EXPECT_NEAR(interpolatePoint(layout, r.x, 1.0)(0), 0.5, 1e-8);  // x(T/2) = 1/2 by symmetry
+}
+
+TEST(DoubleIntegrator, SegmentErrorVanishesForHermiteSimpsonAndShrinksAsHCubedForTrapezoidal) {
+  const DoubleIntegrator dynamics;
+  const PhaseLayout hs = layoutFor(Scheme::kHermiteSimpson, 5);
+  EXPECT_LT(segmentErrors(hs, dynamics, solve(hs).x).maxCoeff(), 1e-9);  // the exact cubic
+  std::vector<double> worst;
+  for (int segments : {8, 16}) {
+    const PhaseLayout trap = layoutFor(Scheme::kTrapezoidal, segments);
+    worst.push_back(segmentErrors(trap, dynamics, solve(trap).x).maxCoeff());
+  }
+  // Local error of an order-2 scheme: O(h^3) per segment.
+  EXPECT_NEAR(worst[0] / worst[1], 8.0, 1.0) << worst[0] << " " << worst[1];
+}
+
+TEST(DoubleIntegrator, RefinedMeshSplitsEachSegmentByItsErrorRatio) {
+  const PhaseLayout layout = layoutFor(Scheme::kHermiteSimpson, 4);
+  Eigen::VectorXd errors(4);
+  errors << 0.5, 2.0, 100.0, 1e5;  // tolerance 1: keep, then ceil(ratio^(1/5)) within [2, 4]
+  const std::vector<double> mesh = refinedMesh(layout, errors, 1.0);
+  const std::vector<double> expected{
+      0, 0.25, 0.375, 0.5, 0.5 + 0.25 / 3, 0.5 + 0.5 / 3, 0.75, 0.8125, 0.875, 0.9375, 1.0};
+  ASSERT_EQ(mesh.size(), expected.size());
+  for (size_t i = 0; i < mesh.size(); ++i) EXPECT_NEAR(mesh[i], expected[i], 1e-15) << i;
 }
 
 TEST(DoubleIntegrator, TrapezoidalConvergesWithOrderTwo) {

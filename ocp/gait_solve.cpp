@@ -1,0 +1,78 @@
+#include "ocp/gait_solve.hpp"
+
+#include <algorithm>
+
+#include "ocp/biped_dynamics.hpp"
+#include "ocp/mesh_refinement.hpp"
+
+namespace gaitopt::ocp {
+namespace {
+
+/// The layouts of the problem, in config order.
+std::vector<const PhaseLayout*> phasesOf(const GaitProblem& p) {
+  std::vector<const PhaseLayout*> phases{&p.ssp};
+  if (p.dsp) phases.push_back(&*p.dsp);
+  return phases;
+}
+
+MeshRound roundOf(const GaitProblem& p, const SolveResult& r, const std::vector<double>& errors) {
+  MeshRound round{{}, r.status, r.iterations, r.cost, 0, r.wall_time_s};
+  for (const PhaseLayout* l : phasesOf(p)) round.segments.push_back(l->segments);
+  for (double e : errors) round.max_segment_error = std::max(round.max_segment_error, e);
+  return round;
+}
+
+/// Refines every phase of `config` from the errors of the solution; false if nothing to split.
+bool refine(OcpConfig& config, const GaitProblem& p, const SolveResult& r,
+            const std::vector<Eigen::VectorXd>& errors) {
+  bool changed = false;
+  const auto phases = phasesOf(p);
+  for (size_t i = 0; i < phases.size(); ++i) {
+    const PhaseLayout& l = *phases[i];
+    PhaseConfig& phase = config.phases[i];
+    phase.mesh = refinedMesh(l, errors[i], config.refinement.tolerance);
+    changed = changed || static_cast<int>(phase.mesh.size()) - 1 != l.segments;
+    phase.segments = static_cast<int>(phase.mesh.size()) - 1;
+    phase.duration = l.durationAt(r.x);  // a free duration restarts where it ended
+  }
+  return changed;
+}
+
+}  // namespace
+
+GaitSolution solveGait(const dynamics::Model& model, OcpConfig config,
+                       const gaits::Trajectory& guess,
+                       const std::function<void(const MeshRound&)>& on_round) {
+  GaitSolution s{buildGaitProblem(model, config, guess), {}, {}};
+  SolverOptions options = config.solver;
+  double wall = 0, callbacks = 0;
+  int iterations = 0;
+  for (int round = 0;; ++round) {
+    s.result = solveWithIpopt(s.problem.nlp, options);
+    wall += s.result.wall_time_s;
+    callbacks += s.result.callback_time_s;
+    iterations += s.result.iterations;
+    std::vector<Eigen::VectorXd> errors;
+    std::vector<double> all;
+    const auto phases = phasesOf(s.problem);
+    for (size_t i = 0; i < phases.size(); ++i) {  // phase 0 is the SSP, phase 1 the DSP
+      errors.push_back(segmentErrors(*phases[i], BipedDynamics(model, i == 1), s.result.x));
+      all.insert(all.end(), errors.back().begin(), errors.back().end());
+    }
+    s.history.push_back(roundOf(s.problem, s.result, all));
+    if (on_round) on_round(s.history.back());
+    const bool done = !s.result.success || config.refinement.tolerance <= 0 ||
+                      round == config.refinement.max_rounds ||
+                      !refine(config, s.problem, s.result, errors);
+    if (done) break;
+    s.problem =
+        buildGaitProblem(model, config, reconstructDense(s.problem, model, s.result.x, 2000));
+    options = warmStarted(config.solver);
+  }
+  s.result.wall_time_s = wall;
+  s.result.callback_time_s = callbacks;
+  s.result.iterations = iterations;
+  return s;
+}
+
+}  // namespace gaitopt::ocp

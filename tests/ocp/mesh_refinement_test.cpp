@@ -1,0 +1,46 @@
+// Mesh refinement on the default five-link problem: every round lowers the worst segment error
+// until it is within tolerance, and the cost converges to that of a uniformly fine mesh.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include "dynamics/robot_config.hpp"
+#include "gaits/hip_plan_search.hpp"
+#include "ocp/gait_solve.hpp"
+
+namespace gaitopt::ocp {
+namespace {
+
+const std::string kConfig = std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/mu2004_walk.yaml";
+
+TEST(MeshRefinement, FiveLinkErrorFallsBelowToleranceAndTheCostConverges) {
+  OcpConfig c = loadOcpConfig(kConfig);
+  const auto model = dynamics::loadRobot(c.robot_path);
+  const auto params = gaits::loadGait(c.guess_gait_path);
+  const gaits::Trajectory guess = gaits::buildTrajectory(
+      gaits::PolynomialGait(model, params, gaits::searchHipPlan(model, params).plan), model, 1000);
+  c.refinement = {.tolerance = 2e-3, .max_rounds = 4};
+  const GaitSolution refined = solveGait(model, c, guess);
+  const auto& h = refined.history;
+  ASSERT_GE(h.size(), 2u);
+  for (size_t i = 1; i < h.size(); ++i) {
+    EXPECT_EQ(h[i].status, "Solve_Succeeded");
+    EXPECT_LT(h[i].max_segment_error, 0.5 * h[i - 1].max_segment_error) << "round " << i;
+  }
+  EXPECT_LE(h.back().max_segment_error, c.refinement.tolerance);
+
+  // Reference: a uniform mesh twice as fine as the refined one in every phase.
+  c.refinement.tolerance = 0;
+  c.phases[0].segments = 2 * h.back().segments[0];
+  c.phases[1].segments = 2 * h.back().segments[1];
+  const GaitSolution fine = solveGait(model, c, guess);
+  ASSERT_TRUE(fine.result.success);
+  const double first_gap = std::abs(h.front().cost - fine.result.cost);
+  const double last_gap = std::abs(h.back().cost - fine.result.cost);
+  RecordProperty("cost_gap_first_last", fmt::format("{:.3e} {:.3e}", first_gap, last_gap));
+  EXPECT_LT(last_gap, 0.1 * first_gap);
+  EXPECT_LT(last_gap, 1e-3 * fine.result.cost);
+}
+
+}  // namespace
+}  // namespace gaitopt::ocp
