@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/command_runner.hpp"
+#include "apps/impact_map_command.hpp"
 #include "apps/inspect_command.hpp"
 #include "apps/optimize_command.hpp"
 #include "apps/poly_command.hpp"
@@ -26,6 +27,7 @@ void configure(CLI::App& app) {
   gaitopt::apps::registerInspectCommand(app);
   gaitopt::apps::registerPolyCommand(app);
   gaitopt::apps::registerOptimizeCommand(app);
+  gaitopt::apps::registerImpactMapCommand(app);
 }
 
 /// Parses the command line and runs the chosen subcommand (from its callback).

@@ -1,0 +1,159 @@
+#include "apps/impact_map_command.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "apps/command_runner.hpp"
+#include "apps/impact_map_report.hpp"
+#include "apps/plotting.hpp"
+#include "config/config_error.hpp"
+#include "dynamics/robot_config.hpp"
+#include "gaits/gait_summary.hpp"
+
+namespace gaitopt::apps {
+namespace {
+
+constexpr double kDeg = M_PI / 180;
+
+double parseNumber(const std::string& text, const std::string& option) {
+  size_t used = 0;
+  double value = NAN;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !std::isfinite(value))
+    throw config::ConfigError(option, "", 0, fmt::format("'{}' is not a finite number", text));
+  return value;
+}
+
+/// "a:b:n" (n evenly spaced values from a to b) or "a" (one value), scaled to internal units.
+gaits::GridAxis parseRange(const std::string& text, const std::string& option, double scale) {
+  const size_t c1 = text.find(':');
+  if (c1 == std::string::npos) {
+    const double v = parseNumber(text, option) * scale;
+    return {v, v, 1};
+  }
+  const size_t c2 = text.find(':', c1 + 1);
+  if (c2 == std::string::npos)
+    throw config::ConfigError(option, "", 0, fmt::format("'{}': expected a:b:n or a", text));
+  const double n = parseNumber(text.substr(c2 + 1), option);
+  if (n != std::floor(n) || n < 1 || n > 1e6)
+    throw config::ConfigError(option, "", 0,
+                              fmt::format("'{}': n must be an integer from 1 to 1e6", text));
+  return {parseNumber(text.substr(0, c1), option) * scale,
+          parseNumber(text.substr(c1 + 1, c2 - c1 - 1), option) * scale, static_cast<int>(n)};
+}
+
+gaits::ImpactGrid parseGrid(const ImpactMapOptions& o, const dynamics::Model& model) {
+  gaits::ImpactGrid grid;
+  grid.axes = {parseRange(o.step_lengths, "--step-lengths", 1.0),
+               parseRange(o.knee_bias, "--knee-bias", kDeg),
+               parseRange(o.approach_angles, "--approach-angles", kDeg)};
+  grid.approach_speed = o.approach_speed;
+  if (model.legLinks() != 2)
+    throw config::ConfigError(o.robot_path, "links", 0,
+                              fmt::format("impact-map (Mu ch. 5) needs legs of thigh and shank; "
+                                          "robot '{}' has {} link(s) per leg",
+                                          model.name(), model.legLinks()));
+  try {
+    gaits::checkImpactGrid(model, grid);
+  } catch (const std::invalid_argument& e) {
+    throw config::ConfigError("command line", "", 0, e.what());
+  }
+  return grid;
+}
+
+/// "impact-map [#########...........]  45% 18900/42000" on one stderr line.
+void drawProgress(size_t done, size_t total) {
+  constexpr int kWidth = 30;
+  const int filled = static_cast<int>(kWidth * done / std::max<size_t>(total, 1));
+  fmt::print(stderr, "\rimpact-map [{}{}] {:3d}% {}/{}", std::string(filled, '#'),
+             std::string(kWidth - filled, '.'), 100 * done / std::max<size_t>(total, 1), done,
+             total);
+  if (done == total) fmt::print(stderr, "\n");
+  std::fflush(stderr);
+}
+
+void printResult(const nlohmann::ordered_json& summary) {
+  const auto& c = summary["counts"];
+  fmt::print("impact-map: single {}, double {}, either {}, neither {} of {} points\n",
+             c["single"].get<long>(), c["double"].get<long>(), c["either"].get<long>(),
+             c["neither"].get<long>(), summary["points"].get<long>());
+  const auto& ref = summary["reference"];
+  fmt::print("impact-map: through {} ({}):\n", ref["through"].dump(),
+             ref["type"].get<std::string>());
+  for (const auto& [axis, changes] : ref["changes"].items())
+    for (const auto& ch : changes)
+      fmt::print("  along {}: {} -> {} at {:.4g}\n", axis, ch["from"].get<std::string>(),
+                 ch["to"].get<std::string>(), ch["at"].get<double>());
+}
+
+}  // namespace
+
+void runImpactMap(const ImpactMapOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const dynamics::Model model = dynamics::loadRobot(options.robot_path);
+  const gaits::ImpactGrid grid = parseGrid(options, model);
+  const int jobs = options.jobs > 0
+                       ? options.jobs
+                       : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  fmt::print("impact-map: {} on {} points with {} job(s)\n", model.name(), grid.size(), jobs);
+  std::fflush(stdout);
+  const gaits::ImpactMap map = gaits::sweepImpactMap(
+      model, grid, jobs, options.quiet ? gaits::ProgressFn{} : gaits::ProgressFn{drawProgress});
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  std::filesystem::create_directories(options.out_dir);
+  writeImpactMapCsv(map, options.out_dir + "/impact_map.csv");
+  auto summary = impactMapSummary(map, model);
+  summary["jobs"] = jobs;
+  summary["wall_time_s"] = elapsed;
+  gaits::writeJsonFile(summary, options.out_dir + "/summary.json");
+  printResult(summary);
+  if (options.plots) runPlotScript("impact_map.py", fmt::format("'{}'", options.out_dir));
+  fmt::print("impact-map: wrote {}/impact_map.csv and summary.json in {:.2f} s\n", options.out_dir,
+             elapsed);
+}
+
+void registerImpactMapCommand(CLI::App& app) {
+  auto options = std::make_shared<ImpactMapOptions>();
+  CLI::App* cmd =
+      app.add_subcommand("impact-map",
+                         "Map single/double impact over step length, knee bias and approach angle "
+                         "(Mu 2004 ch. 5)");
+  cmd->add_option("--robot", options->robot_path, "Robot YAML (configs/robots/*.yaml)")
+      ->required()
+      ->option_text("FILE");
+  cmd->add_option("--out", options->out_dir, "Result folder (created)")
+      ->required()
+      ->option_text("DIR");
+  cmd->add_option("--step-lengths", options->step_lengths,
+                  "Tip distance at touchdown [m] (Mu's S_L / 2), a:b:n or a")
+      ->capture_default_str();
+  cmd->add_option("--knee-bias", options->knee_bias,
+                  "Stance knee bias sigma = theta1 - theta2 [deg], in (0, 180)")
+      ->capture_default_str();
+  cmd->add_option("--approach-angles", options->approach_angles,
+                  "Swing-tip velocity angle alpha from the -x axis [deg], in (0, 180)")
+      ->capture_default_str();
+  cmd->add_option("--approach-speed", options->approach_speed,
+                  "Swing-tip speed V_e [m/s] (scales the impulses only)")
+      ->capture_default_str();
+  cmd->add_option("--jobs", options->jobs, "Worker threads (default: all cores)")
+      ->check(CLI::Range(1, 1024));
+  cmd->add_flag("--quiet", options->quiet, "No progress bar");
+  cmd->add_flag("!--no-plots", options->plots, "Skip the picture");
+  cmd->footer("Exit codes: 0 ok, 2 bad robot file, range or usage, 1 other failure.");
+  cmd->callback([options] { runSubcommand([&] { runImpactMap(*options); }); });
+}
+
+}  // namespace gaitopt::apps

@@ -1,0 +1,145 @@
+#!/usr/bin/python3
+"""Draws the impact-type map of `gaitopt impact-map` after Mu (2004) ch. 5.
+
+Usage: impact_map.py RESULT_DIR
+Reads RESULT_DIR/impact_map.csv and writes RESULT_DIR/impact_map.png, printing its path:
+  top row     impact type over (S_L, alpha) at four knee biases sigma (Figs. 5.2, 5.3a-b)
+  bottom row  impact type over (sigma, alpha) at S_L 1.0 m and 1.8 m (Fig. 5.3c-d); |mu_S| contours
+              in the single region (Fig. 5.7) and |mu_L|, |mu_R| contours in the double region
+              (Fig. 5.4), both over (S_L, alpha) at one sigma
+S_L is Mu's step length, twice the tip distance `step_length` of the CSV (DESIGN.md sec. 3).
+A panel whose axes have fewer than two grid values is left out. A missing file or column, or a
+malformed value, ends the script with exit code 1.
+"""
+import csv
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from matplotlib.colors import ListedColormap  # noqa: E402
+from matplotlib.patches import Patch  # noqa: E402
+
+DPI = 110
+TYPES = ["single", "double", "either", "neither"]
+TYPE_COLOURS = ["#9ecae1", "#fd8d3c", "#74c476", "#969696"]
+TYPE_LABELS = ["single", "double", "either (P_ly > 0 and ydot_b > 0)",
+               "neither (P_ly < 0 and ydot_b < 0)"]
+NUMBERS = ["mu_SL", "knee_bias_deg", "approach_angle_deg", "P_ly", "ydot_b", "mu_L", "mu_R",
+           "mu_S"]
+RATIO_LEVELS = [0.1, 0.2, 0.3, 0.5, 1.0, 2.0]
+SIGMA_SLICES = [1, 15, 30, 45]  # deg, Figs. 5.2-5.3 and 5.6
+SL_SLICES = [1.0, 1.8]  # m, Fig. 5.3(c), (d)
+
+
+class InputError(Exception):
+    """A missing or malformed input file; the message names the file and what is wrong."""
+
+
+def read_map(path):
+    """Returns (axes: the three sorted axis value arrays, cube: name -> array over the grid)."""
+    try:
+        with open(path, encoding="utf-8", newline="") as f:
+            rows = list(csv.DictReader(f))
+    except OSError as e:
+        raise InputError(f"{path}: cannot read the map ({e.strerror})") from e
+    if not rows:
+        raise InputError(f"{path}: no data rows")
+    for name in NUMBERS + ["type"]:
+        if name not in rows[0]:
+            raise InputError(f"{path}: missing column '{name}'")
+    try:
+        cols = {name: np.array([float(r[name]) for r in rows]) for name in NUMBERS}
+    except ValueError as e:
+        raise InputError(f"{path}: malformed number ({e})") from e
+    unknown = {r["type"] for r in rows} - set(TYPES)
+    if unknown:
+        raise InputError(f"{path}: column 'type': unknown value '{sorted(unknown)[0]}'")
+    cols["type"] = np.array([TYPES.index(r["type"]) for r in rows], dtype=float)
+    axes = [np.unique(cols[name]) for name in NUMBERS[:3]]
+    shape = tuple(len(a) for a in axes)
+    if np.prod(shape) != len(rows):
+        raise InputError(f"{path}: {len(rows)} rows do not fill a {shape} grid")
+    # Rows come with alpha fastest and step length slowest (gaits/impact_map.hpp).
+    return axes, {name: v.reshape(shape) for name, v in cols.items()}
+
+
+def nearest(values, target):
+    return int(np.argmin(np.abs(values - target)))
+
+
+def type_panel(ax, x, y, types, xlabel, title):
+    cmap = ListedColormap(TYPE_COLOURS)
+    ax.pcolormesh(x, y, types.T, cmap=cmap, vmin=-0.5, vmax=3.5, shading="nearest")
+    ax.set(xlabel=xlabel, ylabel="alpha [deg]", title=title)
+
+
+def ratio_panel(ax, x, y, fields, title):
+    """Contours of |ratio| where its impact type holds; fields = [(label, ratio, mask, colour)]."""
+    for label, ratio, mask, colour in fields:
+        z = np.where(mask, np.abs(ratio), np.nan)
+        ax.contourf(x, y, mask.T.astype(float), levels=[0.5, 1.5], colors=[colour], alpha=0.25)
+        if np.isfinite(z).sum() >= 4:
+            cs = ax.contour(x, y, z.T, levels=RATIO_LEVELS, colors=[colour], linewidths=1)
+            ax.clabel(cs, fontsize=7, fmt=f"{label} %.1f")
+    ax.set(xlabel="S_L [m]", ylabel="alpha [deg]", title=title)
+
+
+def draw(axes, cube):
+    sl, sigma, alpha = axes
+    have = [len(a) >= 2 for a in axes]
+    fig, grid = plt.subplots(2, 4, figsize=(17, 8.5), squeeze=False)
+    for ax in grid.flat:
+        ax.set_visible(False)
+    if have[0] and have[2]:
+        for ax, target in zip(grid[0], SIGMA_SLICES):
+            k = nearest(sigma, target)
+            ax.set_visible(True)
+            type_panel(ax, sl, alpha, cube["type"][:, k, :], "S_L [m]",
+                       f"sigma = {sigma[k]:g} deg")
+        k = nearest(sigma, 20)
+        single = cube["type"][:, k, :] == 0
+        grid[1, 2].set_visible(True)
+        ratio_panel(grid[1, 2], sl, alpha, [("mu_S", cube["mu_S"][:, k, :], single, "tab:blue")],
+                    f"|mu_S| (single region), sigma = {sigma[k]:g} deg")
+        k = nearest(sigma, 5)
+        double = cube["type"][:, k, :] == 1
+        grid[1, 3].set_visible(True)
+        ratio_panel(grid[1, 3], sl, alpha,
+                    [("mu_L", cube["mu_L"][:, k, :], double, "tab:red"),
+                     ("mu_R", cube["mu_R"][:, k, :], double, "tab:purple")],
+                    f"|mu_L|, |mu_R| (double), sigma = {sigma[k]:g} deg")
+    if have[1] and have[2]:
+        for ax, target in zip(grid[1, :2], SL_SLICES):
+            i = nearest(sl, target)
+            ax.set_visible(True)
+            type_panel(ax, sigma, alpha, cube["type"][i, :, :], "sigma [deg]",
+                       f"S_L = {sl[i]:g} m")
+    counts = [int((cube["type"] == t).sum()) for t in range(4)]
+    fig.legend(handles=[Patch(color=c, label=f"{lab}: {n}") for c, lab, n in
+                        zip(TYPE_COLOURS, TYPE_LABELS, counts)],
+               loc="lower center", ncol=4, frameon=False)
+    fig.suptitle("Impact type after Mu (2004) ch. 5: torso upright, hip centred (x_h = S_L/4)")
+    fig.tight_layout(rect=(0, 0.05, 1, 0.96))
+    return fig
+
+
+def main(result_dir):
+    axes, cube = read_map(os.path.join(result_dir, "impact_map.csv"))
+    fig = draw(axes, cube)
+    path = os.path.join(result_dir, "impact_map.png")
+    fig.savefig(path, dpi=DPI)
+    plt.close(fig)
+    print(path)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    try:
+        main(sys.argv[1])
+    except InputError as e:
+        sys.exit(f"error: {e}")
