@@ -1,5 +1,6 @@
 #include "apps/optimize_command.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 
@@ -13,6 +14,7 @@
 #include "gaits/consistency.hpp"
 #include "gaits/gait_summary.hpp"
 #include "gaits/hip_plan_search.hpp"
+#include "gaits/metrics.hpp"
 #include "gaits/trajectory_csv.hpp"
 #include "ocp/gait_solve.hpp"
 
@@ -39,6 +41,13 @@ double impactLoss(const ocp::GaitProblem& p, const dynamics::Model& model,
   const VecD dtheta_plus = x.segment(p.impact_offset + 2, n);
   return dynamics::kineticEnergy<double>(model, theta, dtheta) -
          dynamics::kineticEnergy<double>(model, theta, dtheta_plus, base);
+}
+
+/// The worst friction ratio, or why there is none (a tip pulling on the ground).
+nlohmann::ordered_json frictionRatioJson(const gaits::Trajectory& traj) {
+  const double ratio = gaits::maxFrictionRatio(traj);
+  if (std::isfinite(ratio) && gaits::minNormalForce(traj) > 0) return ratio;
+  return "unbounded: a normal force <= 0";
 }
 
 nlohmann::ordered_json meshHistory(const std::vector<ocp::MeshRound>& history) {
@@ -69,8 +78,13 @@ void writeResult(const OptimizeOptions& o, const dynamics::Model& model,
   summary["cost"] = r.cost;  // the solver's objective (the scheme's own quadrature)
   if (problem.impact_offset >= 0) summary["impact_energy_loss_J"] = impactLoss(problem, model, r.x);
   summary["max_violation"] = r.max_violation;
-  // Between collocation points the interpolated trajectory only approximates the dynamics.
-  summary["max_defect_between_nodes"] = gaits::maxDynamicsResidual(dense, model);
+  // The constraints hold at the collocation points; the dense export shows how far they are
+  // missed between them.
+  summary["between_nodes"] = {{"max_dynamics_defect", gaits::maxDynamicsResidual(dense, model)},
+                              {"min_normal_force", gaits::minNormalForce(dense)},
+                              {"max_friction_ratio", frictionRatioJson(dense)},
+                              {"min_zmp_margin", gaits::minZmpMargin(dense, model)},
+                              {"rate_hz", o.output.rate_hz}};
   summary["nlp"] = {{"variables", problem.nlp.variables()},
                     {"constraints", problem.nlp.constraints()},
                     {"segments", solution.history.back().segments},

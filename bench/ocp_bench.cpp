@@ -1,7 +1,8 @@
 /// @file ocp_bench.cpp
-/// Solve times from the polynomial guess, exact Hessian versus Ipopt's limited-memory
-/// approximation: the default five-link problem (configs/ocp/mu2004_walk.yaml: SSP 30 + DSP 6
-/// Hermite-Simpson segments, double impact) and the RABBIT benchmark of Kelly 2017
+/// Solve times from the polynomial guess, exact derivatives versus Ipopt's limited-memory
+/// Hessian, with our Jacobian or with Ipopt's finite differences of the constraints: the
+/// default five-link problem (configs/ocp/mu2004_walk.yaml: SSP 30 + DSP 6 Hermite-Simpson
+/// segments, double impact) and the RABBIT benchmark of Kelly 2017
 /// (configs/ocp/rabbit_kelly2017.yaml) at 6, 15 and 25 segments. Each case is solved `repeats`
 /// times; the table gives medians and the ratio of each median wall time to the exact-Hessian
 /// one of the same problem.
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -52,19 +54,27 @@ gaits::Trajectory guessFor(const dynamics::Model& model, const ocp::OcpConfig& c
   return gaits::buildTrajectory(gait, model, 1000);
 }
 
-/// One table row per Hessian mode for `config` with the SSP cut into `segments`.
+/// Derivatives handed to Ipopt: (Hessian, Jacobian).
+const std::vector<std::pair<std::string, std::string>> kDerivativeModes = {
+    {"exact", "exact"},
+    {"limited-memory", "exact"},
+    {"limited-memory", "finite-difference-values"}};
+
+/// One table row per derivative mode for `config` with the SSP cut into `segments`.
 void benchmark(const std::string& label, ocp::OcpConfig config, int segments, int repeats) {
   const auto model = dynamics::loadRobot(config.robot_path);
   const gaits::Trajectory guess = guessFor(model, config);
   config.phases.front().segments = segments;
   double exact_wall = 0;
-  for (const std::string hessian : {"exact", "limited-memory"}) {
+  for (const auto& [hessian, jacobian] : kDerivativeModes) {
     config.solver.hessian = hessian;
+    config.solver.jacobian = jacobian;
     const Row r = run(config, model, guess, repeats);
-    if (hessian == "exact") exact_wall = r.wall;
-    fmt::print("| {} | {} | {} | {} | {} | {:.4f} | {:.4f} | {:.4f} | {:.0f} % | {:.2f} |\n", label,
-               segments, hessian, r.last.status, r.last.iterations, r.last.cost, r.wall,
-               r.callbacks, 100 * r.callbacks / r.wall, r.wall / exact_wall);
+    if (exact_wall == 0) exact_wall = r.wall;
+    fmt::print("| {} | {} | {} | {} | {} | {} | {:.4f} | {:.4f} | {:.4f} | {:.0f} % | {:.2f} |\n",
+               label, segments, hessian, jacobian == "exact" ? "exact" : "finite differences",
+               r.last.status, r.last.iterations, r.last.cost, r.wall, r.callbacks,
+               100 * r.callbacks / r.wall, r.wall / exact_wall);
   }
 }
 
@@ -78,9 +88,9 @@ int main(int argc, char** argv) {
   fmt::print("Hermite-Simpson, Ipopt tol {:g}, {} solves per row, medians\n\n",
              five_link.solver.tolerance, repeats);
   fmt::print(
-      "| problem | SSP segments | Hessian | status | iterations | cost J | wall s | "
+      "| problem | SSP segments | Hessian | Jacobian | status | iterations | cost J | wall s | "
       "callbacks s | callback share | wall / exact |\n"
-      "|---|---:|---|---|---:|---:|---:|---:|---:|---:|\n");
+      "|---|---:|---|---|---|---:|---:|---:|---:|---:|---:|\n");
   benchmark("five-link SSP+DSP (mu2004_walk)", five_link, five_link.phases.front().segments,
             repeats);
   for (int segments : {6, 15, 25}) benchmark("RABBIT (Kelly 2017)", rabbit, segments, repeats);

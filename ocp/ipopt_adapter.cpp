@@ -185,6 +185,9 @@ SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options) {
   app->Options()->SetNumericValue("tol", options.tolerance);
   app->Options()->SetIntegerValue("max_iter", options.max_iterations);
   app->Options()->SetStringValue("hessian_approximation", options.hessian);
+  app->Options()->SetStringValue("jacobian_approximation", options.jacobian == "exact"
+                                                               ? "exact"
+                                                               : options.jacobian);
   app->Options()->SetStringValue("linear_solver", options.linear_solver);
   app->Options()->SetStringValue("mu_strategy", options.mu_strategy);
   app->Options()->SetNumericValue("mu_init", options.mu_init);

@@ -15,6 +15,9 @@ struct SolverOptions {
   double tolerance = 1e-6;               ///< Ipopt tol
   int max_iterations = 500;              ///< Ipopt max_iter
   std::string hessian = "exact";         ///< "exact" or "limited-memory"
+  /// "exact", or "finite-difference-values": Ipopt differences the constraints itself on our
+  /// sparsity pattern (for comparison only)
+  std::string jacobian = "exact";
   std::string linear_solver = "mumps";   ///< Debian's Ipopt ships MUMPS
   std::string mu_strategy = "adaptive";  ///< barrier update: "monotone" or "adaptive"
   double mu_init = 0.1;                  ///< initial barrier parameter

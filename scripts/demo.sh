@@ -37,13 +37,19 @@ echo "== gaitopt optimize: the default five-link problem from the polynomial gai
 echo "== gaitopt optimize: the RABBIT benchmark of Kelly (2017)"
 "$bin" optimize --config configs/ocp/rabbit_kelly2017.yaml --out results/opt_rabbit --quiet
 
-echo "== polynomial (A) versus optimal (B) gait of the five-link robot"
+echo "== gaitopt optimize: least cost of transport, free single/double support split"
+"$bin" optimize --config configs/ocp/mu2004_walk_cot.yaml --out results/opt_cot_mu2004 --quiet
+
+echo "== polynomial (A) versus torque-squared optimal (B) gait of the five-link robot"
 /usr/bin/python3 scripts/compare_gaits.py results/poly_mu2004 results/opt_mu2004 \
   results/poly_vs_opt_mu2004.md
+echo "== polynomial (A) versus least-cost-of-transport (B) gait of the five-link robot"
+/usr/bin/python3 scripts/compare_gaits.py results/poly_mu2004 results/opt_cot_mu2004 \
+  results/poly_vs_cot_mu2004.md
 
 echo "Results are in $root/results/:"
 echo "  inspect/*.json          robot models and dynamics at a posture"
 echo "  convention.png          angle convention"
 echo "  poly_mu2004/            polynomial gait: trajectory.csv (1 kHz), summary.json, *.png"
-echo "  opt_mu2004/, opt_rabbit/  optimal gaits, same files"
-echo "  poly_vs_opt_mu2004.md   the comparison table above"
+echo "  opt_mu2004/, opt_rabbit/, opt_cot_mu2004/  optimal gaits, same files"
+echo "  poly_vs_opt_mu2004.md, poly_vs_cot_mu2004.md  the comparison tables above"
