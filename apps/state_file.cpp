@@ -30,9 +30,11 @@ constexpr std::array<VectorKey, 3> kKeys{{{"theta", "absolute link angles [rad]"
                                           {"dtheta", "absolute link rates [rad/s]", false},
                                           {"ddtheta", "link accelerations [rad/s^2]", false}}};
 
-/// A short rendering of a JSON value for error messages.
+/// A short rendering of a JSON value for error messages. Only scalars are dumped: dumping a
+/// container recurses once per nesting level and overflows the stack on a deeply nested file.
 std::string describe(const json& value) {
   if (value.is_array()) return fmt::format("an array of {} elements", value.size());
+  if (value.is_object()) return fmt::format("an object with {} keys", value.size());
   if (value.is_null()) return "null";
   std::string text = value.dump(-1, ' ', false, json::error_handler_t::replace);
   if (text.size() > 40) text = text.substr(0, 37) + "...";

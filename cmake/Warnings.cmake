@@ -7,3 +7,10 @@ if(GAITOPT_SANITIZE)
     -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
   target_link_options(gaitopt_options INTERFACE -fsanitize=address,undefined)
 endif()
+if(GAITOPT_FUZZ)
+  # Coverage feedback for libFuzzer in every gaitopt library; fuzz/ links the fuzzer driver.
+  target_compile_options(gaitopt_options INTERFACE
+    -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer
+    -fno-sanitize-recover=all)
+  target_link_options(gaitopt_options INTERFACE -fsanitize=address,undefined)
+endif()

@@ -74,6 +74,7 @@ bool parseFinite(const std::string& text, double& value) {
 
 std::string describeNode(const YAML::Node& n) {
   if (n.IsScalar()) return "'" + n.Scalar() + "'";
+  if (n.IsNull()) return "an empty value (null)";
   return n.IsMap() ? "a mapping" : "a sequence";
 }
 
@@ -154,7 +155,10 @@ std::vector<YamlReader> YamlReader::list(const std::string& key) const {
 
 void YamlReader::allowOnly(const std::vector<std::string>& allowed) const {
   for (const auto& kv : node_) {
-    const std::string key = kv.first.as<std::string>();
+    if (!kv.first.IsScalar())
+      throw ConfigError(file_, path_, lineOf(kv.first),
+                        "expected a plain key, got " + describeNode(kv.first) + " as a key");
+    const std::string key = kv.first.Scalar();
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
       throw ConfigError(file_, keyPath(key), lineOf(kv.first),
                         fmt::format("unknown key; allowed here: {}", fmt::join(allowed, ", ")));

@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages gaitopt needs, only those that are missing.
 # Idempotent: a machine that has everything runs no apt-get at all.
+# Usage: scripts/install-deps.sh [--fuzz]
+#   --fuzz  also clang and libFuzzer (libclang-rt-14-dev), for scripts/fuzz.sh only: make demo
+#           and make test build with GCC and never need them.
 set -euo pipefail
 
 packages=(
@@ -11,6 +14,13 @@ packages=(
   libboost-dev
   python3 python3-matplotlib python3-numpy
 )
+fuzz_packages=(clang libclang-rt-14-dev)
+
+case "${1:-}" in
+  "") ;;
+  --fuzz) packages+=("${fuzz_packages[@]}") ;;
+  *) echo "usage: $0 [--fuzz]" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

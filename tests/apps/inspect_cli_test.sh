@@ -62,4 +62,13 @@ run inspect --robot "$ROBOT" --state "$TMP/short.json"
 grep -q "error:" "$TMP/err" || fail "(d) stderr lacks 'error:': $(cat "$TMP/err")"
 grep -qF "'theta'" "$TMP/err" || fail "(d) stderr does not name the key theta: $(cat "$TMP/err")"
 
+# (e) theta as a deeply nested object: exit 2, naming the key. Found with fuzz/state_json_fuzz:
+# the error message dumped the value, recursing once per level until the stack overflowed.
+"$PY" -c 'n = 100000; print("{\"theta\": " + "{\"a\": " * n + "1" + "}" * n + "}")' \
+  >"$TMP/deep.json"
+run inspect --robot "$ROBOT" --state "$TMP/deep.json"
+[[ $RC -eq 2 ]] || fail "(e) deeply nested theta: exit code $RC, expected 2"
+grep -qF "key 'theta': expected an array of 5 numbers" "$TMP/err" ||
+  fail "(e) stderr does not name the key theta: $(cat "$TMP/err")"
+
 echo "inspect_cli_test: all checks passed"

@@ -116,6 +116,23 @@ TEST_F(BadRobotFile, MalformedYamlReportsLine) {
   EXPECT_NE(msg.find("not valid YAML"), std::string::npos) << msg;
 }
 
+// Found by fuzz/robot_yaml_fuzz: a key that is not a plain scalar escaped the reader as
+// YAML::TypedBadConversion instead of a ConfigError.
+TEST_F(BadRobotFile, MappingAsKey) {
+  const std::string msg =
+      errorOf(write("{name: stance_knee,", "{{velocit: true}: 10, name: stance_knee,"));
+  EXPECT_NE(msg.find("key 'joints[1]': expected a plain key, got a mapping as a key"),
+            std::string::npos)
+      << msg;
+}
+
+TEST_F(BadRobotFile, NullKey) {
+  const std::string msg = errorOf(write("friction: 0.6\n", "friction: 0.6\n~: 1\n"));
+  EXPECT_TRUE(std::regex_search(
+      msg, std::regex(R"(\.yaml:\d+: expected a plain key, got an empty value \(null\) as a key)")))
+      << msg;
+}
+
 TEST_F(BadRobotFile, MissingFile) {
   const std::string msg = errorOf("/nonexistent/robot.yaml");
   EXPECT_NE(msg.find("/nonexistent/robot.yaml: file not found"), std::string::npos) << msg;
