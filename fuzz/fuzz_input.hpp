@@ -21,8 +21,7 @@ namespace gaitopt::fuzz {
 /// Replaces the content of this process's input file by `data`; returns the file's path.
 inline std::string writeInput(const uint8_t* data, size_t size) {
   static const int fd = memfd_create("gaitopt-fuzz-input", 0);
-  if (fd < 0 || ftruncate(fd, 0) != 0 ||
-      pwrite(fd, data, size, 0) != static_cast<ssize_t>(size)) {
+  if (fd < 0 || ftruncate(fd, 0) != 0 || pwrite(fd, data, size, 0) != static_cast<ssize_t>(size)) {
     std::perror("fuzz harness: cannot write the input file");
     std::abort();
   }
