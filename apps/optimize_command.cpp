@@ -13,22 +13,19 @@
 #include "dynamics/robot_config.hpp"
 #include "gaits/consistency.hpp"
 #include "gaits/gait_summary.hpp"
-#include "gaits/hip_plan_search.hpp"
 #include "gaits/metrics.hpp"
 #include "gaits/trajectory_csv.hpp"
 #include "ocp/gait_solve.hpp"
+#include "ocp/initial_guess.hpp"
 
 namespace gaitopt::apps {
 namespace {
 
-/// A previous result (warm start), or the polynomial gait named by the config with its free hip
-/// parameters chosen by NLopt.
+/// A previous result (warm start), or the config's polynomial gait.
 gaits::Trajectory initialGuess(const dynamics::Model& model, const ocp::OcpConfig& config,
                                const std::string& warm_start) {
   if (!warm_start.empty()) return gaits::readTrajectoryCsv(warm_start + "/trajectory.csv", model);
-  const gaits::GaitParams params = gaits::loadGait(config.guess_gait_path);
-  const gaits::HipPlanSearch search = gaits::searchHipPlan(model, params);
-  return gaits::buildTrajectory(gaits::PolynomialGait(model, params, search.plan), model, 1000);
+  return ocp::polynomialGuess(model, config);
 }
 
 /// Kinetic energy lost in the strike, from the solution's own impact variables [J].

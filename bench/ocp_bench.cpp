@@ -16,8 +16,8 @@
 #include <fmt/format.h>
 
 #include "dynamics/robot_config.hpp"
-#include "gaits/hip_plan_search.hpp"
 #include "ocp/gait_problem.hpp"
+#include "ocp/initial_guess.hpp"
 #include "ocp/ipopt_adapter.hpp"
 
 namespace {
@@ -47,13 +47,6 @@ Row run(const ocp::OcpConfig& c, const dynamics::Model& model, const gaits::Traj
   return {r, median(wall), median(callbacks)};
 }
 
-/// The config's polynomial gait with its hip plan chosen as `gaitopt optimize` does.
-gaits::Trajectory guessFor(const dynamics::Model& model, const ocp::OcpConfig& c) {
-  const auto params = gaits::loadGait(c.guess_gait_path);
-  const gaits::PolynomialGait gait(model, params, gaits::searchHipPlan(model, params).plan);
-  return gaits::buildTrajectory(gait, model, 1000);
-}
-
 /// Derivatives handed to Ipopt: (Hessian, Jacobian).
 const std::vector<std::pair<std::string, std::string>> kDerivativeModes = {
     {"exact", "exact"},
@@ -63,7 +56,7 @@ const std::vector<std::pair<std::string, std::string>> kDerivativeModes = {
 /// One table row per derivative mode for `config` with the SSP cut into `segments`.
 void benchmark(const std::string& label, ocp::OcpConfig config, int segments, int repeats) {
   const auto model = dynamics::loadRobot(config.robot_path);
-  const gaits::Trajectory guess = guessFor(model, config);
+  const gaits::Trajectory guess = ocp::polynomialGuess(model, config);
   config.phases.front().segments = segments;
   double exact_wall = 0;
   for (const auto& [hessian, jacobian] : kDerivativeModes) {

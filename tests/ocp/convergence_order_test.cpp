@@ -8,8 +8,8 @@
 #include <fmt/format.h>
 
 #include "dynamics/robot_config.hpp"
-#include "gaits/polynomial_gait.hpp"
 #include "ocp/gait_problem.hpp"
+#include "ocp/initial_guess.hpp"
 #include "ocp/ipopt_adapter.hpp"
 
 namespace gaitopt::ocp {
@@ -18,10 +18,7 @@ namespace {
 double observedOrder(Scheme scheme, int coarsest) {
   auto c = loadOcpConfig(std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/rabbit_kelly2017.yaml");
   const auto model = dynamics::loadRobot(c.robot_path);
-  const auto gp = gaits::loadGait(c.guess_gait_path);
-  const gaits::PolynomialGait gait(
-      model, gp, {*gp.hip_velocity_start, *gp.hip_velocity_touchdown, *gp.hip_dsp_start});
-  const gaits::Trajectory guess = gaits::buildTrajectory(gait, model, 1000);
+  const gaits::Trajectory guess = polynomialGuess(model, c);
   c.scheme = scheme;
   c.solver.tolerance = 1e-10;  // solver error far below the discretisation error
   std::vector<double> cost;

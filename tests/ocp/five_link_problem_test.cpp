@@ -12,10 +12,10 @@
 #include "dynamics/relabel.hpp"
 #include "dynamics/robot_config.hpp"
 #include "gaits/consistency.hpp"
-#include "gaits/hip_plan_search.hpp"
 #include "gaits/metrics.hpp"
 #include "ocp/collocation_interpolation.hpp"
 #include "ocp/gait_problem.hpp"
+#include "ocp/initial_guess.hpp"
 #include "ocp/ipopt_adapter.hpp"
 #include "support/chain_simulation.hpp"
 #include "support/nlp_derivatives.hpp"
@@ -25,18 +25,12 @@ namespace {
 
 const std::string kConfig = std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/mu2004_walk.yaml";
 
-gaits::Trajectory muGuess(const dynamics::Model& model, const OcpConfig& c) {
-  const auto params = gaits::loadGait(c.guess_gait_path);
-  const gaits::PolynomialGait gait(model, params, gaits::searchHipPlan(model, params).plan);
-  return gaits::buildTrajectory(gait, model, 1000);
-}
-
 TEST(FiveLinkProblem, JacobianAndLagrangianHessianEqualCentralDifferences) {
   auto c = loadOcpConfig(kConfig);
   c.phases.front().segments = 2;  // small: every column is differenced
   c.phases.back().segments = 1;
   const auto model = dynamics::loadRobot(c.robot_path);
-  const GaitProblem p = buildGaitProblem(model, c, muGuess(model, c));
+  const GaitProblem p = buildGaitProblem(model, c, polynomialGuess(model, c));
   const test::DerivativeErrors e = test::compareWithCentralDifferences(p.nlp, 0.02);
   RecordProperty("jacobian_relative_error", fmt::format("{:.2e}", e.jacobian));
   RecordProperty("hessian_relative_error", fmt::format("{:.2e}", e.hessian));
@@ -58,7 +52,7 @@ TEST(FiveLinkProblem, FreeDurationsUnequalMeshAndCostOfTransportHaveExactDerivat
   c.step_duration = 0.7;
   c.cost = CostWeights{.torque_squared = 1e-3, .cost_of_transport = 1.0};
   const auto model = dynamics::loadRobot(c.robot_path);
-  const GaitProblem p = buildGaitProblem(model, c, muGuess(model, c));
+  const GaitProblem p = buildGaitProblem(model, c, polynomialGuess(model, c));
   ASSERT_TRUE(p.ssp.freeDuration() && p.dsp->freeDuration());
   const test::DerivativeErrors e = test::compareWithCentralDifferences(p.nlp, 0.02);
   EXPECT_LT(e.jacobian, 1e-6);
@@ -71,7 +65,7 @@ class FiveLinkSolution : public ::testing::Test {
   static void SetUpTestSuite() {
     config_ = new OcpConfig(loadOcpConfig(kConfig));
     model_ = new dynamics::Model(dynamics::loadRobot(config_->robot_path));
-    guess_ = new gaits::Trajectory(muGuess(*model_, *config_));
+    guess_ = new gaits::Trajectory(polynomialGuess(*model_, *config_));
     problem_ = new GaitProblem(buildGaitProblem(*model_, *config_, *guess_));
     result_ = new SolveResult(solveWithIpopt(problem_->nlp, config_->solver));
     traj_ = new gaits::Trajectory(reconstruct(*problem_, *model_, result_->x));

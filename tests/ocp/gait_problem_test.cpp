@@ -11,9 +11,9 @@
 #include "dynamics/robot_config.hpp"
 #include "dynamics/ssp_dynamics.hpp"
 #include "gaits/metrics.hpp"
-#include "gaits/polynomial_gait.hpp"
 #include "ocp/collocation_interpolation.hpp"
 #include "ocp/gait_problem.hpp"
+#include "ocp/initial_guess.hpp"
 #include "ocp/ipopt_adapter.hpp"
 #include "support/chain_simulation.hpp"
 #include "support/nlp_derivatives.hpp"
@@ -22,13 +22,6 @@ namespace gaitopt::ocp {
 namespace {
 
 const std::string kConfig = std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/rabbit_kelly2017.yaml";
-
-gaits::Trajectory polynomialGuess(const dynamics::Model& model, const OcpConfig& c) {
-  const auto gp = gaits::loadGait(c.guess_gait_path);
-  const gaits::PolynomialGait gait(
-      model, gp, {*gp.hip_velocity_start, *gp.hip_velocity_touchdown, *gp.hip_dsp_start});
-  return gaits::buildTrajectory(gait, model, 1000);
-}
 
 TEST(RabbitGaitProblem, JacobianAndLagrangianHessianEqualCentralDifferences) {
   auto c = loadOcpConfig(kConfig);

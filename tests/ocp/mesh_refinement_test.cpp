@@ -5,8 +5,8 @@
 #include <fmt/format.h>
 
 #include "dynamics/robot_config.hpp"
-#include "gaits/hip_plan_search.hpp"
 #include "ocp/gait_solve.hpp"
+#include "ocp/initial_guess.hpp"
 
 namespace gaitopt::ocp {
 namespace {
@@ -16,9 +16,7 @@ const std::string kConfig = std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/mu20
 TEST(MeshRefinement, FiveLinkErrorFallsBelowToleranceAndTheCostConverges) {
   OcpConfig c = loadOcpConfig(kConfig);
   const auto model = dynamics::loadRobot(c.robot_path);
-  const auto params = gaits::loadGait(c.guess_gait_path);
-  const gaits::Trajectory guess = gaits::buildTrajectory(
-      gaits::PolynomialGait(model, params, gaits::searchHipPlan(model, params).plan), model, 1000);
+  const gaits::Trajectory guess = polynomialGuess(model, c);
   c.refinement = {.tolerance = 2e-3, .max_rounds = 4};
   const GaitSolution refined = solveGait(model, c, guess);
   const auto& h = refined.history;

@@ -6,8 +6,8 @@
 #include <fmt/format.h>
 
 #include "dynamics/robot_config.hpp"
-#include "gaits/hip_plan_search.hpp"
 #include "ocp/gait_solve.hpp"
+#include "ocp/initial_guess.hpp"
 #include "sim/hybrid_walk.hpp"
 #include "sim/poincare.hpp"
 
@@ -21,9 +21,7 @@ class FiveLinkWalk : public ::testing::Test {
   static void SetUpTestSuite() {
     const auto config = ocp::loadOcpConfig(kOcp);
     model_ = new dynamics::Model(dynamics::loadRobot(config.robot_path));
-    const auto params = gaits::loadGait(config.guess_gait_path);
-    const gaits::PolynomialGait gait(*model_, params, gaits::searchHipPlan(*model_, params).plan);
-    poly_ = new gaits::Trajectory(gaits::buildTrajectory(gait, *model_, 1000));
+    poly_ = new gaits::Trajectory(ocp::polynomialGuess(*model_, config));
     const auto solution = ocp::solveGait(*model_, config, *poly_);
     // At its collocation points, where the optimum satisfies the dynamics.
     optimal_ =

@@ -1,0 +1,13 @@
+#include "ocp/initial_guess.hpp"
+
+#include "gaits/hip_plan_search.hpp"
+
+namespace gaitopt::ocp {
+
+gaits::Trajectory polynomialGuess(const dynamics::Model& model, const OcpConfig& config) {
+  const gaits::GaitParams params = gaits::loadGait(config.guess_gait_path);
+  const gaits::HipPlanSearch search = gaits::searchHipPlan(model, params);
+  return gaits::buildTrajectory(gaits::PolynomialGait(model, params, search.plan), model, 1000);
+}
+
+}  // namespace gaitopt::ocp
