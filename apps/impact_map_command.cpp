@@ -5,13 +5,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
-#include <thread>
 
 #include <fmt/format.h>
 
 #include "apps/command_runner.hpp"
 #include "apps/impact_map_report.hpp"
 #include "apps/plotting.hpp"
+#include "apps/progress_bar.hpp"
+#include "apps/range_option.hpp"
 #include "config/config_error.hpp"
 #include "dynamics/robot_config.hpp"
 #include "gaits/gait_summary.hpp"
@@ -20,37 +21,6 @@ namespace gaitopt::apps {
 namespace {
 
 constexpr double kDeg = M_PI / 180;
-
-double parseNumber(const std::string& text, const std::string& option) {
-  size_t used = 0;
-  double value = NAN;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !std::isfinite(value))
-    throw config::ConfigError(option, "", 0, fmt::format("'{}' is not a finite number", text));
-  return value;
-}
-
-/// "a:b:n" (n evenly spaced values from a to b) or "a" (one value), scaled to internal units.
-gaits::GridAxis parseRange(const std::string& text, const std::string& option, double scale) {
-  const size_t c1 = text.find(':');
-  if (c1 == std::string::npos) {
-    const double v = parseNumber(text, option) * scale;
-    return {v, v, 1};
-  }
-  const size_t c2 = text.find(':', c1 + 1);
-  if (c2 == std::string::npos)
-    throw config::ConfigError(option, "", 0, fmt::format("'{}': expected a:b:n or a", text));
-  const double n = parseNumber(text.substr(c2 + 1), option);
-  if (n != std::floor(n) || n < 1 || n > 1e6)
-    throw config::ConfigError(option, "", 0,
-                              fmt::format("'{}': n must be an integer from 1 to 1e6", text));
-  return {parseNumber(text.substr(0, c1), option) * scale,
-          parseNumber(text.substr(c1 + 1, c2 - c1 - 1), option) * scale, static_cast<int>(n)};
-}
 
 gaits::ImpactGrid parseGrid(const ImpactMapOptions& o, const dynamics::Model& model) {
   gaits::ImpactGrid grid;
@@ -69,17 +39,6 @@ gaits::ImpactGrid parseGrid(const ImpactMapOptions& o, const dynamics::Model& mo
     throw config::ConfigError("command line", "", 0, e.what());
   }
   return grid;
-}
-
-/// "impact-map [#########...........]  45% 18900/42000" on one stderr line.
-void drawProgress(size_t done, size_t total) {
-  constexpr int kWidth = 30;
-  const int filled = static_cast<int>(kWidth * done / std::max<size_t>(total, 1));
-  fmt::print(stderr, "\rimpact-map [{}{}] {:3d}% {}/{}", std::string(filled, '#'),
-             std::string(kWidth - filled, '.'), 100 * done / std::max<size_t>(total, 1), done,
-             total);
-  if (done == total) fmt::print(stderr, "\n");
-  std::fflush(stderr);
 }
 
 void printResult(const nlohmann::ordered_json& summary) {
@@ -102,13 +61,11 @@ void runImpactMap(const ImpactMapOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const dynamics::Model model = dynamics::loadRobot(options.robot_path);
   const gaits::ImpactGrid grid = parseGrid(options, model);
-  const int jobs = options.jobs > 0
-                       ? options.jobs
-                       : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int jobs = parallel::resolveJobs(options.jobs);
   fmt::print("impact-map: {} on {} points with {} job(s)\n", model.name(), grid.size(), jobs);
   std::fflush(stdout);
-  const gaits::ImpactMap map = gaits::sweepImpactMap(
-      model, grid, jobs, options.quiet ? gaits::ProgressFn{} : gaits::ProgressFn{drawProgress});
+  const gaits::ImpactMap map =
+      gaits::sweepImpactMap(model, grid, jobs, progressBar("impact-map", options.quiet));
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

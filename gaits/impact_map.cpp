@@ -1,14 +1,9 @@
 #include "gaits/impact_map.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cmath>
-#include <exception>
-#include <mutex>
 #include <stdexcept>
 #include <string>
-#include <thread>
 
 #include <fmt/format.h>
 
@@ -43,26 +38,6 @@ std::array<int, 3> gridIndex(const ImpactGrid& grid, size_t i) {
   return {static_cast<int>(i / (n1 * n2)), static_cast<int>(i / n2 % n1), static_cast<int>(i % n2)};
 }
 
-/// Takes blocks of kChunk points from `next` (blocks keep the shared counters off the hot path)
-/// and evaluates them into their slots of `map` until all are taken or one fails.
-void work(const dynamics::Model& model, ImpactMap& map, std::atomic<size_t>& next,
-          std::atomic<size_t>& done, std::exception_ptr& error, std::mutex& error_mutex) {
-  constexpr size_t kChunk = 64;
-  const size_t total = map.points.size();
-  for (size_t begin = next.fetch_add(kChunk); begin < total; begin = next.fetch_add(kChunk)) {
-    const size_t end = std::min(begin + kChunk, total);
-    try {
-      for (size_t i = begin; i < end; ++i)
-        map.points[i] = evaluateImpactPoint(model, map.grid.params(gridIndex(map.grid, i)));
-    } catch (...) {
-      const std::lock_guard lock(error_mutex);
-      if (!error) error = std::current_exception();
-      next = total;  // stop every worker
-    }
-    done += end - begin;
-  }
-}
-
 }  // namespace
 
 size_t ImpactGrid::size() const {
@@ -93,24 +68,16 @@ void checkImpactGrid(const dynamics::Model& model, const ImpactGrid& grid) {
 }
 
 ImpactMap sweepImpactMap(const dynamics::Model& model, const ImpactGrid& grid, int jobs,
-                         const ProgressFn& progress) {
+                         const parallel::ProgressFn& progress) {
   checkImpactGrid(model, grid);
-  if (jobs < 1) throw std::invalid_argument(fmt::format("jobs: {} < 1", jobs));
   ImpactMap map{grid, std::vector<ImpactPoint>(grid.size())};
-  std::atomic<size_t> next{0}, done{0};
-  std::exception_ptr error;
-  std::mutex error_mutex;
-  std::vector<std::thread> workers;
-  for (int j = 0; j < jobs; ++j)
-    workers.emplace_back(work, std::cref(model), std::ref(map), std::ref(next), std::ref(done),
-                         std::ref(error), std::ref(error_mutex));
-  while (progress && done < map.points.size() && next < map.points.size()) {
-    progress(done, map.points.size());
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  }
-  for (auto& w : workers) w.join();
-  if (error) std::rethrow_exception(error);
-  if (progress) progress(done, map.points.size());
+  constexpr std::size_t kChunk = 64;  // a point takes microseconds
+  parallel::parallelFor(
+      map.points.size(), jobs,
+      [&](std::size_t i) {
+        map.points[i] = evaluateImpactPoint(model, grid.params(gridIndex(grid, i)));
+      },
+      progress, kChunk);
   return map;
 }
 

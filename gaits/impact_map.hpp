@@ -5,10 +5,10 @@
 /// the places along each axis where the impact type changes.
 #include <array>
 #include <cstddef>
-#include <functional>
 #include <vector>
 
 #include "gaits/impact_point.hpp"
+#include "parallel/parallel_for.hpp"
 
 namespace gaitopt::gaits {
 
@@ -47,14 +47,11 @@ struct ImpactMap {
   const ImpactPoint& at(const std::array<int, 3>& k) const { return points[grid.index(k)]; }
 };
 
-/// Called from the calling thread while the workers run, and once at the end.
-using ProgressFn = std::function<void(size_t done, size_t total)>;
-
 /// Evaluates every grid point with `jobs` std::thread workers (>= 1). The result does not depend
 /// on `jobs`: each point is a pure function of its parameters and has its own slot.
 /// @throws std::invalid_argument as checkImpactGrid, or when jobs < 1.
 ImpactMap sweepImpactMap(const dynamics::Model& model, const ImpactGrid& grid, int jobs,
-                         const ProgressFn& progress = {});
+                         const parallel::ProgressFn& progress = {});
 
 /// A change of impact type between neighbouring grid points along one axis.
 struct TypeChange {
