@@ -1,12 +1,13 @@
 # Two commands do everything on a fresh Debian 12 machine:
 #   make demo   install missing packages, configure, build, run the main job into results/
-#   make test   same set-up, then the whole test suite (Release, then Debug+ASan/UBSan) via ctest
+#   make test   same set-up, then the whole test suite (Release, then Debug+ASan/UBSan) via ctest,
+#               and one optimise under valgrind
 JOBS ?= $(shell nproc)
 BUILD ?= build
 SAN_BUILD ?= build-sanitize
 CMAKE_GEN := $(shell command -v ninja >/dev/null 2>&1 && echo "-G Ninja")
 
-.PHONY: deps configure build test test-release test-sanitize demo bench format clean
+.PHONY: deps configure build test test-release test-sanitize valgrind demo bench format clean
 
 deps:
 	@bash scripts/install-deps.sh
@@ -27,7 +28,11 @@ test-sanitize: deps
 	@cd $(SAN_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	  ctest --output-on-failure -j $(JOBS)
 
-test: test-release test-sanitize
+# One optimise of the small RABBIT problem under memcheck: errors or leaks fail (about 15 s).
+valgrind: build
+	@bash scripts/valgrind.sh $(BUILD)
+
+test: test-release test-sanitize valgrind
 
 demo: build
 	@bash scripts/demo.sh $(BUILD)

@@ -22,6 +22,8 @@ int runReportingErrors(const std::function<void()>& body) {
   try {
     body();
     return kExitOk;
+  } catch (const CommandError& e) {
+    return report(e.what(), e.code());
   } catch (const config::ConfigError& e) {
     return report(e.what(), kExitInputError);
   } catch (const std::domain_error& e) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -9,6 +10,7 @@
 
 #include "apps/command_runner.hpp"
 #include "apps/plotting.hpp"
+#include "apps/result_folder.hpp"
 #include "dynamics/energy.hpp"
 #include "dynamics/robot_config.hpp"
 #include "gaits/consistency.hpp"
@@ -21,11 +23,29 @@
 namespace gaitopt::apps {
 namespace {
 
+/// A step the two legs cannot span, even stretched, is bad input, not a question for Ipopt
+/// (which would spend its iteration limit on it). @throws std::domain_error naming the key.
+void requireReachable(const dynamics::Model& model, const ocp::OcpConfig& config,
+                      const std::string& path) {
+  double leg = 0;
+  for (int i = 0; i < model.legLinks(); ++i) leg += model.link(i).length;
+  if (config.step_length < 2 * leg) return;
+  throw std::domain_error(fmt::format(
+      "{}: key 'step_length': {:g} m is out of reach: the legs of robot '{}' ({:.4g} m each) "
+      "span less than {:.4g} m",
+      path, config.step_length, model.name(), leg, 2 * leg));
+}
+
 /// A previous result (warm start), or the config's polynomial gait.
 gaits::Trajectory initialGuess(const dynamics::Model& model, const ocp::OcpConfig& config,
                                const std::string& warm_start) {
   if (!warm_start.empty()) return gaits::readTrajectoryCsv(warm_start + "/trajectory.csv", model);
-  return ocp::polynomialGuess(model, config);
+  try {
+    return ocp::polynomialGuess(model, config);
+  } catch (const std::domain_error& e) {  // say which file holds the unrealisable gait
+    throw std::domain_error(fmt::format("{}: the initial-guess gait cannot be realised: {}",
+                                        config.guess_gait_path, e.what()));
+  }
 }
 
 /// Kinetic energy lost in the strike, from the solution's own impact variables [J].
@@ -59,12 +79,49 @@ nlohmann::ordered_json meshHistory(const std::vector<ocp::MeshRound>& history) {
   return rounds;
 }
 
+/// The location of a violation for summary.json; `name_key` says what the name names.
+nlohmann::ordered_json violationJson(const ocp::LocatedViolation& v, const std::string& name_key) {
+  const ocp::Violation& w = v.violation;
+  if (w.name.empty()) return nullptr;
+  using Json = nlohmann::ordered_json;
+  const bool on_grid = v.node >= 0;
+  return {{name_key, w.name},
+          {"phase", v.phase},
+          {"node_kind", on_grid ? Json(v.node_kind) : Json()},
+          {"node", on_grid ? Json(v.node) : Json()},
+          {v.part, on_grid ? v.index : w.index},
+          {"value", w.value},
+          {"lower", w.lower},
+          {"upper", w.upper},
+          {"violation", w.amount}};
+}
+
+/// Why a solve failed and where: the error line (also in FAILED.txt) and summary.json's keys.
+struct FailureReport {
+  std::string message;
+  nlohmann::ordered_json summary;
+};
+
+FailureReport failureReport(const ocp::GaitSolution& solution, const std::string& dir) {
+  const ocp::SolveResult& r = solution.result;
+  const auto row = ocp::worstConstraint(solution.problem, r.x);
+  const auto bound = ocp::worstBound(solution.problem, r.x);
+  const std::string message = fmt::format(
+      "solver status {} after {} iterations; worst violated constraint: {}; worst variable "
+      "bound: {}; {} (max violation {:.3g}) written to {}",
+      r.status, r.iterations, ocp::describe(row), ocp::describe(bound), r.point, r.max_violation,
+      dir);
+  return {message,
+          {{"point", r.point},
+           {"worst_violation", violationJson(row, "constraint")},
+           {"worst_bound_violation", violationJson(bound, "variable")}}};
+}
+
 void writeResult(const OptimizeOptions& o, const dynamics::Model& model,
                  const ocp::OcpConfig& config, const ocp::GaitSolution& solution,
-                 const std::string& dir) {
+                 const nlohmann::ordered_json& failure, const std::string& dir) {
   const ocp::GaitProblem& problem = solution.problem;
   const ocp::SolveResult& r = solution.result;
-  std::filesystem::create_directories(dir);
   const gaits::Trajectory traj = ocp::reconstruct(problem, model, r.x);
   // Between the points the export follows the scheme's own polynomials.
   const gaits::Trajectory dense = ocp::reconstructDense(problem, model, r.x, o.output.rate_hz);
@@ -72,9 +129,11 @@ void writeResult(const OptimizeOptions& o, const dynamics::Model& model,
   auto summary = gaits::gaitSummary(traj, model,
                                     {o.config_path, r.status, r.iterations, r.wall_time_s,
                                      r.callback_time_s, config.cost.primary()});
+  summary["converged"] = r.success;
   summary["cost"] = r.cost;  // the solver's objective (the scheme's own quadrature)
   if (problem.impact_offset >= 0) summary["impact_energy_loss_J"] = impactLoss(problem, model, r.x);
   summary["max_violation"] = r.max_violation;
+  if (!failure.is_null()) summary.update(failure);
   // The constraints hold at the collocation points; the dense export shows how far they are
   // missed between them.
   summary["between_nodes"] = {{"max_dynamics_defect", gaits::maxDynamicsResidual(dense, model)},
@@ -91,11 +150,35 @@ void writeResult(const OptimizeOptions& o, const dynamics::Model& model,
   if (o.output.plots) runPlotScript("gait_plots.py", fmt::format("'{}'", dir));
 }
 
+/// FAILED.txt, so that a person browsing the folders cannot mistake it for a gait. The folder
+/// is renamed into place only when complete, so a plain write suffices.
+void writeFailedNote(const std::string& path, const std::string& message) {
+  std::ofstream out(path);
+  out << "This folder holds a failed solve, not a gait: do not use it as a reference.\n"
+      << message << '\n';
+  if (!out) throw std::runtime_error("cannot write " + path);
+}
+
+/// A failed solve goes to OUT.failed, marked by FAILED.txt and `"converged": false`, and never
+/// touches a previous good result in OUT. @throws CommandError with the exit code.
+[[noreturn]] void reportFailure(const OptimizeOptions& o, const dynamics::Model& model,
+                                const ocp::OcpConfig& config, const ocp::GaitSolution& solution) {
+  const std::string failed_dir = o.output.out_dir + ".failed";
+  const FailureReport report = failureReport(solution, failed_dir);
+  writeResultFolder(failed_dir, [&](const std::string& dir) {
+    writeResult(o, model, config, solution, report.summary, dir);
+    writeFailedNote(dir + "/FAILED.txt", report.message);
+  });
+  const bool infeasible = solution.result.status == "Infeasible_Problem_Detected";
+  throw CommandError(infeasible ? kExitInfeasible : kExitNotConverged, report.message);
+}
+
 }  // namespace
 
 void runOptimize(const OptimizeOptions& o) {
   ocp::OcpConfig config = ocp::loadOcpConfig(o.config_path);
   const dynamics::Model model = dynamics::loadRobot(config.robot_path);
+  requireReachable(model, config, o.config_path);
   if (!o.quiet) fmt::print("optimize: {} on {}\n", config.name, model.name());
   config.solver.progress = !o.quiet;
   if (!o.warm_start.empty()) config.solver = ocp::warmStarted(config.solver);
@@ -112,13 +195,13 @@ void runOptimize(const OptimizeOptions& o) {
       "optimize: {} after {} iterations, cost {:.6g}, max violation {:.2e}, {:.3f} s "
       "({:.3f} s in our callbacks)\n",
       r.status, r.iterations, r.cost, r.max_violation, r.wall_time_s, r.callback_time_s);
-  // A failed solve never overwrites a result: its last iterate goes to OUT.failed.
-  const std::string dir = r.success ? o.output.out_dir : o.output.out_dir + ".failed";
-  writeResult(o, model, config, solution, dir);
-  if (!r.success)
-    throw std::runtime_error(
-        fmt::format("solver status {}; last iterate written to {}", r.status, dir));
-  fmt::print("optimize: wrote {}/trajectory.csv, summary.json and pictures\n", dir);
+  if (!r.success) reportFailure(o, model, config, solution);
+  writeResultFolder(o.output.out_dir, [&](const std::string& dir) {
+    writeResult(o, model, config, solution, nullptr, dir);
+  });
+  // A failure of an earlier run would sit next to this result and contradict it.
+  std::filesystem::remove_all(o.output.out_dir + ".failed");
+  fmt::print("optimize: wrote {}/trajectory.csv, summary.json and pictures\n", o.output.out_dir);
 }
 
 void registerOptimizeCommand(CLI::App& app) {
@@ -133,7 +216,11 @@ void registerOptimizeCommand(CLI::App& app) {
                   "Start from the trajectory.csv of a previous result folder (same robot)")
       ->option_text("DIR");
   cmd->add_flag("--quiet", options->quiet, "No per-iteration progress");
-  cmd->footer("Exit codes: 0 ok, 2 bad input, 1 solver failure (last iterate in DIR.failed).");
+  cmd->footer(
+      "Exit codes: 0 ok, 2 bad input, 3 infeasible (Ipopt's local infeasibility, or a leg "
+      "cannot reach in the initial guess), 4 the solver did not converge, 1 other failure. A "
+      "failed solve writes its least-violated point to DIR.failed (with FAILED.txt) and never "
+      "touches DIR.");
   cmd->callback([options] { runSubcommand([&] { runOptimize(*options); }); });
 }
 

@@ -1,12 +1,14 @@
 #include "apps/poly_command.hpp"
 
 #include <chrono>
-#include <filesystem>
+#include <stdexcept>
+#include <string>
 
 #include <fmt/format.h>
 
 #include "apps/command_runner.hpp"
 #include "apps/plotting.hpp"
+#include "apps/result_folder.hpp"
 #include "dynamics/robot_config.hpp"
 #include "gaits/gait_summary.hpp"
 #include "gaits/hip_plan_search.hpp"
@@ -36,6 +38,19 @@ nlohmann::ordered_json gaitJson(const gaits::GaitParams& p, const gaits::HipPlan
             {"evaluations", search.evaluations}}}};
 }
 
+/// The hip plan; an unrealisable gait names its file and step. @throws std::domain_error.
+gaits::HipPlanSearch designHipPlan(const dynamics::Model& model, const gaits::GaitParams& params,
+                                   const std::string& gait_path) {
+  try {
+    return gaits::searchHipPlan(model, params);
+  } catch (const std::domain_error& e) {
+    throw std::domain_error(
+        fmt::format("{}: gait '{}' (step_length {:g} m) cannot be realised by "
+                    "robot '{}': {}",
+                    gait_path, params.name, params.step_length, model.name(), e.what()));
+  }
+}
+
 }  // namespace
 
 void runPoly(const PolyOptions& options) {
@@ -45,7 +60,7 @@ void runPoly(const PolyOptions& options) {
   fmt::print("poly: {} on {}: step {:.3f} m in {:.3f} s ({:.3f} m/s)\n", params.name, model.name(),
              params.step_length, params.duration(), params.speed());
 
-  const gaits::HipPlanSearch search = gaits::searchHipPlan(model, params);
+  const gaits::HipPlanSearch search = designHipPlan(model, params, options.gait_path);
   fmt::print(
       "poly: hip plan by {} ({} evaluations): V_h1 {:.4f} m/s, V_h2 {:.4f} m/s, "
       "S_D0 {:.4f} m, DSP margin {:.4f} m\n",
@@ -57,19 +72,19 @@ void runPoly(const PolyOptions& options) {
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  std::filesystem::create_directories(options.output.out_dir);
-  gaits::writeTrajectoryCsv(traj, model, options.output.out_dir + "/trajectory.csv");
   auto summary = gaits::gaitSummary(traj, model, {options.gait_path, "designed", 0, elapsed, 0});
   summary.update(gaitJson(params, search));
-  gaits::writeJsonFile(summary, options.output.out_dir + "/summary.json");
+  writeResultFolder(options.output.out_dir, [&](const std::string& dir) {
+    gaits::writeTrajectoryCsv(traj, model, dir + "/trajectory.csv");
+    gaits::writeJsonFile(summary, dir + "/summary.json");
+    if (options.output.plots) runPlotScript("gait_plots.py", fmt::format("'{}'", dir));
+  });
   fmt::print(
       "poly: energy {:.2f} J, CoT {:.4f}, min normal force {:.1f} N, max friction ratio "
       "{:.3f}, min ZMP margin {:.4f} m\n",
       summary["energy_J"].get<double>(), summary["cost_of_transport"].get<double>(),
       summary["min_normal_force"].get<double>(), summary["max_friction_ratio"].get<double>(),
       summary["min_zmp_margin"].get<double>());
-  if (options.output.plots)
-    runPlotScript("gait_plots.py", fmt::format("'{}'", options.output.out_dir));
   fmt::print("poly: wrote {}/trajectory.csv ({} samples), summary.json and pictures\n",
              options.output.out_dir, traj.knots().size());
 }

@@ -4,6 +4,8 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <map>
+#include <numbers>
 #include <utility>
 
 #include <fmt/format.h>
@@ -25,6 +27,16 @@ NumberCheck inRange(double lo, double hi, const std::string& unit) {
   };
 }
 
+NumberCheck angleInRange(double lo, double hi) {
+  return [=](double v) {
+    if (v >= lo && v <= hi) return std::string();
+    const std::string expected = fmt::format("an angle in [{:.4g}, {:.4g}] [rad]", lo, hi);
+    const double as_radians = v * std::numbers::pi / 180;
+    if (as_radians < lo || as_radians > hi) return expected;
+    return fmt::format("{} (degrees? {:g} deg is {:.4g} rad)", expected, v, as_radians);
+  };
+}
+
 YamlReader YamlReader::fromFile(const std::string& path) {
   if (!std::filesystem::is_regular_file(path))
     throw ConfigError(path, "", 0, "file not found or not a regular file");
@@ -39,7 +51,25 @@ YamlReader YamlReader::fromFile(const std::string& path) {
 }
 
 YamlReader::YamlReader(std::string file, YAML::Node node, std::string path)
-    : file_(std::move(file)), node_(std::move(node)), path_(std::move(path)) {}
+    : file_(std::move(file)), node_(std::move(node)), path_(std::move(path)) {
+  rejectDuplicateKeys();
+}
+
+void YamlReader::rejectDuplicateKeys() const {
+  if (!node_.IsMap()) return;
+  // yaml-cpp keeps both pairs of `{a: 1, a: 2}` and lookups return the first: a hand-edited
+  // file would silently ignore the value the user changed last.
+  std::map<std::string, int> first_line;
+  for (const auto& kv : node_) {
+    if (!kv.first.IsScalar()) continue;  // allowOnly() names keys that are not plain
+    const auto [first, inserted] = first_line.emplace(kv.first.Scalar(), lineOf(kv.first));
+    if (!inserted)
+      throw ConfigError(file_, keyPath(kv.first.Scalar()), lineOf(kv.first),
+                        fmt::format("duplicate key, first given at line {}; each key may "
+                                    "appear once in a mapping",
+                                    first->second));
+  }
+}
 
 std::string YamlReader::keyPath(const std::string& key) const {
   return path_.empty() ? key : path_ + "." + key;

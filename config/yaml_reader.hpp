@@ -1,8 +1,8 @@
 #pragma once
 /// @file yaml_reader.hpp
 /// Strict typed access to one YAML mapping: every read names its key path, every failure throws a
-/// ConfigError with file, key, line, the value found and what was expected; unknown keys are
-/// errors (a typo must never fall back to a silent default).
+/// ConfigError with file, key, line, the value found and what was expected; unknown and
+/// duplicate keys are errors (a typo must never fall back to a silent default).
 #include <functional>
 #include <optional>
 #include <string>
@@ -21,12 +21,16 @@ using NumberCheck = std::function<std::string(double)>;
 NumberCheck positive(const std::string& unit);
 NumberCheck nonNegative(const std::string& unit);
 NumberCheck inRange(double lo, double hi, const std::string& unit);
+/// An angle in [lo, hi] radians; a value outside that is in range once read as degrees gets
+/// a hint to convert ("30 deg is 0.5236 rad"), the usual slip in a hand-edited file.
+NumberCheck angleInRange(double lo, double hi);
 
 class YamlReader {
  public:
   /// Parses a file. @throws ConfigError when it is missing or not valid YAML mapping.
   static YamlReader fromFile(const std::string& path);
   /// Wraps a parsed node; `path` is the key path of the node ("" for the document root).
+  /// @throws ConfigError when the node is a mapping with a key given twice (both lines named).
   YamlReader(std::string file, YAML::Node node, std::string path);
 
   double number(const std::string& key, const NumberCheck& check) const;
@@ -55,6 +59,7 @@ class YamlReader {
   YAML::Node child(const std::string& key) const;
   std::string keyPath(const std::string& key) const;
   int lineOf(const YAML::Node& node) const;
+  void rejectDuplicateKeys() const;
 
   std::string file_;
   YAML::Node node_;

@@ -37,7 +37,7 @@ GaitParams loadGait(const std::string& path) {
       hip.numberOrWord("velocity_touchdown", "optimize", inRange(-5.0, 5.0, "[m/s]"));
 
   p.torso_angle = root.numberOr("torso_angle", 0.0,
-                                inRange(-std::numbers::pi / 2, std::numbers::pi / 2, "[rad]"));
+                                config::angleInRange(-std::numbers::pi / 2, std::numbers::pi / 2));
   p.knee = root.has("knee") && root.choice("knee", {"forward", "backward"}) == "backward"
                ? KneeDirection::kBackward
                : KneeDirection::kForward;

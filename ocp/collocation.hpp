@@ -89,6 +89,11 @@ class CollocationDefects : public ConstraintSet {
   void jacobian(const Eigen::VectorXd& x, Triplets& out) const override;
   void hessian(const Eigen::VectorXd& x, const Eigen::VectorXd& lambda,
                Triplets& out) const override;
+  /// The segment of a row: nx rows per segment (trapezoidal), 2 nx (Hermite-Simpson).
+  NodeOfRow nodeOf(int row) const override {
+    const int per_segment = layout_.pointsPerSegment() * layout_.nx;
+    return {"segment", row / per_segment, row % per_segment};
+  }
 
  private:
   PhaseLayout layout_;

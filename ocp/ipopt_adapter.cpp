@@ -1,6 +1,8 @@
 #include "ocp/ipopt_adapter.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <limits>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -65,10 +67,30 @@ const char* statusName(Ipopt::SolverReturn status) {
   }
 }
 
+/// Worst constraint or bound violation of x with constraint values g; NaN counts as infinite.
+double violation(const Nlp& nlp, const Eigen::VectorXd& x, const Eigen::VectorXd& g,
+                 const Eigen::VectorXd& gl, const Eigen::VectorXd& gu) {
+  if (!g.allFinite() || !x.allFinite()) return std::numeric_limits<double>::infinity();
+  return std::max({0.0, (gl - g).maxCoeff(), (g - gu).maxCoeff(),
+                   (nlp.lowerBounds() - x).maxCoeff(), (x - nlp.upperBounds()).maxCoeff()});
+}
+
+/// The least violated point Ipopt evaluated: what a failed solve keeps when its last iterate is
+/// worse (Ipopt 3.11 does not hand out its iterates, but every one passes through eval_g).
+struct LeastViolation {
+  Eigen::VectorXd x;
+  double violation = std::numeric_limits<double>::infinity();
+};
+
 class Adapter : public Ipopt::TNLP {
  public:
-  Adapter(const Nlp& nlp, SolveResult& result, bool progress)
-      : nlp_(nlp), result_(result), progress_(progress) {
+  Adapter(const Nlp& nlp, SolveResult& result, LeastViolation& best, bool progress)
+      : nlp_(nlp),
+        result_(result),
+        best_(best),
+        progress_(progress),
+        gl_(nlp.constraintLower()),
+        gu_(nlp.constraintUpper()) {
     jac_.record(nlp.jacobianTriplets(nlp.initialGuess()));
     hess_.record(
         nlp.hessianTriplets(nlp.initialGuess(), 1.0, Eigen::VectorXd::Ones(nlp.constraints())));
@@ -113,7 +135,9 @@ class Adapter : public Ipopt::TNLP {
 
   bool eval_g(Index n, const Number* x, bool, Index m, Number* g) override {
     const CallbackTimer t(result_.callback_time_s);
-    Eigen::Map<Eigen::VectorXd>(g, m) = nlp_.constraintValues(vec(x, n));
+    const Eigen::VectorXd xv = vec(x, n), gv = nlp_.constraintValues(xv);
+    Eigen::Map<Eigen::VectorXd>(g, m) = gv;
+    if (const double v = violation(nlp_, xv, gv, gl_, gu_); v <= best_.violation) best_ = {xv, v};
     return true;
   }
 
@@ -163,17 +187,22 @@ class Adapter : public Ipopt::TNLP {
 
   const Nlp& nlp_;
   SolveResult& result_;
+  LeastViolation& best_;
   bool progress_;
+  Eigen::VectorXd gl_, gu_;  // constraint bounds, assembled once
   SparsityPattern jac_, hess_;
 };
 
 double maxViolation(const Nlp& nlp, const Eigen::VectorXd& x) {
-  const Eigen::VectorXd g = nlp.constraintValues(x);
-  const double rows = std::max(
-      {0.0, (nlp.constraintLower() - g).maxCoeff(), (g - nlp.constraintUpper()).maxCoeff()});
-  const double bounds =
-      std::max({0.0, (nlp.lowerBounds() - x).maxCoeff(), (x - nlp.upperBounds()).maxCoeff()});
-  return std::max(rows, bounds);
+  return violation(nlp, x, nlp.constraintValues(x), nlp.constraintLower(), nlp.constraintUpper());
+}
+
+/// After a failure, x becomes the least violated point evaluated if it beats the last iterate.
+void keepLeastViolated(SolveResult& result, const LeastViolation& best) {
+  if (result.success || !(best.violation < result.max_violation)) return;
+  result.x = best.x;
+  result.max_violation = best.violation;
+  result.point = "least-violated point evaluated";
 }
 
 }  // namespace
@@ -185,9 +214,8 @@ SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options) {
   app->Options()->SetNumericValue("tol", options.tolerance);
   app->Options()->SetIntegerValue("max_iter", options.max_iterations);
   app->Options()->SetStringValue("hessian_approximation", options.hessian);
-  app->Options()->SetStringValue("jacobian_approximation", options.jacobian == "exact"
-                                                               ? "exact"
-                                                               : options.jacobian);
+  app->Options()->SetStringValue("jacobian_approximation",
+                                 options.jacobian == "exact" ? "exact" : options.jacobian);
   app->Options()->SetStringValue("linear_solver", options.linear_solver);
   app->Options()->SetStringValue("mu_strategy", options.mu_strategy);
   app->Options()->SetNumericValue("mu_init", options.mu_init);
@@ -197,7 +225,8 @@ SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options) {
   app->Options()->SetStringValue("sb", "yes");  // no Ipopt banner
   if (app->Initialize() != Ipopt::Solve_Succeeded)
     throw std::runtime_error("Ipopt could not be initialised (check the solver options)");
-  Ipopt::SmartPtr<Ipopt::TNLP> adapter = new Adapter(nlp, result, options.progress);
+  LeastViolation best;
+  Ipopt::SmartPtr<Ipopt::TNLP> adapter = new Adapter(nlp, result, best, options.progress);
   const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(adapter);
   if (result.x.size() == 0) {  // Ipopt failed before finalize_solution
     result.status = fmt::format("Ipopt_Error_{}", static_cast<int>(status));
@@ -205,14 +234,15 @@ SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options) {
   }
   result.iterations = IsValid(app->Statistics()) ? app->Statistics()->IterationCount() : 0;
   result.max_violation = maxViolation(nlp, result.x);
+  keepLeastViolated(result, best);
   result.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();
   return result;
 }
 
 SolverOptions warmStarted(SolverOptions options) {
   options.mu_init = 1e-5;
-  options.bound_push = 1e-6;
-  options.bound_frac = 1e-6;
+  options.bound_push = 1e-4;
+  options.bound_frac = 1e-4;
   return options;
 }
 

@@ -1,5 +1,8 @@
 #include "ocp/nlp.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
@@ -8,10 +11,25 @@
 namespace gaitopt::ocp {
 namespace {
 
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
 Eigen::VectorXd append(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   Eigen::VectorXd out(a.size() + b.size());
   out << a, b;
   return out;
+}
+
+/// The entry of `value` farthest outside [lower, upper]: its index and distance (0 when all
+/// are within). A NaN entry counts as infinitely far.
+std::pair<int, double> farthestOutside(const Eigen::VectorXd& value, const Eigen::VectorXd& lower,
+                                       const Eigen::VectorXd& upper) {
+  std::pair<int, double> worst{-1, 0.0};
+  for (Eigen::Index i = 0; i < value.size(); ++i) {
+    const double v = value(i);
+    const double d = std::isnan(v) ? kInf : std::max({0.0, lower(i) - v, v - upper(i)});
+    if (d > worst.second) worst = {static_cast<int>(i), d};
+  }
+  return worst;
 }
 
 }  // namespace
@@ -50,6 +68,7 @@ VariableBlock Nlp::addVariables(const std::string& name, int size, const Eigen::
   x0_ = append(x0_, initial);
   xl_ = append(xl_, lower);
   xu_ = append(xu_, upper);
+  blocks_.push_back(block);
   return block;
 }
 
@@ -122,6 +141,28 @@ Triplets Nlp::hessianTriplets(const Eigen::VectorXd& x, double obj_factor,
     row += s->rows();
   }
   return all;
+}
+
+Violation Nlp::worstConstraint(const Eigen::VectorXd& x) const {
+  const Eigen::VectorXd g = constraintValues(x), lower = constraintLower(),
+                        upper = constraintUpper();
+  const auto [row, amount] = farthestOutside(g, lower, upper);
+  if (row < 0) return {};
+  int first = 0;
+  for (const auto& s : sets_) {
+    if (row < first + s->rows())
+      return {s->name(), row - first, amount, g(row), lower(row), upper(row)};
+    first += s->rows();
+  }
+  throw std::logic_error("constraint row beyond the last set");
+}
+
+Violation Nlp::worstBound(const Eigen::VectorXd& x) const {
+  const auto [i, amount] = farthestOutside(x, xl_, xu_);
+  if (i < 0) return {};
+  for (const auto& b : blocks_)
+    if (i < b.offset + b.size) return {b.name, i - b.offset, amount, x(i), xl_(i), xu_(i)};
+  throw std::logic_error("variable beyond the last block");
 }
 
 }  // namespace gaitopt::ocp

@@ -26,6 +26,13 @@ struct VariableBlock {
   int size = 0;
 };
 
+/// Where a row of a constraint set sits on the time grid, for reports of failed solves.
+struct NodeOfRow {
+  const char* kind = "";  ///< "point" (a collocation point), "segment", or "" (not on the grid)
+  int index = -1;
+  int row = -1;  ///< the row among the node's rows
+};
+
 /// A group of constraint rows g(x) with bounds lower <= g(x) <= upper.
 class ConstraintSet {
  public:
@@ -43,10 +50,20 @@ class ConstraintSet {
   /// Lower triangle (row >= col, global indices) of sum_i lambda_i d2 g_i / dx2.
   virtual void hessian(const Eigen::VectorXd& x, const Eigen::VectorXd& lambda,
                        Triplets& out) const = 0;
+  /// The node of row `row` in [0, rows()); default: not on the time grid.
+  virtual NodeOfRow nodeOf(int /*row*/) const { return {}; }
 
  private:
   std::string name_;
   int rows_;
+};
+
+/// The worst bound violation of a point among constraint rows or variables.
+struct Violation {
+  std::string name;   ///< the constraint set or variable block ("" when nothing is violated)
+  int index = -1;     ///< row within the set, or element within the block
+  double amount = 0;  ///< distance outside [lower, upper] (0 when within)
+  double value = 0, lower = 0, upper = 0;
 };
 
 /// A term of the objective.
@@ -98,6 +115,12 @@ class Nlp {
   Eigen::VectorXd constraintLower() const;
   Eigen::VectorXd constraintUpper() const;
   const std::vector<std::unique_ptr<ConstraintSet>>& constraintSets() const { return sets_; }
+  const std::vector<VariableBlock>& variableBlocks() const { return blocks_; }
+
+  /// The constraint row of `x` farthest outside its bounds (the first on ties).
+  Violation worstConstraint(const Eigen::VectorXd& x) const;
+  /// The variable of `x` farthest outside its bounds (the first on ties).
+  Violation worstBound(const Eigen::VectorXd& x) const;
 
   double cost(const Eigen::VectorXd& x) const;
   Eigen::VectorXd costGradient(const Eigen::VectorXd& x) const;
@@ -110,6 +133,7 @@ class Nlp {
 
  private:
   Eigen::VectorXd x0_, xl_, xu_;
+  std::vector<VariableBlock> blocks_;
   std::vector<std::unique_ptr<ConstraintSet>> sets_;
   std::vector<std::unique_ptr<CostTerm>> costs_;
 };

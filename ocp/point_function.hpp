@@ -47,6 +47,8 @@ class PathConstraint : public ConstraintSet {
   void jacobian(const Eigen::VectorXd& x, Triplets& out) const override;
   void hessian(const Eigen::VectorXd& x, const Eigen::VectorXd& lambda,
                Triplets& out) const override;
+  /// Row r is row r % function->rows() of collocation point r / function->rows().
+  NodeOfRow nodeOf(int row) const override { return {"point", row / f_->rows(), row % f_->rows()}; }
 
  private:
   PhaseLayout layout_;

@@ -13,6 +13,7 @@ packages=(
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libboost-dev
   python3 python3-matplotlib python3-numpy
+  valgrind
 )
 fuzz_packages=(clang libclang-rt-14-dev)
 

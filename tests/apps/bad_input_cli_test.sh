@@ -1,0 +1,112 @@
+#!/usr/bin/env bash
+# One case per class of bad input (issue 7): each must exit with its documented code (2 bad
+# input, 3 a gait that cannot be realised) and print one line naming the file, the key or line,
+# the value and what was expected; no result folder may appear.
+# Usage: bad_input_cli_test.sh <path to gaitopt binary> <repo root>
+set -u
+[[ $# -eq 2 ]] || { echo "usage: $0 <gaitopt binary> <repo root>" >&2; exit 1; }
+GAITOPT=$1
+ROOT=$2
+ROBOT="$ROOT/configs/robots/mu2004_five_link.yaml"
+GAIT="$ROOT/configs/gaits/mu2004.yaml"
+OCP="$ROOT/configs/ocp/rabbit_kelly2017.yaml"
+# shellcheck source=tests/apps/cli_test_lib.sh
+source "$(dirname "$0")/cli_test_lib.sh"
+
+# expect NAME CODE PATTERN: the last run exited CODE, its stderr matches the extended regular
+# expression PATTERN, and it created no result folder.
+expect() {
+  [[ $RC -eq $2 ]] || fail "$1: expected exit $2, got $RC: $(cat "$TMP/err")"
+  grep -Eq -- "$3" "$TMP/err" || fail "$1: message does not match '$3': $(cat "$TMP/err")"
+  [[ ! -e "$TMP/out_dir" ]] || fail "$1: a result folder was created for bad input"
+  echo "ok $1: $(head -n 1 "$TMP/err")"
+}
+poly() { run poly "$@" --out "$TMP/out_dir" --no-plots; }
+# edit SOURCE NAME SED: a copy of SOURCE edited by SED as $TMP/NAME (relative paths made absolute).
+edit() { sed -e "$3" -e "s|\.\./|$ROOT/configs/|" "$1" >"$TMP/$2"; }
+
+# NaN and Inf in a YAML number.
+edit "$ROBOT" nan.yaml '/stance_thigh/s/mass: 5.28/mass: .nan/'
+poly --robot "$TMP/nan.yaml" --gait "$GAIT"
+expect "NaN" 2 "nan.yaml:16: key 'links\[1\]\.mass': expected a finite number, got '\.nan'"
+edit "$ROBOT" inf.yaml '/torso/s/inertia: 0.033/inertia: -.inf/'
+poly --robot "$TMP/inf.yaml" --gait "$GAIT"
+expect "Inf" 2 "inf.yaml:17: key 'links\[2\]\.inertia': expected a finite number, got '-\.inf'"
+
+# Degrees where radians are expected, told apart by range.
+edit "$GAIT" degrees.yaml 's/torso_angle: 0.0/torso_angle: 30/'
+poly --robot "$ROBOT" --gait "$TMP/degrees.yaml"
+expect "degrees" 2 "degrees.yaml:18: key 'torso_angle': expected an angle in \[-1.571, 1.571\] \[rad\] \(degrees\? 30 deg is 0.5236 rad\), got 30"
+
+# Zero or negative physical quantities.
+edit "$ROBOT" mass0.yaml '/torso/s/mass: 14.79/mass: 0/'
+poly --robot "$TMP/mass0.yaml" --gait "$GAIT"
+expect "zero mass" 2 "mass0.yaml:17: key 'links\[2\]\.mass': expected a positive number \[kg\], got 0"
+edit "$ROBOT" length.yaml '/swing_shank/s/length: 0.332/length: -0.332/'
+poly --robot "$TMP/length.yaml" --gait "$GAIT"
+expect "negative length" 2 "length.yaml:19: key 'links\[4\]\.length': expected a positive number \[m\], got -0.332"
+
+# An unknown key (a typo) in a robot and in an OCP config.
+edit "$ROBOT" typo.yaml 's/^friction:/frcition:/'
+poly --robot "$TMP/typo.yaml" --gait "$GAIT"
+expect "unknown key" 2 "typo.yaml:12: key 'frcition': unknown key; allowed here: .*friction"
+edit "$OCP" ocp_typo.yaml 's/^scheme:/shceme:/'
+run optimize --config "$TMP/ocp_typo.yaml" --out "$TMP/out_dir" --quiet --no-plots
+expect "unknown OCP key" 2 "ocp_typo.yaml:14: key 'shceme': unknown key"
+
+# A step the legs cannot reach: the polynomial gait (its first sample) and the OCP (up front).
+edit "$GAIT" far.yaml 's/step_length: 0.35/step_length: 1.5/'
+poly --robot "$ROBOT" --gait "$TMP/far.yaml"
+expect "out of reach (poly)" 3 "far.yaml: gait 'mu2004' \(step_length 1.5 m\) cannot be realised by robot 'mu2004_five_link': .*leg cannot reach: hip-tip distance 1.4733 m outside the open range \(0.0300, 0.6340\) m"
+edit "$OCP" ocp_far.yaml 's/^step_length: 0.5/step_length: 1.9/'
+run optimize --config "$TMP/ocp_far.yaml" --out "$TMP/out_dir" --quiet --no-plots
+expect "out of reach (optimize)" 3 "ocp_far.yaml: key 'step_length': 1.9 m is out of reach: the legs of robot 'rabbit' \(0.8 m each\) span less than 1.6 m"
+[[ ! -e "$TMP/out_dir.failed" ]] || fail "out of reach (optimize): Ipopt was run"
+
+# Friction coefficient 0.
+edit "$ROBOT" mu0.yaml 's/^friction: 0.6/friction: 0/'
+poly --robot "$TMP/mu0.yaml" --gait "$GAIT"
+expect "friction 0" 2 "mu0.yaml:12: key 'friction': expected a number in \[1e-06, 10\] \(Coulomb mu\), got 0"
+
+# A phase of zero duration, in a gait and in an OCP config.
+edit "$GAIT" dsp0.yaml 's/dsp_duration: 0.1/dsp_duration: 0/'
+poly --robot "$ROBOT" --gait "$TMP/dsp0.yaml"
+expect "zero DSP" 2 "dsp0.yaml:10: key 'dsp_duration': expected a number in \[0.001, 10\] \[s\], got 0"
+edit "$OCP" ocp_dur0.yaml 's/duration: 0.7,/duration: 0,/'
+run optimize --config "$TMP/ocp_dur0.yaml" --out "$TMP/out_dir" --quiet --no-plots
+expect "zero OCP phase" 2 "ocp_dur0.yaml:13: key 'phases\[0\]\.duration': expected a number in \[0.01, 10\] \[s\], got 0"
+
+# A key given twice: yaml-cpp would silently keep the first.
+edit "$ROBOT" dup.yaml 's/^gravity: 9.81/gravity: 9.81\ngravity: 1.62/'
+poly --robot "$TMP/dup.yaml" --gait "$GAIT"
+expect "duplicate key" 2 "dup.yaml:12: key 'gravity': duplicate key, first given at line 11"
+edit "$OCP" ocp_dup.yaml 's/^cost: {torque_squared: 1.0}/cost: {torque_squared: 1.0, torque_squared: 2.0}/'
+run optimize --config "$TMP/ocp_dup.yaml" --out "$TMP/out_dir" --quiet --no-plots
+expect "duplicate OCP key" 2 "ocp_dup.yaml:16: key 'cost.torque_squared': duplicate key, first given at line 16"
+
+# Malformed trajectory CSVs (read as a warm start): a missing column, a word, a NaN.
+run optimize --config "$OCP" --out "$TMP/good" --rate 100 --quiet --no-plots
+[[ $RC -eq 0 ]] || fail "CSV: the reference solve exited $RC: $(cat "$TMP/err")"
+mkdir -p "$TMP/no_column" "$TMP/word" "$TMP/nan_csv"
+sed '1s/,tau2,/,/' "$TMP/good/trajectory.csv" >"$TMP/no_column/trajectory.csv"
+sed '5s/^\([^,]*\),\([^,]*\),[^,]*,/\1,\2,abc,/' "$TMP/good/trajectory.csv" >"$TMP/word/trajectory.csv"
+sed '5s/^\([^,]*\),\([^,]*\),[^,]*,/\1,\2,nan,/' "$TMP/good/trajectory.csv" >"$TMP/nan_csv/trajectory.csv"
+warm() { run optimize --config "$OCP" --out "$TMP/out_dir" --warm-start "$TMP/$1" --quiet --no-plots; }
+warm no_column
+expect "CSV missing column" 2 "no_column/trajectory.csv:1: key 'tau2': missing column \(column 30 should be 'tau2'\)"
+warm word
+expect "CSV non-numeric" 2 "word/trajectory.csv:5: key 'theta1': expected a number, found 'abc'"
+warm nan_csv
+expect "CSV NaN" 2 "nan_csv/trajectory.csv:5: key 'theta1': non-finite value 'nan'"
+
+# Command-line mistakes: an unknown flag, values out of range or not numbers.
+poly --robot "$ROBOT" --gait "$GAIT" --bogus
+expect "unknown flag" 2 "The following argument was not expected: --bogus"
+poly --robot "$ROBOT" --gait "$GAIT" --rate 0
+expect "rate 0" 2 "--rate: Value 0 not in range 1.000000 to 1000000.000000"
+poly --robot "$ROBOT" --gait "$GAIT" --rate fast
+expect "rate word" 2 "--rate: Failed parsing fast as a FLOAT"
+run optimize --config "$TMP/missing.yaml" --out "$TMP/out_dir" --quiet --no-plots
+expect "missing file" 2 "missing.yaml: file not found or not a regular file"
+
+echo "bad input CLI: all checks passed"

@@ -1,0 +1,84 @@
+// Locating violations of the gait problem for reports of failed solves: a disturbed variable or
+// constraint row is found by name, phase, node and row, where the disturbance was put.
+#include <gtest/gtest.h>
+
+#include "dynamics/robot_config.hpp"
+#include "ocp/gait_problem.hpp"
+#include "ocp/gait_solve.hpp"
+#include "ocp/initial_guess.hpp"
+
+namespace gaitopt::ocp {
+namespace {
+
+class RabbitViolations : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    config_ = new OcpConfig(
+        loadOcpConfig(std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/rabbit_kelly2017.yaml"));
+    config_->phases.front().segments = 4;
+    model_ = new dynamics::Model(dynamics::loadRobot(config_->robot_path));
+    problem_ =
+        new GaitProblem(buildGaitProblem(*model_, *config_, polynomialGuess(*model_, *config_)));
+  }
+  static void TearDownTestSuite() {
+    delete problem_;
+    delete model_;
+    delete config_;
+  }
+  static OcpConfig* config_;
+  static dynamics::Model* model_;
+  static GaitProblem* problem_;
+};
+OcpConfig* RabbitViolations::config_ = nullptr;
+dynamics::Model* RabbitViolations::model_ = nullptr;
+GaitProblem* RabbitViolations::problem_ = nullptr;
+
+TEST_F(RabbitViolations, AVariableBeyondItsBoundIsNamedByBlockPointAndElement) {
+  const PhaseLayout& l = problem_->ssp;
+  Eigen::VectorXd x = problem_->nlp.initialGuess();
+  const int point = 5, element = 2;  // theta3 (torso) at point 5
+  const int i = l.pointOffset(point) + element;
+  x(i) = problem_->nlp.upperBounds()(i) + 1e4;  // beyond any violation of the guess
+  const LocatedViolation v = worstBound(*problem_, x);
+  EXPECT_EQ(v.violation.name, "ssp_points");
+  EXPECT_EQ(v.phase, "ssp");
+  EXPECT_EQ(v.node_kind, "point");
+  EXPECT_EQ(v.node, point);
+  EXPECT_EQ(v.part, "element");
+  EXPECT_EQ(v.index, element);
+  EXPECT_NEAR(v.violation.amount, 1e4, 1e-9);
+  EXPECT_EQ(describe(v).rfind("ssp_points (ssp, point 5, element 2): ", 0), 0u) << describe(v);
+}
+
+TEST_F(RabbitViolations, AConstraintRowIsNamedBySetPhaseNodeAndRow) {
+  const PhaseLayout& l = problem_->ssp;
+  Eigen::VectorXd x = problem_->nlp.initialGuess();
+  // A huge stance-shank acceleration at point 6 breaks the dynamics there (D a, D ~ 1 kg m^2)
+  // far more than the defects of the segments around it (h T a / 6 ~ 0.03 a).
+  x(l.xdot(6, l.nq)) += 1e6;
+  const LocatedViolation v = worstConstraint(*problem_, x);
+  EXPECT_EQ(v.violation.name, "ssp_dynamics");
+  EXPECT_EQ(v.phase, "ssp");
+  EXPECT_EQ(v.node_kind, "point");
+  EXPECT_EQ(v.node, 6);
+  EXPECT_EQ(v.part, "row");
+  EXPECT_EQ(v.violation.index, 6 * model_->nLinks() + v.index);  // n dynamics rows per point
+  EXPECT_GT(v.violation.amount, 1e5);
+}
+
+TEST_F(RabbitViolations, ADefectIsNamedBySegment) {
+  const PhaseLayout& l = problem_->ssp;
+  Eigen::VectorXd x = problem_->nlp.initialGuess();
+  // Moving the angle of link 1 by 1e3 rad at the midpoint of segment 2 (point 5) moves the
+  // Hermite defect of that segment by as much; the dynamics see it through sines and cosines
+  // only.
+  x(l.x(5, 0)) += 1e3;
+  const LocatedViolation v = worstConstraint(*problem_, x);
+  EXPECT_EQ(v.violation.name, "ssp_defects");
+  EXPECT_EQ(v.node_kind, "segment");
+  EXPECT_EQ(v.node, 2);
+  EXPECT_EQ(v.index, l.nx);  // the Hermite row of theta1: after the nx Simpson rows
+}
+
+}  // namespace
+}  // namespace gaitopt::ocp
