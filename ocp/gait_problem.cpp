@@ -25,6 +25,15 @@ bool absWork(const OcpConfig& c) {
   return c.cost.needsWorkSlacks();
 }
 
+/// The friction coefficient of the optimiser's cones: the robot's, less the configured margin.
+/// @throws std::invalid_argument when the margin leaves no cone.
+double frictionBound(const dynamics::Model& model, const OcpConfig& c) {
+  const double mu = model.friction() - c.friction_margin;
+  if (!(mu > 0))
+    throw std::invalid_argument("friction_margin must be below the robot's friction coefficient");
+  return mu;
+}
+
 /// Algebraic variables of a point: lambda (DSP), then the work slacks s+, s- (abs_work cost).
 int algebraicSize(const OcpConfig& c, bool dsp, int n) {
   return (dsp ? 2 : 0) + (absWork(c) ? 2 * n : 0);
@@ -201,11 +210,10 @@ void addPhaseConstraints(GaitProblem& p, const dynamics::Model& model, const Ocp
     const bool zmp = c.zmp && model.joints().front().actuated;
     p.nlp.addConstraint(std::make_unique<PathConstraint>(
         phase + "_ground_contact", l,
-        std::make_shared<GroundContact>(model, dsp, zmp, p.step_length)));
+        std::make_shared<GroundContact>(model, dsp, zmp, p.step_length, frictionBound(model, c))));
   }
-  if (!dsp && c.clearance >= 0)
-    p.nlp.addConstraint(std::make_unique<PathConstraint>(
-        "ssp_clearance", l, std::make_shared<SwingHeight>(model, c.clearance)));
+  if (!dsp && c.clearance.enabled)
+    p.nlp.addConstraint(std::make_unique<SwingClearance>(model, l, c.clearance));
   addPhaseCost(p, model, c, l, dsp);
 }
 
@@ -238,7 +246,7 @@ Indices addTouchdown(GaitProblem& p, const dynamics::Model& model, const OcpConf
           RigidImpact{&model, both});
   if (both && c.ground_contact)
     addLink(p.nlp, "impulse_cones", 6, range(p.impact_offset + n + 2, 4), 0,
-            ImpulseCones{model.friction()}, 0.0, kInf);
+            ImpulseCones{frictionBound(model, c)}, 0.0, kInf);
   return range(p.impact_offset + 2, n);
 }
 

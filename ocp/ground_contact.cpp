@@ -10,9 +10,9 @@ using Row = Eigen::Matrix<double, 1, 5>;  // coefficients of (F_Bx, F_By, F_Ex, 
 
 }  // namespace
 
-GroundContact::GroundContact(const dynamics::Model& model, bool dsp, bool zmp, double step_length)
+GroundContact::GroundContact(const dynamics::Model& model, bool dsp, bool zmp, double step_length,
+                             double mu)
     : model_(&model), dsp_(dsp), n_(model.nLinks()) {
-  const double mu = model.friction();
   std::vector<Row> rows{Row(0, 1, 0, 0, 0), Row(-1, mu, 0, 0, 0), Row(1, mu, 0, 0, 0)};
   if (dsp) {
     rows.push_back(Row(0, 0, 0, 1, 0));

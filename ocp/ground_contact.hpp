@@ -17,7 +17,8 @@ namespace gaitopt::ocp {
 
 class GroundContact : public PointFunction {
  public:
-  GroundContact(const dynamics::Model& model, bool dsp, bool zmp, double step_length);
+  /// `mu`: the friction coefficient the cones use (the robot's, less any margin).
+  GroundContact(const dynamics::Model& model, bool dsp, bool zmp, double step_length, double mu);
   int rows() const override { return static_cast<int>(rows_.rows()); }
   void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override;
   void jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const override;

@@ -48,12 +48,23 @@ void checkStepDuration(const YamlReader& root, const OcpConfig& c) {
                                            lo, hi));
 }
 
+ClearanceProfile readClearance(const YamlReader& r) {
+  r.allowOnly({"peak", "shape"});
+  ClearanceProfile p{.enabled = true};
+  p.peak = r.number("peak", config::inRange(0, 1, "[m]"));
+  p.shape = r.choice("shape", {"sine_squared", "quartic"}) == "quartic"
+                ? ClearanceProfile::Shape::kQuartic
+                : ClearanceProfile::Shape::kSineSquared;
+  return p;
+}
+
 void readConstraints(const YamlReader& r, OcpConfig& c) {
   r.allowOnly({"torque_limits", "knee_limits", "angle_range", "rate_limit", "swing_descends",
-               "trailing_lifts", "ground_contact", "zmp", "clearance"});
+               "trailing_lifts", "ground_contact", "zmp", "clearance", "friction_margin"});
   c.ground_contact = r.booleanOr("ground_contact", true);
   c.zmp = r.booleanOr("zmp", true);
-  c.clearance = r.numberOr("clearance", -1.0, config::inRange(-1.0, 1.0, "[m] (negative: off)"));
+  c.friction_margin = r.numberOr("friction_margin", 0.0, config::inRange(0, 1, "(of mu)"));
+  if (r.has("clearance")) c.clearance = readClearance(r.map("clearance"));
   c.torque_limits = r.booleanOr("torque_limits", true);
   c.knee_limits = r.booleanOr("knee_limits", true);
   c.angle_range = r.numberOr("angle_range", 0.0, config::inRange(0, std::numbers::pi, "[rad]"));

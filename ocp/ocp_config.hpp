@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "ocp/clearance_profile.hpp"
 #include "ocp/collocation.hpp"
 #include "ocp/ipopt_adapter.hpp"
 
@@ -64,7 +65,10 @@ struct OcpConfig {
   bool trailing_lifts = true;  ///< old stance tip vertical velocity >= 0 after a single impact
   bool ground_contact = true;  ///< unilateral forces and friction cones at the tips in contact
   bool zmp = true;             ///< ZMP inside the support (only if the ankle is actuated)
-  double clearance = -1;       ///< swing tip height >= clearance in the SSP [m] (< 0: off)
+  ClearanceProfile clearance;  ///< swing tip height >= h(t / T_SSP) in the SSP
+  /// Friction cones narrowed to |F_t| <= (mu - friction_margin) F_n, forces and impulses, so a
+  /// tracking error does not make the optimum slip (dimensionless, < the robot's mu).
+  double friction_margin = 0;
   SolverOptions solver;
 };
 

@@ -96,4 +96,11 @@ void SwingHeight::hessian(const Eigen::VectorXd& v, const Eigen::VectorXd& weigh
   for (int j = 0; j < model_->nLinks(); ++j) hess(j, j) = -weights(0) * w(j) * std::cos(v(j));
 }
 
+SwingClearance::SwingClearance(const dynamics::Model& model, const PhaseLayout& layout,
+                               const ClearanceProfile& profile)
+    : PathConstraint("ssp_clearance", layout, std::make_shared<SwingHeight>(model)),
+      lower_(layout.points()) {
+  for (int p = 0; p < layout.points(); ++p) lower_(p) = profile.at(layout.time(p, 1.0));
+}
+
 }  // namespace gaitopt::ocp

@@ -3,6 +3,7 @@
 /// Running costs and kinematic path constraints of the gait, as point functions of a collocation
 /// point v = [theta, dtheta, ddtheta, tau] (see biped_dynamics.hpp).
 #include "dynamics/model.hpp"
+#include "ocp/clearance_profile.hpp"
 #include "ocp/point_function.hpp"
 
 namespace gaitopt::ocp {
@@ -82,23 +83,34 @@ class KneeDirection : public PointFunction {
   int n_;
 };
 
-/// Swing-tip height above the ground, y_E = sum_j a_j l_j cos(theta_j) (Mu 2.1) [m]; bounded
-/// below by the clearance.
+/// Swing-tip height above the ground, y_E = sum_j a_j l_j cos(theta_j) (Mu 2.1) [m]; never
+/// below it.
 class SwingHeight : public PointFunction {
  public:
-  SwingHeight(const dynamics::Model& model, double clearance)
-      : model_(&model), clearance_(clearance) {}
+  explicit SwingHeight(const dynamics::Model& model) : model_(&model) {}
   int rows() const override { return 1; }
   void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override;
   void jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const override;
   void hessian(const Eigen::VectorXd& v, const Eigen::VectorXd& w,
                Eigen::Ref<Eigen::MatrixXd> hess) const override;
-  Eigen::VectorXd lowerBounds() const override { return Eigen::VectorXd::Constant(1, clearance_); }
+  Eigen::VectorXd lowerBounds() const override { return Eigen::VectorXd::Zero(1); }
   Eigen::VectorXd upperBounds() const override { return Eigen::VectorXd::Constant(1, 1e20); }
 
  private:
   const dynamics::Model* model_;
-  double clearance_;
+};
+
+/// y_E(v_p) >= h(s_p) at every point p of the single support, s_p = t_p / T its phase fraction
+/// (clearance_profile.hpp). The points sit at fixed fractions of T, so each bound is a constant
+/// even when T is free: the rows and their derivatives are those of SwingHeight.
+class SwingClearance : public PathConstraint {
+ public:
+  SwingClearance(const dynamics::Model& model, const PhaseLayout& layout,
+                 const ClearanceProfile& profile);
+  Eigen::VectorXd lowerBounds() const override { return lower_; }
+
+ private:
+  Eigen::VectorXd lower_;  ///< h(s_p) per point [m]
 };
 
 }  // namespace gaitopt::ocp
