@@ -29,10 +29,22 @@ Eigen::VectorXd join(const VecD& theta, const VecD& dtheta) {
 
 /// The closed loop in one phase: controller torques, plant accelerations and contact forces.
 struct ClosedLoop {
+  ClosedLoop(const dynamics::Model& plant_, const TrackingController& controller_,
+             const Reference& ref_, Phase phase_, const std::optional<Push>& push_ = {},
+             int step_ = 0)
+      : plant(plant_),
+        controller(controller_),
+        ref(ref_),
+        phase(phase_),
+        push(push_),
+        step(step_) {}
+
   const dynamics::Model& plant;
   const TrackingController& controller;
   const Reference& ref;
   Phase phase;
+  std::optional<Push> push;  ///< acts in single support only
+  int step;                  ///< 0-based, for the push
 
   struct State {
     VecD theta, dtheta, ddtheta, tau;
@@ -40,26 +52,53 @@ struct ClosedLoop {
     gaits::Knot ref;
   };
 
-  State at(double t, const Eigen::VectorXd& x) const {
+  /// The closed loop at (t, x). The last evaluation is kept: the event functions and the
+  /// observer ask for the state an RK4 step ended at, and the next step's first stage starts
+  /// there, so 4 evaluations per step do instead of 6.
+  const State& at(double t, const Eigen::VectorXd& x) const {
+    if (cached_ && cached_t_ == t && cached_x_ == x) return cached_state_;
+    cached_state_ = evaluate(t, x);
+    cached_t_ = t;
+    cached_x_ = x;
+    cached_ = true;
+    return cached_state_;
+  }
+
+  Eigen::VectorXd rhs(double t, const Eigen::VectorXd& x) const {
+    const State& s = at(t, x);
+    return join(s.dtheta, s.ddtheta);
+  }
+
+  State evaluate(double t, const Eigen::VectorXd& x) const {
     const int n = plant.nLinks();
     State s{x.head(n), x.tail(n), {}, {}, {}, Vec2d::Zero(), ref.at(phase, t)};
     s.tau = controller.torque(phase, s.theta, s.dtheta, s.ref);
+    Vec2d pushed = Vec2d::Zero();  // the push's force on the hip
     if (phase == Phase::kSsp) {
       s.ddtheta = dynamics::sspForwardDynamics(plant, s.theta, s.dtheta, s.tau);
+      pushed = pushForce(push, step, t, ref.touchdownTime());
+      if (!pushed.isZero())  // D thetaddot = ... + J_H^T F (Mu 2.7 with an external force)
+        s.ddtheta +=
+            dynamics::massMatrix<double>(plant, s.theta)
+                .ldlt()
+                .solve(dynamics::pointJacobian<double>(plant.hipWeights(), s.theta).transpose() *
+                       pushed);
     } else {
       const auto dsp = dynamics::dspForwardDynamics(plant, s.theta, s.dtheta, s.tau);
       s.ddtheta = dsp.ddtheta;
       s.force_swing = dsp.force_swing;
     }
-    s.force_stance =
-        dynamics::stanceForce<double>(plant, s.theta, s.dtheta, s.ddtheta, s.force_swing);
+    // The ground carries what the push does not: F_B = m (a_com + g) - F_E - F_push.
+    s.force_stance = dynamics::stanceForce<double>(plant, s.theta, s.dtheta, s.ddtheta,
+                                                   Vec2d(s.force_swing + pushed));
     return s;
   }
 
-  Eigen::VectorXd rhs(double t, const Eigen::VectorXd& x) const {
-    const State s = at(t, x);
-    return join(s.dtheta, s.ddtheta);
-  }
+  // The cache of at(); the phase's closed loop is local to one step, never shared by threads.
+  mutable bool cached_ = false;
+  mutable double cached_t_ = 0;
+  mutable Eigen::VectorXd cached_x_;
+  mutable State cached_state_;
 };
 
 double legLength(const dynamics::Model& m) {
@@ -101,6 +140,31 @@ PhaseOutcome runPhase(const ClosedLoop& loop, const Events& events, int first_fa
   return out;
 }
 
+/// The SSP from the step start to touchdown, integrated in pieces between the push pulse's
+/// switching times, so no RK4 step straddles a jump of the force.
+PhaseOutcome runSingleSupport(const ClosedLoop& ssp, const Events& events,
+                              const std::vector<std::string>& names, const Eigen::VectorXd& x0,
+                              const EventIntegratorOptions& o, const StepObserver& observe) {
+  const double t_end = 3 * ssp.ref.touchdownTime();
+  std::vector<double> ends;
+  if (ssp.push && ssp.push->step == ssp.step + 1) {
+    const double start = pushStart(*ssp.push, ssp.ref.touchdownTime());
+    for (double switching : {start, start + ssp.push->duration})
+      if (switching > 0 && switching < t_end) ends.push_back(switching);
+  }
+  ends.push_back(t_end);
+  double t = 0;
+  Eigen::VectorXd x = x0;
+  PhaseOutcome out;
+  for (double end : ends) {
+    out = runPhase(ssp, events, 1, names, t, x, end, o, observe);
+    if (!out.failure.empty() || out.end.event >= 0) return out;
+    t = out.end.t;
+    x = out.end.x;
+  }
+  return out;
+}
+
 }  // namespace
 
 namespace {
@@ -128,9 +192,6 @@ struct StepRecorder {
 /// the rigid impulse analysis ignores the finite ground force that still loads the trailing
 /// tip, which then decides lift-off in the double support [m/s].
 constexpr double kGentleLiftoff = 0.01;
-// An impulse the robot's weight delivers within 1 ms is absorbed by the finite contact force
-// (friction on the weight) rather than by an impulsive one, so it is not checked for slip [s].
-constexpr double kNegligibleImpulseTime = 1e-3;
 
 /// The impact map by Mu's conditions; "" when neither is admissible or the impulse slips.
 std::string chooseImpact(const dynamics::Model& plant, const VecD& theta, VecD& dtheta,
@@ -157,10 +218,10 @@ std::string chooseImpact(const dynamics::Model& plant, const VecD& theta, VecD& 
 StepResult simulateStep(const dynamics::Model& plant, const TrackingController& controller,
                         const Reference& ref, const VecD& theta0, const VecD& dtheta0,
                         const EventIntegratorOptions& o, const WalkLog& log, double t0,
-                        int step_index, double stance_x) {
+                        int step_index, double stance_x, const std::optional<Push>& push) {
   StepResult r;
   StepRecorder recorder{r, log, step_index, stance_x};
-  const ClosedLoop ssp{plant, controller, ref, Phase::kSsp};
+  const ClosedLoop ssp{plant, controller, ref, Phase::kSsp, push, step_index};
   const auto ssp_events = [&](double t, const Eigen::VectorXd& x) {
     const auto s = ssp.at(t, x);
     const Vec2d tip = dynamics::swingTip<double>(plant, s.theta);
@@ -170,8 +231,8 @@ StepResult simulateStep(const dynamics::Model& plant, const TrackingController& 
   };
   const std::vector<std::string> ssp_names{"touchdown", kFailures[0], kFailures[1], kFailures[2],
                                            kFailures[3]};
-  PhaseOutcome phase = runPhase(ssp, ssp_events, 1, ssp_names, 0.0, join(theta0, dtheta0),
-                                3 * ref.touchdownTime(), o, recorder.observer(ssp, t0));
+  PhaseOutcome phase = runSingleSupport(ssp, ssp_events, ssp_names, join(theta0, dtheta0), o,
+                                        recorder.observer(ssp, t0));
   const int n = plant.nLinks();
   VecD theta = phase.end.x.head(n), dtheta = phase.end.x.tail(n);
   r.ssp_duration = phase.end.t;
@@ -220,7 +281,7 @@ WalkResult simulateWalk(const dynamics::Model& plant, const TrackingController& 
   double t = 0, stance_x = 0;
   for (int k = 0; k < options.steps; ++k) {
     StepResult s = simulateStep(plant, controller, ref, theta, dtheta, options.integrator, log, t,
-                                k, stance_x);
+                                k, stance_x, options.push);
     w.max_tracking_error = std::max(w.max_tracking_error, s.max_tracking_error);
     w.steps.push_back(s);
     if (!s.ok) {

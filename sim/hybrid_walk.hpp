@@ -9,18 +9,25 @@
 /// (2.38) into the next step. A step fails on a fall (hip too low, torso beyond 60 deg), a slip
 /// (friction cone left) or a tip pulling on the ground.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "dynamics/model.hpp"
 #include "sim/event_integrator.hpp"
+#include "sim/push.hpp"
 #include "sim/reference.hpp"
 #include "sim/tracking_controller.hpp"
 
 namespace gaitopt::sim {
 
-struct WalkOptions {
+/// What a walk does, whatever the ground: how many steps, and an optional push.
+struct WalkPlan {
   int steps = 20;
+  std::optional<Push> push;
+};
+
+struct WalkOptions : WalkPlan {
   EventIntegratorOptions integrator;
 };
 
@@ -30,8 +37,9 @@ struct WalkSample {
   int step = 0;
   gaits::Phase phase = gaits::Phase::kSsp;
   VecD theta, dtheta, theta_ref, tau, tau_ref;
-  Vec2d force_stance = Vec2d::Zero(), force_swing = Vec2d::Zero();
+  Vec2d force_stance = Vec2d::Zero(), force_swing = Vec2d::Zero();  ///< ground on robot [N]
   double stance_x = 0;  ///< world x of the stance tip B [m]
+  double stance_y = 0;  ///< world y of B [m]: 0 on rigid ground, below 0 while it sinks in
 };
 using WalkLog = std::function<void(const WalkSample&)>;
 
@@ -50,7 +58,8 @@ struct StepResult {
 StepResult simulateStep(const dynamics::Model& plant, const TrackingController& controller,
                         const Reference& ref, const VecD& theta0, const VecD& dtheta0,
                         const EventIntegratorOptions& options, const WalkLog& log = {},
-                        double t0 = 0, int step_index = 0, double stance_x = 0);
+                        double t0 = 0, int step_index = 0, double stance_x = 0,
+                        const std::optional<Push>& push = {});
 
 struct WalkResult {
   int steps_completed = 0;

@@ -1,6 +1,6 @@
 // Closed-loop walking on rigid ground: the tracking controllers on the exact model add nothing to
-// the reference's torques (polynomial and optimal five-link gaits), walk the polynomial gait for
-// 20 planned steps, and the Poincare multipliers of the cycle lie inside the unit circle.
+// the reference's torques (polynomial and optimal five-link gaits), walk both gaits for 20
+// planned steps, and the Poincare multipliers of each cycle lie inside the unit circle.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -26,8 +26,12 @@ class FiveLinkWalk : public ::testing::Test {
     // At its collocation points, where the optimum satisfies the dynamics.
     optimal_ =
         new gaits::Trajectory(ocp::reconstruct(solution.problem, *model_, solution.result.x));
+    // What `gaitopt optimize` exports (trajectory.csv): the scheme's polynomials at 1 kHz.
+    optimal_export_ = new gaits::Trajectory(
+        ocp::reconstructDense(solution.problem, *model_, solution.result.x, 1000.0));
   }
   static void TearDownTestSuite() {
+    delete optimal_export_;
     delete optimal_;
     delete poly_;
     delete model_;
@@ -36,11 +40,12 @@ class FiveLinkWalk : public ::testing::Test {
     return TrackingController(*model_, makeTrackingLaw(law, TrackingGains{}));
   }
   static dynamics::Model* model_;
-  static gaits::Trajectory *poly_, *optimal_;
+  static gaits::Trajectory *poly_, *optimal_, *optimal_export_;
 };
 dynamics::Model* FiveLinkWalk::model_ = nullptr;
 gaits::Trajectory* FiveLinkWalk::poly_ = nullptr;
 gaits::Trajectory* FiveLinkWalk::optimal_ = nullptr;
+gaits::Trajectory* FiveLinkWalk::optimal_export_ = nullptr;
 
 TEST_F(FiveLinkWalk, OnTheReferenceTheControllersAddNoTorqueToTheFeedForward) {
   for (const std::string law : {"computed_torque", "sliding_mode"}) {
@@ -62,29 +67,41 @@ constexpr int kSteps = 20;
 constexpr int kSteps = 2;
 #endif
 
-TEST_F(FiveLinkWalk, PolynomialGaitWalksTwentyStepsOnAStableCycle) {
-  // (The optimal gait is not walked here yet: its swing tip grazes the ground between the
-  // collocation points, where clearance 0 is not enforced, and touches down early.)
-  for (const auto* traj : {poly_}) {
-    const Reference ref(*traj);
+TEST_F(FiveLinkWalk, BothGaitsWalkTwentyStepsOnAStableCycle) {
+  // The planned step: touchdown at 0.6 s, 0.35 m ahead, on both the polynomial gait and the
+  // optimum as exported (trajectory.csv at 1 kHz). Both set the swing tip down at rest, so the
+  // simulator's contact threshold (1 um above the ground) is reached early: measured 0.67 ms
+  // (polynomial) and 0.26 ms (optimal), advance within 4e-6 m. With clearance 0 between the
+  // optimum's points it touched down at 0.537 s; with friction margin 0.1 computed torque
+  // slipped at the start of the double support, where the trailing tip carries only 55-75 N.
+  const std::pair<std::string, const gaits::Trajectory*> gaits[] = {{"polynomial", poly_},
+                                                                    {"optimal", optimal_export_}};
+  for (const auto& [name, step] : gaits) {
+    const Reference ref(*step);
     for (const std::string law : {"computed_torque", "sliding_mode"}) {
+      const std::string label = name + "_" + law;
       const TrackingController c = controller(law);
       WalkOptions options;
       options.steps = kSteps;
       const WalkResult w = simulateWalk(*model_, c, ref, options);
-      EXPECT_EQ(w.steps_completed, kSteps) << law << ": " << w.failure;
+      EXPECT_EQ(w.steps_completed, kSteps) << label << ": " << w.failure;
       if (kSteps < 20) continue;
       const PoincareAnalysis p = analysePoincare(*model_, c, ref);
-      ASSERT_TRUE(p.ok) << p.failure;
-      RecordProperty(law + "_max_multiplier", fmt::format("{:.4f}", p.max_multiplier));
-      RecordProperty(law + "_tracking_error", fmt::format("{:.2e}", w.max_tracking_error));
-      for (const auto& step : w.steps) {  // the planned step: touchdown at 0.6 s, 0.35 m ahead
-        EXPECT_EQ(step.impact, "double");
-        EXPECT_NEAR(step.ssp_duration, ref.touchdownTime(), 2e-3);
-        EXPECT_NEAR(step.advance, ref.stepLength(), 1e-3);
+      ASSERT_TRUE(p.ok) << label << ": " << p.failure;
+      double touchdown_error = 0, advance_error = 0;
+      for (const auto& s : w.steps) {
+        EXPECT_EQ(s.impact, "double") << label;
+        touchdown_error = std::max(touchdown_error, std::abs(s.ssp_duration - ref.touchdownTime()));
+        advance_error = std::max(advance_error, std::abs(s.advance - ref.stepLength()));
       }
-      EXPECT_LT(p.max_multiplier, 1.0) << law;
-      EXPECT_LT(p.fixed_point_residual, 1e-6) << law;
+      RecordProperty(label + "_max_multiplier", fmt::format("{:.4f}", p.max_multiplier));
+      RecordProperty(label + "_tracking_error", fmt::format("{:.2e}", w.max_tracking_error));
+      RecordProperty(label + "_touchdown_error_s", fmt::format("{:.2e}", touchdown_error));
+      RecordProperty(label + "_advance_error_m", fmt::format("{:.2e}", advance_error));
+      EXPECT_LT(touchdown_error, 2e-3) << label;
+      EXPECT_LT(advance_error, 1e-4) << label;
+      EXPECT_LT(p.max_multiplier, 1.0) << label;
+      EXPECT_LT(p.fixed_point_residual, 1e-6) << label;
     }
   }
 }

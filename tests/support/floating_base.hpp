@@ -1,48 +1,26 @@
 #pragma once
-/// An independent reference formulation for the tests: the chain with a free base,
-/// q = (x_b, y_b, theta_1..theta_n), mass matrix (dynamics/floating_base.hpp) and forces
-/// assembled from the CoM Jacobians (virtual work), not from Mu's closed forms. Contacts at B and E
-/// enter through their Jacobians and are solved as KKT systems (notes/mu2004.md sec. 3.5).
+/// The chain with a free base for the tests, q = (x_b, y_b, theta_1..theta_n): mass matrix,
+/// bias and tip Jacobians from the library (dynamics/floating_base_dynamics.hpp), assembled from
+/// CoM Jacobians by virtual work, not from Mu's closed forms, so it is an independent check of
+/// them. Contacts at B and E enter through their Jacobians and are solved as KKT systems
+/// (notes/mu2004.md sec. 3.5).
+#include <utility>
+
 #include <Eigen/Dense>
 
-#include "dynamics/floating_base.hpp"
-#include "dynamics/joint_coordinates.hpp"
-#include "dynamics/kinematics.hpp"
+#include "dynamics/floating_base_dynamics.hpp"
 
 namespace gaitopt::test {
 
-struct FloatingBase {
-  Eigen::MatrixXd mass;    ///< (n+2)^2
-  Eigen::VectorXd bias;    ///< Coriolis + gravity, n+2
-  Eigen::MatrixXd jac_b;   ///< 2 x (n+2), velocity of B
-  Eigen::MatrixXd jac_e;   ///< 2 x (n+2), velocity of E
-  Eigen::Vector2d jdot_e;  ///< Jdot_E qdot
-};
+using FloatingBase = dynamics::FloatingBaseDynamics;
 
 inline FloatingBase floatingBase(const dynamics::Model& m, const VecD& theta, const VecD& dtheta) {
-  const int n = m.nLinks();
-  FloatingBase fb{Eigen::MatrixXd::Zero(n + 2, n + 2), Eigen::VectorXd::Zero(n + 2),
-                  Eigen::MatrixXd::Zero(2, n + 2), Eigen::MatrixXd::Zero(2, n + 2),
-                  Eigen::Vector2d::Zero()};
-  fb.mass = dynamics::floatingBaseMassMatrix(m, theta);
-  for (int i = 0; i < n; ++i) {
-    const Eigen::MatrixXd jc = dynamics::floatingJacobian(m.comWeights(i), theta);
-    const double mi = m.link(i).mass;
-    const Vec2d acc_bias = dynamics::pointBias(m.comWeights(i), theta, dtheta);
-    fb.bias += mi * jc.transpose() * (acc_bias + Eigen::Vector2d(0, m.gravity()));
-  }
-  fb.jac_b.leftCols(2).setIdentity();
-  fb.jac_e.leftCols(2).setIdentity();
-  fb.jac_e.rightCols(n) = dynamics::pointJacobian(m.tipWeights(), theta);
-  fb.jdot_e = dynamics::pointBias(m.tipWeights(), theta, dtheta);
-  return fb;
+  return dynamics::floatingBaseDynamics(m, theta, dtheta);
 }
 
 /// Generalised force of joint torques on q: zero on the base, M^T tau on theta.
 inline Eigen::VectorXd actuation(const dynamics::Model& m, const VecD& tau) {
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(m.nLinks() + 2);
-  f.tail(m.nLinks()) = dynamics::generalizedTorque(tau);
-  return f;
+  return dynamics::floatingBaseActuation(m, tau);
 }
 
 /// Solves mass*x = rhs + J^T f subject to J x = c (KKT). Returns (x, f).

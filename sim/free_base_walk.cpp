@@ -1,0 +1,213 @@
+#include "sim/free_base_walk.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "dynamics/floating_base_dynamics.hpp"
+#include "dynamics/kinematics.hpp"
+#include "dynamics/relabel.hpp"
+
+namespace gaitopt::sim {
+namespace {
+
+using gaits::Phase;
+constexpr double kMaxTorsoLean = std::numbers::pi / 3;  // 60 deg from upright: a fall
+
+VecD anglesOf(const dynamics::Model& plant, const Eigen::VectorXd& q) {
+  return q.tail(plant.nLinks());
+}
+
+double legLength(const dynamics::Model& m) {
+  double length = 0;
+  for (int i = 0; i < m.legLinks(); ++i) length += m.link(i).length;
+  return length;
+}
+
+/// The step in progress: phase, clocks and the time each stance tip has been unloaded.
+struct StepRun {
+  FreeBaseState s;
+  Phase phase = Phase::kSsp;
+  double clock = 0;    ///< the controller's step clock (jumps at touchdown) [s]
+  double elapsed = 0;  ///< time since the step started [s]
+  double b_unloaded = 0, e_unloaded = 0;
+  double b_x0 = 0;  ///< world x of the stance tip at the step start [m]
+  TipForces force;
+};
+
+/// Everything a step needs that does not change during the walk.
+struct Walker {
+  const dynamics::Model& plant;
+  const TrackingController& controller;
+  const Reference& ref;
+  const FreeBaseGround& ground;
+  const WalkLog& log;
+
+  TorqueFeedback feedback(const StepRun& run) const {
+    return [this, phase = run.phase, clock = run.clock](double dt, const Eigen::VectorXd& q,
+                                                        const Eigen::VectorXd& v) {
+      return controller.torque(phase, anglesOf(plant, q), anglesOf(plant, v),
+                               ref.at(phase, clock + dt));
+    };
+  }
+
+  /// Why the walk cannot go on after this time step ("" while it can).
+  std::string failure(const StepRun& run) const {
+    const Eigen::VectorXd& q = run.s.q;
+    const double e_y = dynamics::floatingSwingTip(plant, q)(1);
+    if (!q.allFinite() || !run.s.v.allFinite() || -q(1) > kMaxPenetration || -e_y > kMaxPenetration)
+      return "diverged: non-finite state or a tip deeper than 5 cm";
+    const VecD theta = anglesOf(plant, q);
+    if (q(1) + dynamics::hip<double>(plant, theta)(1) < 0.5 * legLength(plant))
+      return "fall: hip below half the leg length";
+    if (plant.torso() && std::abs(theta(*plant.torso())) > kMaxTorsoLean)
+      return "fall: torso beyond 60 deg";
+    // In the DSP an unloaded B is the trailing tip lifting off: it ends the phase instead.
+    if (run.phase == Phase::kSsp && run.b_unloaded >= kLiftoffTime)
+      return "stance tip lifts off the ground";
+    if (run.e_unloaded >= kLiftoffTime) return "leading tip lifts off the ground";
+    if (std::abs(q(0) - run.b_x0) > kMaxSlip) return "stance tip slips";
+    return "";
+  }
+
+  /// Touchdown: E, ahead of B, is loaded or at the ground.
+  bool touchedDown(const StepRun& run) const {
+    const Vec2d e = dynamics::floatingSwingTip(plant, run.s.q);
+    return e(0) > run.s.q(0) && (run.force.e(1) > 0 || e(1) <= 0);
+  }
+
+  void record(const StepRun& run, double t0, int index, StepResult& r) const {
+    const VecD theta = anglesOf(plant, run.s.q), dtheta = anglesOf(plant, run.s.v);
+    const gaits::Knot k = ref.at(run.phase, run.clock);
+    r.max_tracking_error =
+        std::max(r.max_tracking_error, (theta - VecD(k.theta)).cwiseAbs().maxCoeff());
+    if (!log) return;
+    log({t0 + run.elapsed, index, run.phase, theta, dtheta, k.theta,
+         controller.torque(run.phase, theta, dtheta, k), k.tau, run.force.b, run.force.e,
+         run.s.q(0), run.s.q(1)});
+  }
+
+  /// One time step; false when the step has ended (normally or not).
+  bool tick(StepRun& run, double t0, int index, StepResult& r) const {
+    const ContactStep cs = ground.step(run.s, feedback(run));
+    if (!cs.failure.empty()) {
+      r.failure = cs.failure;
+      return false;
+    }
+    const double h = ground.time_step;
+    run.s = cs.next;
+    run.force = cs.force;
+    run.clock += h;
+    run.elapsed += h;
+    run.b_unloaded = run.force.b(1) > 0 ? 0 : run.b_unloaded + h;
+    run.e_unloaded = run.phase == Phase::kDsp && run.force.e(1) <= 0 ? run.e_unloaded + h : 0;
+    r.failure = failure(run);
+    if (!r.failure.empty()) return false;
+    record(run, t0, index, r);
+    if (run.phase == Phase::kSsp) {
+      if (!touchedDown(run)) return true;
+      r.ssp_duration = run.elapsed;
+      run.clock = ref.touchdownTime();
+      run.phase = Phase::kDsp;
+      return ref.hasDsp();
+    }
+    // The trailing tip unloading ends the DSP early, as the trailing-force event of the rigid
+    // walk does.
+    const bool over = run.clock >= ref.endTime() - h / 2 || run.b_unloaded >= kUnloadTime;
+    if (over) r.dsp_duration = run.elapsed - r.ssp_duration;
+    return !over;
+  }
+
+  StepResult step(FreeBaseState& s, double t0, int index, const std::optional<Push>& push) const {
+    StepResult r;
+    r.impact = ground.name;
+    StepRun run;
+    run.s = s;
+    run.b_x0 = s.q(0);
+    const auto max_ticks = static_cast<long>(std::ceil(3 * ref.endTime() / ground.time_step));
+    long ticks = 0;
+    // The push's force at the middle of each time step, held over it.
+    const auto pushed = [&] {
+      const double mid = run.clock + 0.5 * ground.time_step;
+      return run.phase == Phase::kSsp ? pushForce(push, index, mid, ref.touchdownTime())
+                                      : Vec2d::Zero();
+    };
+    for (run.s.hip_force = pushed(); tick(run, t0, index, r); run.s.hip_force = pushed()) {
+      if (++ticks < max_ticks) continue;
+      r.failure = "the step did not end within 3 times the planned step";
+      break;
+    }
+    r.ok = r.failure.empty();
+    s = run.s;
+    if (!r.ok) {
+      r.theta = anglesOf(plant, s.q);
+      r.dtheta = anglesOf(plant, s.v);
+      if (run.phase == Phase::kSsp) r.impact.clear();
+      return r;
+    }
+    s = relabel(s, r);
+    return r;
+  }
+
+  /// Mu (2.38): E becomes the stance tip, the base moves there and the anchors swap.
+  FreeBaseState relabel(const FreeBaseState& s, StepResult& r) const {
+    const VecD theta = anglesOf(plant, s.q), dtheta = anglesOf(plant, s.v);
+    const Vec2d e = dynamics::floatingSwingTip(plant, s.q);
+    r.advance = e(0) - s.q(0);
+    r.theta = dynamics::relabelAngles<double>(plant, theta);
+    r.dtheta = dynamics::relabelRates<double>(dtheta);
+    FreeBaseState next{s.q, s.v, s.anchor.reverse()};
+    next.q << e, r.theta;
+    next.v << dynamics::floatingSwingTipVelocity(plant, s.q, s.v), r.dtheta;
+    return next;
+  }
+};
+
+}  // namespace
+
+Eigen::VectorXd hipForce(const dynamics::Model& plant, const Eigen::VectorXd& q,
+                         const Vec2d& force) {
+  if (force.isZero()) return Eigen::VectorXd::Zero(q.size());
+  return dynamics::floatingJacobian(plant.hipWeights(), VecD(q.tail(plant.nLinks()))).transpose() *
+         force;
+}
+
+FreeBaseState freeBaseStart(const dynamics::Model& plant, const VecD& theta, const VecD& dtheta,
+                            double x_b, double y_b) {
+  const int n = plant.nLinks();
+  FreeBaseState s{Eigen::VectorXd(n + 2), Eigen::VectorXd(n + 2)};
+  s.q << x_b, y_b, theta;
+  s.v << 0, 0, dtheta;
+  s.anchor << x_b, dynamics::floatingSwingTip(plant, s.q)(0);
+  return s;
+}
+
+WalkResult walkFreeBase(const dynamics::Model& plant, const TrackingController& controller,
+                        const Reference& ref, const FreeBaseGround& ground, const WalkPlan& plan,
+                        const WalkLog& log, const VecD& theta0, const VecD& dtheta0) {
+  if (!(std::isfinite(ground.time_step) && ground.time_step > 0))
+    throw std::invalid_argument(fmt::format("{} ground: time step must be positive, got {}",
+                                            ground.name, ground.time_step));
+  const Walker walker{plant, controller, ref, ground, log};
+  FreeBaseState s = freeBaseStart(plant, theta0.size() ? theta0 : VecD(ref.start().theta),
+                                  dtheta0.size() ? dtheta0 : VecD(ref.start().dtheta));
+  WalkResult w;
+  double t = 0;
+  for (int k = 0; k < plan.steps; ++k) {
+    const StepResult r = walker.step(s, t, k, plan.push);
+    w.max_tracking_error = std::max(w.max_tracking_error, r.max_tracking_error);
+    w.steps.push_back(r);
+    if (!r.ok) {
+      w.fell = true;
+      w.failure = fmt::format("step {}: {}", k + 1, r.failure);
+      break;
+    }
+    ++w.steps_completed;
+    t += r.ssp_duration + r.dsp_duration;
+  }
+  return w;
+}
+
+}  // namespace gaitopt::sim

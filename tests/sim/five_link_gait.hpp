@@ -1,0 +1,36 @@
+#pragma once
+// The five-link robot of Mu (2004) and its polynomial gait (configs/gaits/mu2004.yaml), built
+// once per test program for the ground-model tests.
+#include <string>
+
+#include "dynamics/robot_config.hpp"
+#include "gaits/gait_params.hpp"
+#include "gaits/hip_plan_search.hpp"
+#include "gaits/polynomial_gait.hpp"
+#include "sim/tracking_controller.hpp"
+
+namespace gaitopt::sim::test {
+
+inline const dynamics::Model& fiveLinkRobot() {
+  static const dynamics::Model model = dynamics::loadRobot(std::string(GAITOPT_SOURCE_DIR) +
+                                                           "/configs/robots/mu2004_five_link.yaml");
+  return model;
+}
+
+/// The polynomial gait at 1 kHz, as the rigid walk test uses it.
+inline const gaits::Trajectory& polynomialGait() {
+  static const gaits::Trajectory gait = [] {
+    const auto params =
+        gaits::loadGait(std::string(GAITOPT_SOURCE_DIR) + "/configs/gaits/mu2004.yaml");
+    const auto plan = gaits::searchHipPlan(fiveLinkRobot(), params).plan;
+    return gaits::buildTrajectory(gaits::PolynomialGait(fiveLinkRobot(), params, plan),
+                                  fiveLinkRobot(), 1000);
+  }();
+  return gait;
+}
+
+inline TrackingController computedTorque() {
+  return TrackingController(fiveLinkRobot(), makeTrackingLaw("computed_torque", TrackingGains{}));
+}
+
+}  // namespace gaitopt::sim::test

@@ -1,0 +1,49 @@
+// Scenarios: every sweep parameter sets what it names and reads back; Mu's uncertainty lands on
+// the plant or on the controller's model as asked; a stiffness sweep needs the impedance ground.
+#include <gtest/gtest.h>
+
+#include "sim/scenario.hpp"
+#include "tests/sim/five_link_gait.hpp"
+
+namespace gaitopt::sim {
+namespace {
+
+TEST(Scenario, EverySweepParameterReadsBackWhatItSets) {
+  Scenario s;
+  s.ground = CompliantGround{{1e7, 4.5e7, 1.5, 5e5, 2e3, 0.6}, 2e-4};
+  for (const auto& p : sweepParameters()) {
+    const double value = 0.5 * (p.first + p.last);
+    setSweepValue(s, p.name, value);
+    EXPECT_EQ(sweepValue(s, p.name), value) << p.name;
+  }
+  EXPECT_EQ(s.parameter_errors.inertia, s.parameter_errors.mass);
+  EXPECT_EQ(s.parameter_errors.com, s.parameter_errors.length);
+  ASSERT_TRUE(s.push.has_value());
+  EXPECT_EQ(s.push->step, 2);
+  EXPECT_FALSE(s.push->time.has_value()) << "a swept push acts at mid single support";
+}
+
+TEST(Scenario, StiffnessNeedsTheImpedanceGroundAndNamesAreChecked) {
+  Scenario s;  // rigid ground
+  EXPECT_THROW(setSweepValue(s, "stiffness", 1e6), std::invalid_argument);
+  EXPECT_TRUE(std::isnan(sweepValue(s, "stiffness")));
+  EXPECT_THROW(setSweepValue(s, "wind", 1), std::invalid_argument);
+  EXPECT_THROW(sweepParameter("wind"), std::invalid_argument);
+}
+
+TEST(Scenario, UncertaintyGoesToThePlantOrToTheControllersModel) {
+  const auto& nominal = test::fiveLinkRobot();
+  Scenario s;
+  s.parameter_errors = dynamics::muUncertaintyCase(2);
+  s.friction = 0.3;
+  EXPECT_NEAR(scenarioPlant(nominal, s).totalMass(), 1.4 * nominal.totalMass(), 1e-12);
+  EXPECT_EQ(scenarioPlant(nominal, s).friction(), 0.3);
+  EXPECT_EQ(scenarioControllerModel(nominal, s).totalMass(), nominal.totalMass());
+  s.errors_on_controller = true;  // Mu's setting
+  EXPECT_EQ(scenarioPlant(nominal, s).totalMass(), nominal.totalMass());
+  EXPECT_EQ(scenarioPlant(nominal, s).friction(), 0.3);
+  EXPECT_NEAR(scenarioControllerModel(nominal, s).totalMass(), 1.4 * nominal.totalMass(), 1e-12);
+}
+
+}  // namespace
+}  // namespace gaitopt::sim
