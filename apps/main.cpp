@@ -10,6 +10,8 @@
 #include "apps/inspect_command.hpp"
 #include "apps/optimize_command.hpp"
 #include "apps/poly_command.hpp"
+#include "apps/simulate_command.hpp"
+#include "apps/stability_command.hpp"
 
 namespace {
 
@@ -28,6 +30,8 @@ void configure(CLI::App& app) {
   gaitopt::apps::registerPolyCommand(app);
   gaitopt::apps::registerOptimizeCommand(app);
   gaitopt::apps::registerImpactMapCommand(app);
+  gaitopt::apps::registerSimulateCommand(app);
+  gaitopt::apps::registerStabilityCommand(app);
 }
 
 /// Parses the command line and runs the chosen subcommand (from its callback).

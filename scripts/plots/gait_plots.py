@@ -15,8 +15,6 @@ vertical, clockwise positive. Step 2 is step 1 with the legs swapped (link i <->
 links turned by pi, the torso unchanged), so both steps come from the one step in the file.
 A missing file, column or key, or a malformed value, ends the script with exit code 1.
 """
-import csv
-import json
 import math
 import os
 import re
@@ -27,6 +25,9 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+
+import plot_io  # noqa: E402
+from plot_io import InputError  # noqa: E402
 
 DPI = 110
 DSP_SHADE = {"color": "tab:purple", "alpha": 0.12, "lw": 0}
@@ -39,85 +40,37 @@ SUMMARY_NUMBERS = ["step_length", "duration", "speed", "friction", "min_normal_f
 KINEMATICS_TOLERANCE = 1e-6
 
 
-class InputError(Exception):
-    """A missing or malformed input file; the message names the file and what is wrong."""
-
-
 # ---------------------------------------------------------------------------------------------
 # Reading
 
 
 def read_csv(path):
     """Returns (columns: name -> float array, phase: str array, n_links)."""
-    try:
-        with open(path, encoding="utf-8", newline="") as f:
-            rows = list(csv.reader(f))
-    except OSError as e:
-        raise InputError(f"{path}: cannot read the trajectory ({e.strerror})") from e
-    if len(rows) < 3:
-        raise InputError(f"{path}: expected a header row and at least two data rows")
-    header = rows[0]
+    header, rows = plot_io.read_rows(path, "trajectory", min_rows=2)
     n = sum(1 for name in header if re.fullmatch(r"theta[1-9][0-9]*", name))
     needed = (["t", "phase"] + [f"theta{i}" for i in range(1, n + 1)]
               + [f"dtheta{i}" for i in range(1, n + 1)] + TAIL_COLUMNS)
-    for name in needed:
-        if name not in header:
-            raise InputError(f"{path}: missing column '{name}'")
+    plot_io.require_columns(path, header, needed)
     if n < 2:
         raise InputError(f"{path}: found {n} theta<i> columns, a biped has at least two links")
-    cols = {name: [] for name in needed}
-    for line, row in enumerate(rows[1:], start=2):
-        if len(row) != len(header):
-            raise InputError(f"{path}:{line}: {len(row)} fields, the header has {len(header)}")
-        for name in needed:
-            cols[name].append(row[header.index(name)])
-    phase = np.array(cols.pop("phase"))
+    cols = plot_io.columns(path, header, rows, needed, strings={"phase"})
+    phase = cols.pop("phase")
     check_phases(path, phase)
-    cols = {name: to_numbers(path, name, v) for name, v in cols.items()}
-    if np.any(np.diff(cols["t"]) < 0):
-        line = int(np.argmax(np.diff(cols["t"]) < 0)) + 3
-        raise InputError(f"{path}:{line}: column 't': time goes backwards")
+    plot_io.check_increasing(path, "t", cols["t"])
     return cols, phase, n
-
-
-def to_numbers(path, name, texts):
-    values = np.empty(len(texts))
-    for k, text in enumerate(texts):
-        try:
-            values[k] = float(text)
-        except ValueError:
-            values[k] = np.nan
-        if not np.isfinite(values[k]):
-            raise InputError(f"{path}:{k + 2}: column '{name}': expected a finite number, "
-                             f"found '{text}'")
-    return values
 
 
 def check_phases(path, phase):
     """SSP rows first, then (optionally) DSP rows."""
-    unknown = sorted(set(phase) - {"SSP", "DSP"})
-    if unknown:
-        raise InputError(f"{path}: column 'phase': unknown value '{unknown[0]}', expected SSP/DSP")
+    plot_io.check_values(path, "phase", phase, ("SSP", "DSP"))
     if phase[0] != "SSP" or np.any((phase[:-1] == "DSP") & (phase[1:] == "SSP")):
         raise InputError(f"{path}: column 'phase': expected SSP rows followed by DSP rows")
 
 
 def read_summary(path, n):
-    try:
-        with open(path, encoding="utf-8") as f:
-            s = json.load(f)
-    except OSError as e:
-        raise InputError(f"{path}: cannot read the summary ({e.strerror})") from e
-    except json.JSONDecodeError as e:
-        raise InputError(f"{path}: not valid JSON ({e})") from e
-    if not isinstance(s, dict):
-        raise InputError(f"{path}: expected a JSON object with the summary keys")
-    for key in ["robot", "links"] + SUMMARY_NUMBERS:
-        if key not in s:
-            raise InputError(f"{path}: missing key '{key}'")
-    for key in SUMMARY_NUMBERS:
-        if not isinstance(s[key], (int, float)) or isinstance(s[key], bool):
-            raise InputError(f"{path}: key '{key}': expected a number, got {s[key]!r}")
+    s = plot_io.read_json(path, "summary")
+    plot_io.require_keys(path, s, ["robot", "links"] + SUMMARY_NUMBERS)
+    plot_io.require_numbers(path, s, SUMMARY_NUMBERS)
     links = s["links"]
     if not isinstance(links, list) or len(links) != n:
         raise InputError(f"{path}: key 'links': expected a list of {n} links (one per theta "
@@ -482,9 +435,4 @@ def main(result_dir):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2:
-        sys.exit(__doc__)
-    try:
-        main(sys.argv[1])
-    except InputError as e:
-        sys.exit(f"error: {e}")
+    plot_io.run_main(main, __doc__)

@@ -11,9 +11,7 @@ S_L is Mu's step length, twice the tip distance `step_length` of the CSV (DESIGN
 A panel whose axes have fewer than two grid values is left out. A missing file or column, or a
 malformed value, ends the script with exit code 1.
 """
-import csv
 import os
-import sys
 
 import matplotlib
 
@@ -22,6 +20,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.colors import ListedColormap  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
+
+import plot_io  # noqa: E402
+from plot_io import InputError  # noqa: E402
 
 DPI = 110
 TYPES = ["single", "double", "either", "neither"]
@@ -35,34 +36,16 @@ SIGMA_SLICES = [1, 15, 30, 45]  # deg, Figs. 5.2-5.3 and 5.6
 SL_SLICES = [1.0, 1.8]  # m, Fig. 5.3(c), (d)
 
 
-class InputError(Exception):
-    """A missing or malformed input file; the message names the file and what is wrong."""
-
-
 def read_map(path):
     """Returns (axes: the three sorted axis value arrays, cube: name -> array over the grid)."""
-    try:
-        with open(path, encoding="utf-8", newline="") as f:
-            rows = list(csv.DictReader(f))
-    except OSError as e:
-        raise InputError(f"{path}: cannot read the map ({e.strerror})") from e
-    if not rows:
-        raise InputError(f"{path}: no data rows")
-    for name in NUMBERS + ["type"]:
-        if name not in rows[0]:
-            raise InputError(f"{path}: missing column '{name}'")
-    try:
-        cols = {name: np.array([float(r[name]) for r in rows]) for name in NUMBERS}
-    except ValueError as e:
-        raise InputError(f"{path}: malformed number ({e})") from e
-    unknown = {r["type"] for r in rows} - set(TYPES)
-    if unknown:
-        raise InputError(f"{path}: column 'type': unknown value '{sorted(unknown)[0]}'")
-    cols["type"] = np.array([TYPES.index(r["type"]) for r in rows], dtype=float)
+    cols = plot_io.read_csv(path, "map", NUMBERS + ["type"], strings={"type"}, finite=False)
+    plot_io.check_values(path, "type", cols["type"], TYPES)
+    rows = len(cols["type"])
+    cols["type"] = np.array([TYPES.index(t) for t in cols["type"]], dtype=float)
     axes = [np.unique(cols[name]) for name in NUMBERS[:3]]
     shape = tuple(len(a) for a in axes)
-    if np.prod(shape) != len(rows):
-        raise InputError(f"{path}: {len(rows)} rows do not fill a {shape} grid")
+    if np.prod(shape) != rows:
+        raise InputError(f"{path}: {rows} rows do not fill a {shape} grid")
     # Rows come with alpha fastest and step length slowest (gaits/impact_map.hpp).
     return axes, {name: v.reshape(shape) for name, v in cols.items()}
 
@@ -137,9 +120,4 @@ def main(result_dir):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2:
-        sys.exit(__doc__)
-    try:
-        main(sys.argv[1])
-    except InputError as e:
-        sys.exit(f"error: {e}")
+    plot_io.run_main(main, __doc__)

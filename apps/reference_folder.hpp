@@ -1,0 +1,25 @@
+#pragma once
+/// @file reference_folder.hpp
+/// A gait result folder (from `gaitopt poly` or `gaitopt optimize`) as the input of the
+/// closed-loop commands: its robot and its one-step trajectory.csv.
+#include <string>
+
+#include "dynamics/model.hpp"
+#include "gaits/trajectory.hpp"
+
+namespace gaitopt::apps {
+
+struct ReferenceFolder {
+  std::string dir;
+  std::string robot_path;
+  dynamics::Model model;
+  gaits::Trajectory step;
+};
+
+/// Reads DIR/trajectory.csv for the robot `robot_path`, or, when that is empty, for
+/// configs/robots/<summary.json's "robot">.yaml under the working directory.
+/// @throws config::ConfigError naming the file and what is wrong (missing folder, unknown robot,
+///         a trajectory that does not fit the robot).
+ReferenceFolder loadReferenceFolder(const std::string& dir, const std::string& robot_path);
+
+}  // namespace gaitopt::apps

@@ -1,0 +1,122 @@
+#include "apps/simulate_command.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "apps/command_runner.hpp"
+#include "apps/plotting.hpp"
+#include "apps/reference_folder.hpp"
+#include "apps/result_folder.hpp"
+#include "apps/walk_record.hpp"
+#include "gaits/gait_summary.hpp"
+
+namespace gaitopt::apps {
+namespace {
+
+constexpr double kStickFrameInterval = 0.05;  // [s]
+
+nlohmann::ordered_json poincareJson(const std::optional<sim::PoincareAnalysis>& p) {
+  nlohmann::ordered_json j;
+  if (!p) {
+    j["poincare_max_multiplier"] = nullptr;
+    j["poincare_multipliers"] = nullptr;
+    return j;
+  }
+  if (!p->ok) {
+    j["poincare_max_multiplier"] = nullptr;
+    j["poincare_multipliers"] = nullptr;
+    j["poincare_failure"] = p->failure;
+    return j;
+  }
+  auto multipliers = nlohmann::ordered_json::array();
+  for (const auto& z : p->multipliers) multipliers.push_back({z.real(), z.imag()});
+  j["poincare_max_multiplier"] = p->max_multiplier;
+  j["poincare_multipliers"] = multipliers;
+  j["poincare_fixed_point_residual"] = p->fixed_point_residual;
+  return j;
+}
+
+/// Mean step length and duration over the completed steps.
+nlohmann::ordered_json gaitJson(const sim::WalkResult& w) {
+  double advance = 0, duration = 0;
+  for (int k = 0; k < w.steps_completed; ++k) {
+    advance += w.steps[static_cast<size_t>(k)].advance;
+    duration +=
+        w.steps[static_cast<size_t>(k)].ssp_duration + w.steps[static_cast<size_t>(k)].dsp_duration;
+  }
+  if (w.steps_completed == 0) return {{"mean_step_length", nullptr}, {"mean_speed", nullptr}};
+  return {{"mean_step_length", advance / w.steps_completed},
+          {"mean_step_duration", duration / w.steps_completed},
+          {"mean_speed", advance / duration}};
+}
+
+nlohmann::ordered_json summaryJson(const SimulateOptions& o, const ReferenceFolder& ref,
+                                   const sim::Scenario& s, const dynamics::Model& plant,
+                                   const sim::ScenarioResult& r) {
+  nlohmann::ordered_json j{{"robot", ref.model.name()}, {"robot_file", ref.robot_path}};
+  j.update(scenarioJson(o.scenario, s));
+  j["friction"] = plant.friction();
+  j["steps_completed"] = r.walk.steps_completed;
+  j["fell"] = r.walk.fell;
+  j["failure"] = r.walk.failure;
+  j["max_tracking_error"] = r.walk.max_tracking_error;
+  j.update(gaitJson(r.walk));
+  j.update(poincareJson(r.poincare));
+  j["wall_time_s"] = r.wall_time_s;
+  return j;
+}
+
+void printOutcome(const sim::ScenarioResult& r, int steps) {
+  fmt::print("simulate: {} of {} steps{}, max tracking error {:.3g} rad, {:.2f} s\n",
+             r.walk.steps_completed, steps,
+             r.walk.fell ? fmt::format(" then fell ({})", r.walk.failure) : "",
+             r.walk.max_tracking_error, r.wall_time_s);
+  if (r.poincare && r.poincare->ok)
+    fmt::print("simulate: Poincare map: largest multiplier {:.4g} ({})\n",
+               r.poincare->max_multiplier, r.poincare->max_multiplier < 1 ? "stable" : "unstable");
+  else if (r.poincare)
+    fmt::print("simulate: Poincare map failed: {}\n", r.poincare->failure);
+}
+
+}  // namespace
+
+void runSimulate(const SimulateOptions& o) {
+  const ReferenceFolder ref = loadReferenceFolder(o.scenario.reference_dir, o.scenario.robot_path);
+  sim::Scenario scenario = makeScenario(o.scenario);
+  scenario.poincare = o.poincare && !scenario.push;  // a pushed walk has no periodic cycle
+  const dynamics::Model plant = sim::scenarioPlant(ref.model, scenario);
+  if (!o.quiet)
+    fmt::print("simulate: {} steps of {} with {} on {} ground\n", scenario.steps, ref.dir,
+               scenario.controller, sim::groundName(scenario.ground));
+  WalkRecorder recorder(plant, o.output.rate_hz);
+  const sim::ScenarioResult r =
+      sim::runScenario(ref.model, sim::Reference(ref.step), scenario, recorder.log());
+  recorder.finish();
+  printOutcome(r, scenario.steps);
+  writeResultFolder(o.output.out_dir, [&](const std::string& dir) {
+    recorder.writeWalkCsv(dir + "/walk.csv");
+    recorder.writeStickCsv(dir + "/stick.csv", kStickFrameInterval);
+    writeStepsCsv(r.walk, dir + "/steps.csv");
+    gaits::writeJsonFile(summaryJson(o, ref, scenario, plant, r), dir + "/summary.json");
+  });
+  if (o.output.plots) runPlotScript("walk_plots.py", fmt::format("'{}'", o.output.out_dir));
+  fmt::print("simulate: wrote {}/walk.csv, steps.csv, stick.csv, summary.json\n", o.output.out_dir);
+}
+
+void registerSimulateCommand(CLI::App& app) {
+  auto options = std::make_shared<SimulateOptions>();
+  CLI::App* cmd =
+      app.add_subcommand("simulate", "Walk an exported gait in closed loop and measure it");
+  addScenarioOptions(cmd, options->scenario);
+  addOutputOptions(cmd, options->output);
+  cmd->add_flag("!--no-poincare", options->poincare, "Skip the Poincare map of the cycle");
+  cmd->add_flag("--quiet", options->quiet, "Less output");
+  cmd->footer(
+      "A fall is a result, not an error: exit 0 with \"fell\": true in summary.json.\n"
+      "Exit codes: 0 ok, 2 bad input, 3 infeasible input, 1 other failure.");
+  cmd->callback([options] { runSubcommand([&] { runSimulate(*options); }); });
+}
+
+}  // namespace gaitopt::apps

@@ -1,0 +1,32 @@
+#pragma once
+/// @file stability_command.hpp
+/// `gaitopt stability --reference DIR [scenario options] --sweep NAME[=a:b:n] ... --out DIR
+/// [--jobs N] [--poincare]`: where walking stops. Each sweep varies one parameter of the
+/// scenario (push, mass_error, length_error, friction, stiffness, gain_scale) around its
+/// nominal value and walks every point; a point fails on a fall or slip. Points run in parallel
+/// (all cores by default), each row is on disk as soon as it is done, and a rerun skips the
+/// finished points. Writes sweep_<NAME>.csv, summary.json (the walking interval around the
+/// nominal value per sweep) and stability.png.
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "apps/scenario_options.hpp"
+
+namespace gaitopt::apps {
+
+struct StabilityOptions {
+  ScenarioOptions scenario;
+  std::vector<std::string> sweeps;  ///< NAME or NAME=a:b:n
+  std::string out_dir;
+  int jobs = 0;
+  bool poincare = false;
+  bool quiet = false;
+  bool plots = true;
+};
+
+void runStability(const StabilityOptions& options);
+void registerStabilityCommand(CLI::App& app);
+
+}  // namespace gaitopt::apps

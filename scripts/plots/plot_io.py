@@ -1,0 +1,165 @@
+"""Input checks shared by the plotting scripts in scripts/plots/.
+
+Every problem with an input file is an InputError whose message starts with the file's path and
+says what is wrong; run_main turns it into "error: <message>" on stderr and exit code 1.
+Line numbers in messages count the header as line 1 (the C++ writers never put line breaks
+inside a field).
+"""
+import csv
+import json
+import sys
+
+import numpy as np
+
+NUMBER_WORDS = {2: "two", 3: "three"}
+
+
+class InputError(Exception):
+    """A missing or malformed input file; the message names the file and what is wrong."""
+
+
+# ---------------------------------------------------------------------------------------------
+# CSV
+
+
+def read_rows(path, what, min_rows=1):
+    """(header, data rows) of a CSV file; `what` names the file in the 'cannot read' message."""
+    try:
+        with open(path, encoding="utf-8", newline="") as f:
+            rows = list(csv.reader(f))
+    except OSError as e:
+        raise InputError(f"{path}: cannot read the {what} ({e.strerror})") from e
+    if len(rows) < 1 + min_rows:
+        if min_rows == 1:
+            raise InputError(f"{path}: no data rows")
+        raise InputError(f"{path}: expected a header row and at least "
+                         f"{NUMBER_WORDS.get(min_rows, min_rows)} data rows")
+    return rows[0], rows[1:]
+
+
+def require_columns(path, header, names):
+    """Raises for the first of `names` missing from the header."""
+    for name in names:
+        if name not in header:
+            raise InputError(f"{path}: missing column '{name}'")
+
+
+def to_numbers(path, name, texts, finite=True, optional=False):
+    """Float array of one column's texts.
+
+    finite: reject nan and inf; optional: an empty field is NaN (not computed)."""
+    values = np.empty(len(texts))
+    for k, text in enumerate(texts):
+        if optional and text == "":
+            values[k] = np.nan
+            continue
+        try:
+            values[k] = float(text)
+        except ValueError:
+            raise InputError(f"{path}:{k + 2}: column '{name}': expected a "
+                             f"{'finite ' if finite else ''}number, found '{text}'") from None
+        if finite and not np.isfinite(values[k]):
+            raise InputError(f"{path}:{k + 2}: column '{name}': expected a finite number, "
+                             f"found '{text}'")
+    return values
+
+
+def columns(path, header, rows, names, strings=(), optional=(), finite=True):
+    """name -> array for each of `names`: str arrays for those in `strings`, floats otherwise
+    (empty fields NaN for those in `optional`). Checks the columns exist and every row has the
+    header's number of fields."""
+    require_columns(path, header, names)
+    for line, row in enumerate(rows, start=2):
+        if len(row) != len(header):
+            raise InputError(f"{path}:{line}: {len(row)} fields, the header has {len(header)}")
+    out = {}
+    for name in names:
+        i = header.index(name)
+        texts = [row[i] for row in rows]
+        out[name] = (np.array(texts, dtype=str) if name in strings else
+                     to_numbers(path, name, texts, finite=finite, optional=name in optional))
+    return out
+
+
+def read_csv(path, what, names, strings=(), optional=(), finite=True, min_rows=1):
+    """read_rows then columns: name -> array for each of `names`."""
+    header, rows = read_rows(path, what, min_rows)
+    return columns(path, header, rows, names, strings, optional, finite)
+
+
+def check_values(path, name, texts, allowed):
+    """Raises for the first text of a string column that is not in `allowed`."""
+    unknown = sorted(set(texts) - set(allowed))
+    if unknown:
+        raise InputError(f"{path}: column '{name}': unknown value '{unknown[0]}', expected "
+                         f"{'/'.join(allowed)}")
+
+
+def check_increasing(path, name, values):
+    """Raises where a column decreases (equal neighbours are fine)."""
+    back = np.diff(values) < 0
+    if np.any(back):
+        line = int(np.argmax(back)) + 3
+        raise InputError(f"{path}:{line}: column '{name}': time goes backwards"
+                         if name == "t" else f"{path}:{line}: column '{name}': decreases")
+
+
+# ---------------------------------------------------------------------------------------------
+# summary.json
+
+
+def read_json(path, what="summary"):
+    """The JSON object in `path`."""
+    try:
+        with open(path, encoding="utf-8") as f:
+            s = json.load(f)
+    except OSError as e:
+        raise InputError(f"{path}: cannot read the {what} ({e.strerror})") from e
+    except json.JSONDecodeError as e:
+        raise InputError(f"{path}: not valid JSON ({e})") from e
+    if not isinstance(s, dict):
+        raise InputError(f"{path}: expected a JSON object with the {what} keys")
+    return s
+
+
+def require_keys(path, s, keys, prefix=""):
+    """Raises for the first of `keys` missing from the object `s`; prefix names where `s` sits
+    in the file (e.g. 'sweeps.friction.')."""
+    for key in keys:
+        if key not in s:
+            raise InputError(f"{path}: missing key '{prefix}{key}'")
+
+
+def is_number(value):
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
+def require_numbers(path, s, keys, nullable=False, prefix=""):
+    """Raises unless every key is present and a number (or null when nullable)."""
+    require_keys(path, s, keys, prefix)
+    for key in keys:
+        if not (is_number(s[key]) or (nullable and s[key] is None)):
+            raise InputError(f"{path}: key '{prefix}{key}': expected a number"
+                             f"{' or null' if nullable else ''}, got {s[key]!r}")
+
+
+def require_type(path, s, key, kind, label, prefix=""):
+    """Raises unless key is present and an instance of `kind`; label says what was expected."""
+    require_keys(path, s, [key], prefix)
+    if not isinstance(s[key], kind):
+        raise InputError(f"{path}: key '{prefix}{key}': expected {label}, got {s[key]!r}")
+
+
+# ---------------------------------------------------------------------------------------------
+# Entry point
+
+
+def run_main(main, usage):
+    """Calls main(RESULT_DIR) from the command line; usage (the script's docstring) when the
+    arguments are wrong, "error: <message>" and exit code 1 on an InputError."""
+    if len(sys.argv) != 2:
+        sys.exit(usage)
+    try:
+        main(sys.argv[1])
+    except InputError as e:
+        sys.exit(f"error: {e}")

@@ -1,0 +1,211 @@
+#!/usr/bin/python3
+"""Draws the parameter sweeps of a `gaitopt stability` result folder.
+
+Usage: stability_plots.py RESULT_DIR
+Reads RESULT_DIR/summary.json (key `sweeps`: per swept parameter its unit, number of values,
+walking interval walks_from..walks_to around the nominal value, and the nominal value) and one
+RESULT_DIR/sweep_<parameter>.csv per parameter, and writes RESULT_DIR/stability.png, printing its
+path:
+  one panel per sweep: steps completed against the parameter value (green: walked, red: fell),
+  the walking interval shaded, the nominal value marked, and the largest Poincare multiplier on
+  a twin axis where it was computed.
+A missing file, column or key, or a malformed value, ends the script with exit code 1.
+"""
+import math
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+import plot_io  # noqa: E402
+from plot_io import InputError  # noqa: E402
+
+DPI = 110
+WALK_COLOUR = "tab:green"
+FALL_COLOUR = "tab:red"
+MULTIPLIER_COLOUR = "tab:purple"
+WALK_SHADE = {"color": "tab:green", "alpha": 0.12, "lw": 0}
+SWEEP_COLUMNS = ["value", "steps_completed", "steps_requested", "fell", "failure",
+                 "max_tracking_error", "max_multiplier", "mean_advance", "wall_time_s"]
+# Columns that may be empty (not computed, or no completed step).
+OPTIONAL_COLUMNS = {"max_multiplier", "max_tracking_error", "mean_advance"}
+FELL_TEXTS = {"0": False, "1": True, "false": False, "true": True}
+# y-axis tops as a multiple of the data's top, leaving room for the legend above the data.
+HEADROOM = 1.55
+
+
+# ---------------------------------------------------------------------------------------------
+# Reading
+
+
+def read_sweep_entry(path, name, entry):
+    """One entry of summary.json's `sweeps`: {unit, values, walks_from, walks_to, nominal}."""
+    prefix = f"sweeps.{name}."
+    if not isinstance(entry, dict):
+        raise InputError(f"{path}: key 'sweeps.{name}': expected an object with unit, values, "
+                         f"walks_from, walks_to, nominal")
+    plot_io.require_type(path, entry, "unit", str, "a string", prefix)
+    plot_io.require_numbers(path, entry, ["values", "nominal"], prefix=prefix)
+    plot_io.require_numbers(path, entry, ["walks_from", "walks_to"], nullable=True,
+                            prefix=prefix)
+    if (entry["walks_from"] is None) != (entry["walks_to"] is None):
+        raise InputError(f"{path}: key '{prefix}walks_from'/'walks_to': both numbers or both "
+                         f"null")
+    return entry
+
+
+def read_summary(path):
+    """summary.json with its `sweeps` object checked, in the file's order."""
+    s = plot_io.read_json(path, "summary")
+    plot_io.require_type(path, s, "sweeps", dict, "an object with one entry per swept parameter")
+    if not s["sweeps"]:
+        raise InputError(f"{path}: key 'sweeps': no swept parameter")
+    for name, entry in s["sweeps"].items():
+        read_sweep_entry(path, name, entry)
+    return s
+
+
+def read_sweep(path, expected_rows):
+    """sweep_<parameter>.csv: name -> array (fell as bool, failure as text), sorted by value."""
+    cols = plot_io.read_csv(path, "sweep", SWEEP_COLUMNS, strings={"fell", "failure"},
+                            optional=OPTIONAL_COLUMNS, finite=False)
+    for name in ("value", "steps_completed", "steps_requested"):
+        bad = ~np.isfinite(cols[name])
+        if bad.any():
+            raise InputError(f"{path}:{int(np.argmax(bad)) + 2}: column '{name}': expected a "
+                             f"finite number")
+    fell = np.char.lower(cols["fell"])
+    plot_io.check_values(path, "fell", fell, tuple(FELL_TEXTS))
+    cols["fell"] = np.array([FELL_TEXTS[f] for f in fell], dtype=bool)
+    if len(cols["value"]) != expected_rows:
+        raise InputError(f"{path}: {len(cols['value'])} rows, summary.json says "
+                         f"{expected_rows:g} values")
+    order = np.argsort(cols["value"], kind="stable")
+    return {name: v[order] for name, v in cols.items()}
+
+
+class Sweep:
+    """One swept parameter: its summary entry and its rows."""
+
+    def __init__(self, result_dir, name, entry):
+        self.name = name
+        self.unit = entry["unit"]
+        self.nominal = entry["nominal"]
+        self.walks = (None if entry["walks_from"] is None
+                      else (entry["walks_from"], entry["walks_to"]))
+        self.col = read_sweep(os.path.join(result_dir, f"sweep_{name}.csv"), entry["values"])
+        self.value = self.col["value"]
+        self.walked = ~self.col["fell"] & (self.col["steps_completed"]
+                                           >= self.col["steps_requested"])
+
+    def label(self):
+        """Axis label: the parameter and its unit."""
+        return f"{self.name} [{self.unit}]" if self.unit else self.name
+
+    def format(self, x):
+        return f"{x:g} {self.unit}".rstrip()
+
+
+def read_sweeps(result_dir):
+    """(summary, [Sweep]) of the folder."""
+    s = read_summary(os.path.join(result_dir, "summary.json"))
+    return s, [Sweep(result_dir, name, entry) for name, entry in s["sweeps"].items()]
+
+
+# ---------------------------------------------------------------------------------------------
+# Panels
+
+
+def draw_multiplier(ax, sw):
+    """Largest Poincare multiplier on a twin axis, where computed; |lambda| = 1 dotted.
+    Returns the twin axes or None when no value was computed."""
+    m = sw.col["max_multiplier"]
+    have = np.isfinite(m)
+    if not have.any():
+        return None
+    twin = ax.twinx()
+    twin.plot(sw.value[have], m[have], "s-", color=MULTIPLIER_COLOUR, ms=4, lw=1,
+              label="max |multiplier|")
+    twin.axhline(1, color=MULTIPLIER_COLOUR, ls=":", lw=1, label="|multiplier| = 1")
+    twin.set_ylim(0, HEADROOM * max(1.1, 1.05 * np.max(m[have])))
+    twin.set_ylabel("max |Poincaré multiplier|", color=MULTIPLIER_COLOUR)
+    twin.tick_params(axis="y", colors=MULTIPLIER_COLOUR)
+    return twin
+
+
+def draw_sweep(ax, sw):
+    """Steps completed against the value (green walked all requested steps, red fell), the
+    requested steps dashed, the walking interval shaded, the nominal value marked."""
+    if sw.walks is not None:
+        lo, hi = sw.walks
+        ax.axvspan(lo, hi, **WALK_SHADE,
+                   label=f"walks: {sw.format(lo)} .. {sw.format(hi)}" if hi > lo
+                   else f"walks: {sw.format(lo)}")
+        if hi == lo:
+            ax.axvline(lo, color="tab:green", lw=3, alpha=0.3)
+    ax.plot(sw.value, sw.col["steps_completed"], color="0.6", lw=1)
+    for pick, colour, label in ((sw.walked, WALK_COLOUR, "walked"),
+                                (~sw.walked, FALL_COLOUR, "fell")):
+        if pick.any():
+            ax.plot(sw.value[pick], sw.col["steps_completed"][pick], "o", color=colour, ms=6,
+                    label=label, zorder=3)
+    requested = np.max(sw.col["steps_requested"])
+    ax.axhline(requested, color="k", ls="--", lw=0.8, label=f"requested {requested:g}")
+    ax.axvline(sw.nominal, color="k", lw=1.2, label=f"nominal {sw.format(sw.nominal)}")
+    ax.set_ylim(-0.05 * requested, HEADROOM * requested)
+    ax.yaxis.set_major_locator(matplotlib.ticker.MaxNLocator(integer=True))
+    ax.set_yticks([t for t in ax.get_yticks() if 0 <= t <= requested])
+    twin = draw_multiplier(ax, sw)
+    handles, labels = ax.get_legend_handles_labels()
+    if twin is not None:
+        more = twin.get_legend_handles_labels()
+        handles, labels = handles + more[0], labels + more[1]
+    (twin or ax).legend(handles, labels, fontsize=7, loc="upper center", ncol=3)
+    interval = ("no walking interval" if sw.walks is None
+                else f"walks over {sw.format(sw.walks[0])} .. {sw.format(sw.walks[1])}")
+    ax.set_xlabel(sw.label())
+    ax.set_ylabel("steps completed")
+    ax.set_title(f"{sw.name}: {interval}", fontsize=10)
+    ax.grid(True, alpha=0.4)
+
+
+# ---------------------------------------------------------------------------------------------
+# Picture
+
+
+def headline(s):
+    """What was swept around, from the summary keys that are present."""
+    parts = [str(s[k]) for k in ("robot", "controller") if isinstance(s.get(k), str)]
+    if isinstance(s.get("ground"), str):
+        parts.append(f"{s['ground']} ground")
+    return "Stability sweeps" + (f": {', '.join(parts)}" if parts else "")
+
+
+def stability_figure(s, sweeps):
+    """One panel per sweep, two columns when there are several."""
+    cols = 1 if len(sweeps) == 1 else 2
+    rows = math.ceil(len(sweeps) / cols)
+    fig, axes = plt.subplots(rows, cols, figsize=(6.6 * cols, 4.4 * rows), squeeze=False)
+    for ax, sw in zip(axes.flat, sweeps):
+        draw_sweep(ax, sw)
+    for ax in axes.flat[len(sweeps):]:
+        ax.set_visible(False)
+    fig.suptitle(headline(s), fontsize=11)
+    fig.tight_layout()
+    return fig
+
+
+def main(result_dir):
+    s, sweeps = read_sweeps(result_dir)
+    fig = stability_figure(s, sweeps)
+    path = os.path.join(result_dir, "stability.png")
+    fig.savefig(path, dpi=DPI)
+    plt.close(fig)
+    print(path)
+
+
+if __name__ == "__main__":
+    plot_io.run_main(main, __doc__)

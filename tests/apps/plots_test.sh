@@ -1,0 +1,234 @@
+#!/usr/bin/env bash
+# Checks of scripts/plots/walk_plots.py and stability_plots.py on small made-up result folders:
+# the pictures they print, and "error: <file>: ..." with exit code 1 for broken inputs. Also
+# checks that gait_plots.py and impact_map.py report broken inputs through plot_io the same way.
+# Needs Debian's python3-matplotlib; skips (exit 0) without it.
+# Usage: plots_test.sh <repo root>
+set -u
+[[ $# -eq 1 ]] || { echo "usage: $0 <repo root>" >&2; exit 1; }
+ROOT=$1
+PLOTS="$ROOT/scripts/plots"
+PY=/usr/bin/python3
+"$PY" -c "import matplotlib, numpy" 2>/dev/null || { echo "SKIP: no matplotlib/numpy"; exit 0; }
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+
+fail() {
+  echo "FAIL: $*" >&2
+  exit 1
+}
+
+# Runs a plotting script on a folder, keeping stdout, stderr and the exit code.
+plot() {
+  "$PY" "$PLOTS/$1" "$2" >"$TMP/out" 2>"$TMP/err"
+  RC=$?
+}
+
+# expect_error NAME SCRIPT DIR PATTERN: exit 1 and one stderr line "error: ..." matching PATTERN.
+expect_error() {
+  plot "$2" "$3"
+  [[ $RC -eq 1 ]] || fail "$1: exit $RC, expected 1 (stderr: $(cat "$TMP/err"))"
+  [[ $(wc -l <"$TMP/err") -eq 1 ]] || fail "$1: expected one stderr line: $(cat "$TMP/err")"
+  grep -Eq "^error: $4" "$TMP/err" || fail "$1: stderr '$(cat "$TMP/err")' !~ '$4'"
+}
+
+# Made-up walk folder: N-link robot (5: stance shank, stance thigh, torso, swing thigh, swing
+# shank; torso at the hip), STEPS steps of 0.7 s (0.6 s SSP then DSP), standing still in place
+# but stepping forward; FELL=1 ends in the SSP of the last step.
+make_walk() {
+  "$PY" - "$1" "${2:-2}" "${3:-0}" <<'PY'
+import csv, json, math, os, sys
+out, steps, fell = sys.argv[1], int(sys.argv[2]), sys.argv[3] == "1"
+os.makedirs(out, exist_ok=True)
+n, L, lengths, cont = 5, 0.35, [0.332, 0.302, 0.486, 0.302, 0.332], [1, 1, 0, 1, 1]
+def pose(s):  # s in [0, 1] through the step
+    a = 0.5 * (s - 0.5)
+    return [a - 0.05, a + 0.05, 0.1, math.pi - a + 0.05, math.pi - a - 0.05]
+def ends(th, x0):
+    p, out_ = [x0, 0.0], []
+    for i in range(n):
+        q = [p[0] + lengths[i] * math.sin(th[i]), p[1] + lengths[i] * math.cos(th[i])]
+        out_.append((p, q))
+        if cont[i]:
+            p = q
+    return out_
+walk, stick, rows = [], [], []
+for k in range(steps):
+    last = fell and k == steps - 1
+    for j in range(71 if not last else 40):
+        tl = j / 100
+        t = 0.7 * k + tl
+        ref = pose(min(tl / 0.7, 1))
+        err = [0.02 * math.exp(-3 * t) * math.sin(i + 9 * t) + (tl ** 2 if last else 0)
+               for i in range(n)]
+        th = [r + e for r, e in zip(ref, err)]
+        seg = ends(th, k * L)
+        hip = seg[1][1]
+        dsp = tl > 0.6
+        row = [t, k + 1, "DSP" if dsp else "SSP", k * L, 0.0] + th + ref
+        row += [10 * e for e in err] + [0.0] * n
+        row += [-20 + 40 * tl, 250.0, 15.0 if dsp else 0.0, 120.0 if dsp else 0.0] + hip
+        walk.append(row)
+        if j % 5 == 0:
+            stick += [[t, k + 1, i + 1, *p, *q] for i, (p, q) in enumerate(seg)]
+    rows.append([k + 1, 0 if last else 1, "" if last else "double", 0.6, 0.1, L, 0.02,
+                 "fell: hip below 0.4 m, at t = 1.8 s" if last else ""])
+def write(name, header, data):
+    with open(f"{out}/{name}", "w", newline="") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(header)
+        w.writerows(data)
+write("walk.csv", ["t", "step", "phase", "stance_x", "stance_y"]
+      + [f"theta{i}" for i in range(1, n + 1)] + [f"theta_ref{i}" for i in range(1, n + 1)]
+      + [f"tau{j}" for j in range(n)] + [f"tau_ref{j}" for j in range(n)]
+      + ["fb_x", "fb_y", "fe_x", "fe_y", "hip_x", "hip_y"], walk)
+write("stick.csv", ["t", "step", "link", "x0", "y0", "x1", "y1"], stick)
+write("steps.csv", ["step", "ok", "impact", "ssp_duration", "dsp_duration", "advance",
+                    "max_tracking_error", "failure"], rows)
+json.dump({"robot": "five_link", "reference": "ref", "controller": "computed_torque",
+           "ground": "rigid", "steps_requested": steps, "friction": 0.6,
+           "steps_completed": steps - fell, "fell": fell, "failure": rows[-1][-1],
+           "max_tracking_error": 0.3 if fell else 0.02,
+           "poincare_max_multiplier": None if fell else 0.5,
+           "poincare_multipliers": None if fell else [[0.5, 0], [0.1, 0.2], [0.1, -0.2]]},
+          open(f"{out}/summary.json", "w"))
+PY
+}
+
+# Made-up stability folder: sweeps of friction (with multipliers) and push (none computed).
+make_stability() {
+  mkdir -p "$1"
+  cat >"$1/sweep_friction.csv" <<'CSV'
+value,steps_completed,steps_requested,fell,failure,max_tracking_error,max_multiplier,mean_advance,wall_time_s
+0.2,3,10,1,"slip at step 4, |f_t|/f_n > mu",0.5,,0.3,0.2
+0.4,10,10,0,,0.03,0.62,0.35,0.4
+0.6,10,10,0,,0.02,0.55,0.35,0.4
+CSV
+  cat >"$1/sweep_push.csv" <<'CSV'
+value,steps_completed,steps_requested,fell,failure,max_tracking_error,max_multiplier,mean_advance,wall_time_s
+-10,0,10,1,fell,0.9,,,0.1
+0,10,10,0,,0.02,,0.35,0.4
+10,10,10,0,,0.05,,0.35,0.4
+CSV
+  cat >"$1/summary.json" <<'JSON'
+{"robot": "five_link", "controller": "computed_torque", "sweeps": {
+  "friction": {"unit": "", "values": 3, "walks_from": 0.4, "walks_to": 0.6, "nominal": 0.6},
+  "push": {"unit": "N s", "values": 3, "walks_from": 0, "walks_to": 10, "nominal": 0}}}
+JSON
+}
+
+# Edits a file in place with a Python snippet working on `text`.
+edit() {
+  "$PY" - "$1" "$2" <<'PY'
+import sys
+path, code = sys.argv[1], sys.argv[2]
+text = open(path).read()
+exec(code)
+open(path, "w").write(text)
+PY
+}
+
+fresh() {  # fresh KIND NAME: a new copy of a good folder of that kind in $TMP/NAME
+  rm -rf "${TMP:?}/$2"
+  cp -r "$TMP/good_$1" "$TMP/$2"
+}
+
+# (a) a 2-step walk: six pictures, one printed line each, nothing on stderr.
+make_walk "$TMP/walk" 2 0
+plot walk_plots.py "$TMP/walk"
+[[ $RC -eq 0 ]] || fail "(a) walk_plots.py exited $RC: $(cat "$TMP/err")"
+for name in walk_stick tracking torques forces walk_overview poincare; do
+  grep -qx "$TMP/walk/$name.png" "$TMP/out" || fail "(a) $name.png not printed"
+  [[ -s "$TMP/walk/$name.png" ]] || fail "(a) $name.png not written"
+done
+[[ $(wc -l <"$TMP/out") -eq 6 ]] || fail "(a) expected 6 lines: $(cat "$TMP/out")"
+[[ ! -s "$TMP/err" ]] || fail "(a) stderr: $(cat "$TMP/err")"
+
+# (b) a walk that fell: no Poincare multipliers, so five pictures and a note on stderr.
+make_walk "$TMP/fell" 3 1
+plot walk_plots.py "$TMP/fell"
+[[ $RC -eq 0 ]] || fail "(b) walk_plots.py exited $RC: $(cat "$TMP/err")"
+[[ $(wc -l <"$TMP/out") -eq 5 ]] || fail "(b) expected 5 lines: $(cat "$TMP/out")"
+grep -q "poincare.png skipped" "$TMP/err" || fail "(b) no skip note: $(cat "$TMP/err")"
+[[ ! -e "$TMP/fell/poincare.png" ]] || fail "(b) poincare.png written"
+
+# (c) stability sweeps: one picture.
+make_stability "$TMP/stab"
+plot stability_plots.py "$TMP/stab"
+[[ $RC -eq 0 ]] || fail "(c) stability_plots.py exited $RC: $(cat "$TMP/err")"
+[[ "$(cat "$TMP/out")" == "$TMP/stab/stability.png" && -s "$TMP/stab/stability.png" ]] ||
+  fail "(c) output: $(cat "$TMP/out")"
+
+# (d) broken walk folders.
+make_walk "$TMP/good_walk" 2 0
+W="$TMP/w"
+for f in walk.csv steps.csv stick.csv summary.json; do
+  fresh walk w; rm "$W/$f"
+  expect_error "(d) no $f" walk_plots.py "$W" "$W/$f: cannot read"
+done
+for col in hip_y theta_ref3 tau_ref4 fe_x phase stance_x; do
+  fresh walk w
+  edit "$W/walk.csv" "h, rest = text.split('\n', 1); text = h.replace('$col', 'x_$col', 1) + '\n' + rest"
+  expect_error "(d) no walk.csv $col" walk_plots.py "$W" "$W/walk.csv: missing column '$col'"
+done
+fresh walk w; edit "$W/steps.csv" "text = text.replace(',impact,', ',kind,', 1)"
+expect_error "(d) no steps.csv impact" walk_plots.py "$W" "$W/steps.csv: missing column 'impact'"
+fresh walk w; edit "$W/stick.csv" "text = text.replace(',link,', ',body,', 1)"
+expect_error "(d) no stick.csv link" walk_plots.py "$W" "$W/stick.csv: missing column 'link'"
+for key in robot reference controller ground steps_requested steps_completed fell failure \
+    max_tracking_error poincare_max_multiplier poincare_multipliers; do
+  fresh walk w
+  edit "$W/summary.json" "import json; d = json.loads(text); del d['$key']; text = json.dumps(d)"
+  expect_error "(d) no key $key" walk_plots.py "$W" "$W/summary.json: missing key '$key'"
+done
+fresh walk w; edit "$W/walk.csv" "lines = text.split('\n'); lines[3] = lines[3].replace('SSP', 'XSP'); text = '\n'.join(lines)"
+expect_error "(d) bad phase" walk_plots.py "$W" "$W/walk.csv: column 'phase': unknown value 'XSP'"
+fresh walk w; edit "$W/walk.csv" "lines = text.split('\n'); f = lines[5].split(','); f[7] = 'abc'; lines[5] = ','.join(f); text = '\n'.join(lines)"
+expect_error "(d) bad number" walk_plots.py "$W" "$W/walk.csv:6: column 'theta3': expected a finite number, found 'abc'"
+fresh walk w; edit "$W/steps.csv" "text = text.replace(',double,', ',triple,', 1)"
+expect_error "(d) bad impact" walk_plots.py "$W" "$W/steps.csv: column 'impact': unknown value 'triple'"
+fresh walk w; edit "$W/summary.json" "import json; d = json.loads(text); d['fell'] = 'no'; text = json.dumps(d)"
+expect_error "(d) fell not bool" walk_plots.py "$W" "$W/summary.json: key 'fell': expected true or false"
+fresh walk w; edit "$W/summary.json" "import json; d = json.loads(text); d['poincare_multipliers'] = [1, 2]; text = json.dumps(d)"
+expect_error "(d) bad multipliers" walk_plots.py "$W" "$W/summary.json: key 'poincare_multipliers'"
+fresh walk w; edit "$W/summary.json" "text = text[:-3]"
+expect_error "(d) bad JSON" walk_plots.py "$W" "$W/summary.json: not valid JSON"
+
+# (e) broken stability folders.
+make_stability "$TMP/good_stab"
+S="$TMP/s"
+fresh stab s; rm "$S/summary.json"
+expect_error "(e) no summary" stability_plots.py "$S" "$S/summary.json: cannot read"
+fresh stab s; rm "$S/sweep_push.csv"
+expect_error "(e) no sweep file" stability_plots.py "$S" "$S/sweep_push.csv: cannot read"
+fresh stab s; edit "$S/summary.json" "text = text.replace('\"sweeps\"', '\"sweep\"')"
+expect_error "(e) no sweeps" stability_plots.py "$S" "$S/summary.json: missing key 'sweeps'"
+for key in unit values walks_from walks_to nominal; do
+  fresh stab s
+  edit "$S/summary.json" "import json; d = json.loads(text); del d['sweeps']['push']['$key']; text = json.dumps(d)"
+  expect_error "(e) no $key" stability_plots.py "$S" "$S/summary.json: missing key 'sweeps.push.$key'"
+done
+for col in value steps_completed steps_requested fell failure max_tracking_error max_multiplier \
+    mean_advance wall_time_s; do
+  fresh stab s
+  edit "$S/sweep_friction.csv" "h, rest = text.split('\n', 1); text = h.replace('$col', 'x_$col', 1) + '\n' + rest"
+  expect_error "(e) no $col" stability_plots.py "$S" "$S/sweep_friction.csv: missing column '$col'"
+done
+fresh stab s; edit "$S/summary.json" "text = text.replace('\"values\": 3', '\"values\": 4', 1)"
+expect_error "(e) row count" stability_plots.py "$S" "$S/sweep_friction.csv: 3 rows, summary.json says 4 values"
+fresh stab s; edit "$S/sweep_push.csv" "text = text.replace('-10,0,10,1', '-10,0,10,maybe')"
+expect_error "(e) bad fell" stability_plots.py "$S" "$S/sweep_push.csv: column 'fell': unknown value 'maybe'"
+
+# (f) gait_plots.py and impact_map.py through plot_io: missing files and a missing column.
+mkdir -p "$TMP/empty"
+expect_error "(f) gait no trajectory" gait_plots.py "$TMP/empty" "$TMP/empty/trajectory.csv: cannot read the trajectory"
+expect_error "(f) no impact map" impact_map.py "$TMP/empty" "$TMP/empty/impact_map.csv: cannot read the map"
+printf 'mu_SL,type\n0.2,single\n' >"$TMP/empty/impact_map.csv"
+expect_error "(f) impact map column" impact_map.py "$TMP/empty" "$TMP/empty/impact_map.csv: missing column 'knee_bias_deg'"
+# Usage text and exit 1 without a folder argument.
+for script in gait_plots.py impact_map.py walk_plots.py stability_plots.py; do
+  "$PY" "$PLOTS/$script" >/dev/null 2>"$TMP/err"
+  [[ $? -eq 1 ]] && grep -q "^Usage: $script RESULT_DIR" "$TMP/err" || fail "(f) $script usage"
+done
+
+echo "plots_test: all checks passed"

@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# End-to-end checks of `gaitopt simulate`: the polynomial gait walks on each ground, the outputs
+# and summary keys, a fall is a result (exit 0, fell: true), bad input exits 2 naming the problem.
+# Usage: simulate_cli_test.sh <path to gaitopt binary> <repo root>
+set -u
+[[ $# -eq 2 ]] || { echo "usage: $0 <gaitopt binary> <repo root>" >&2; exit 1; }
+GAITOPT=$1
+ROOT=$2
+# shellcheck source=tests/apps/cli_test_lib.sh
+source "$(dirname "$0")/cli_test_lib.sh"
+cd "$ROOT" || fail "no repo root $ROOT"  # the reference folder names its robot under configs/
+REF=results/poly_mu2004
+
+# (a) rigid ground, 2 steps: files, row counts, the planned steps, the summary keys.
+run simulate --reference "$REF" --steps 2 --no-poincare --no-plots --out "$TMP/rigid"
+[[ $RC -eq 0 ]] || fail "(a) simulate exited $RC: $(cat "$TMP/err")"
+for f in walk.csv steps.csv stick.csv summary.json; do
+  [[ -f "$TMP/rigid/$f" ]] || fail "(a) $f missing"
+done
+ls -d "$TMP"/rigid.tmp-* 2>/dev/null && fail "(a) staging folder left behind"
+[[ $(wc -l <"$TMP/rigid/steps.csv") -eq 3 ]] || fail "(a) steps.csv: $(cat "$TMP/rigid/steps.csv")"
+check_json "(a) summary" "$TMP/rigid/summary.json" <<'PY'
+assert d["steps_completed"] == 2 and d["fell"] is False and d["failure"] == "", d
+assert d["max_tracking_error"] < 2e-3, d["max_tracking_error"]  # 1.3e-3 rad measured
+assert abs(d["mean_step_length"] - 0.35) < 1e-3, d["mean_step_length"]
+assert abs(d["mean_step_duration"] - 0.7) < 3e-3, d["mean_step_duration"]
+assert d["poincare_max_multiplier"] is None and d["ground"] == "rigid", d
+assert d["robot"] == "mu2004_five_link" and d["friction"] == 0.6
+PY
+# walk.csv ends at the end of step 2 (t = 1.4 s) and its hip advances two steps.
+"$PY" - "$TMP/rigid/walk.csv" <<'PY' || fail "(a) walk.csv"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert abs(float(rows[-1]["t"]) - 1.4) < 5e-3, rows[-1]["t"]
+assert {r["phase"] for r in rows} == {"SSP", "DSP"}
+advance = float(rows[-1]["hip_x"]) - float(rows[0]["hip_x"])
+assert abs(advance - 0.7) < 2e-3, advance
+PY
+
+# (b) the compliant and LCP grounds walk the same 2 steps, within a few mm of the rigid ones.
+for ground in impedance lcp; do
+  run simulate --reference "$REF" --steps 2 --ground "$ground" --no-plots --out "$TMP/$ground"
+  [[ $RC -eq 0 ]] || fail "(b) $ground exited $RC: $(cat "$TMP/err")"
+  check_json "(b) $ground summary" "$TMP/$ground/summary.json" <<'PY'
+assert d["steps_completed"] == 2 and not d["fell"], d["failure"]
+assert abs(d["mean_step_length"] - 0.35) < 5e-3, d["mean_step_length"]
+assert d["poincare_max_multiplier"] is None  # the return map is the rigid model's
+PY
+done
+
+# (c) Mu's uncertainty case 3 on the plant: the polynomial gait falls, which is a result.
+run simulate --reference "$REF" --steps 3 --uncertainty-case 3 --no-plots --out "$TMP/case3"
+[[ $RC -eq 0 ]] || fail "(c) a fall must exit 0, got $RC: $(cat "$TMP/err")"
+check_json "(c) summary" "$TMP/case3/summary.json" <<'PY'
+assert d["fell"] is True and d["steps_completed"] < 3 and d["failure"].startswith("step "), d
+assert d["parameter_errors"] == {"mass": 1.0, "inertia": 1.0, "length": 0.4, "com": 0.4}
+PY
+
+# (d) bad input: exit 2 with a message naming what is wrong, and the old result untouched.
+bad() {
+  local name=$1 pattern=$2
+  shift 2
+  run simulate --no-plots --out "$TMP/rigid" "$@"
+  [[ $RC -eq 2 ]] || fail "($name) expected exit 2, got $RC: $(cat "$TMP/err")"
+  grep -q -- "$pattern" "$TMP/err" || fail "($name) message lacks '$pattern': $(cat "$TMP/err")"
+}
+bad "no folder" "not a folder" --reference "$TMP/nowhere"
+bad "unknown controller" "controller" --reference "$REF" --controller pid
+sed 's/^stiffness: .*/stiffness: -1/' configs/grounds/impedance.yaml >"$TMP/ground.yaml"
+bad "bad ground" "stiffness" --reference "$REF" --ground "$TMP/ground.yaml"
+bad "case 4" "uncertainty-case" --reference "$REF" --uncertainty-case 4
+[[ $(wc -l <"$TMP/rigid/steps.csv") -eq 3 ]] || fail "(d) a failed run touched the old result"
+echo "simulate CLI: all checks passed"

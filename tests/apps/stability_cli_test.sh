@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# End-to-end checks of `gaitopt stability`: a friction sweep finds the slip boundary of the
+# polynomial gait, the rows do not depend on the number of jobs, and an interrupted sweep resumes
+# without redoing finished points.
+# Usage: stability_cli_test.sh <path to gaitopt binary> <repo root>
+set -u
+[[ $# -eq 2 ]] || { echo "usage: $0 <gaitopt binary> <repo root>" >&2; exit 1; }
+GAITOPT=$1
+ROOT=$2
+# shellcheck source=tests/apps/cli_test_lib.sh
+source "$(dirname "$0")/cli_test_lib.sh"
+cd "$ROOT" || fail "no repo root $ROOT"
+ARGS=(--reference results/poly_mu2004 --steps 2 --no-plots --quiet)
+
+# (a) friction 0.2 .. 0.5: the gait needs about 0.35 (its own friction ratio plus the impact).
+run stability "${ARGS[@]}" --sweep friction=0.2:0.5:4 --jobs 2 --out "$TMP/a"
+[[ $RC -eq 0 ]] || fail "(a) stability exited $RC: $(cat "$TMP/err")"
+[[ $(wc -l <"$TMP/a/sweep_friction.csv") -eq 5 ]] || fail "(a) rows: $(cat "$TMP/a/sweep_friction.csv")"
+check_json "(a) summary" "$TMP/a/summary.json" <<'PY'
+s = d["sweeps"]["friction"]
+assert s["nominal"] == 0.6 and s["values"] == 4, s
+assert s["walks_from"] == 0.4 and s["walks_to"] == 0.5, s
+assert s["fails_below"]["value"] == 0.3 and "slips" in s["fails_below"]["failure"], s
+PY
+grep -q "friction: walks from 0.4 to 0.5" "$TMP/out" || fail "(a) stdout: $(cat "$TMP/out")"
+
+# (b) one job gives the same rows (up to order and wall time).
+run stability "${ARGS[@]}" --sweep friction=0.2:0.5:4 --jobs 1 --out "$TMP/b"
+[[ $RC -eq 0 ]] || fail "(b) stability exited $RC"
+strip() { cut -d, -f1-8 "$1" | sort; }
+[[ "$(strip "$TMP/a/sweep_friction.csv")" == "$(strip "$TMP/b/sweep_friction.csv")" ]] ||
+  fail "(b) --jobs 1 and 2 differ"
+
+# (c) resume: drop one finished row and tear the last line, as a kill would; the rerun walks only
+# the missing point and keeps the others.
+head -n 3 "$TMP/a/sweep_friction.csv" >"$TMP/c.csv"
+printf '0.5,2,2,0,"",0.0013' >>"$TMP/c.csv"
+mkdir -p "$TMP/c" && mv "$TMP/c.csv" "$TMP/c/sweep_friction.csv"
+run stability "${ARGS[@]}" --sweep friction=0.2:0.5:4 --out "$TMP/c"
+[[ $RC -eq 0 ]] || fail "(c) stability exited $RC: $(cat "$TMP/err")"
+grep -q "2 points to walk (2 done before)" "$TMP/out" || fail "(c) no resume: $(cat "$TMP/out")"
+check_json "(c) summary" "$TMP/c/summary.json" <<'PY'
+assert d["sweeps"]["friction"]["values"] == 4 and d["sweeps"]["friction"]["walks_from"] == 0.4, d
+PY
+# A second rerun has nothing left to do.
+run stability "${ARGS[@]}" --sweep friction=0.2:0.5:4 --out "$TMP/c"
+grep -q "0 points to walk (4 done before)" "$TMP/out" || fail "(c) rerun: $(cat "$TMP/out")"
+
+# (d) a run killed mid-sweep keeps its finished rows and a rerun completes the sweep.
+timeout -s KILL 2 "$GAITOPT" stability "${ARGS[@]}" --sweep gain_scale=0.5:2:8 --jobs 1 \
+  --out "$TMP/d" >/dev/null 2>&1
+run stability "${ARGS[@]}" --sweep gain_scale=0.5:2:8 --out "$TMP/d"
+[[ $RC -eq 0 ]] || fail "(d) rerun exited $RC: $(cat "$TMP/err")"
+check_json "(d) summary" "$TMP/d/summary.json" <<'PY'
+assert d["sweeps"]["gain_scale"]["values"] == 8, d
+PY
+
+# (e) bad input: unknown parameter, malformed range, stiffness off the impedance ground.
+run stability "${ARGS[@]}" --sweep wind --out "$TMP/e"
+[[ $RC -eq 2 ]] && grep -q "unknown sweep parameter 'wind'" "$TMP/err" || fail "(e) $(cat "$TMP/err")"
+run stability "${ARGS[@]}" --sweep friction=0.1:x:3 --out "$TMP/e"
+[[ $RC -eq 2 ]] && grep -q "not a finite number" "$TMP/err" || fail "(e) range: $(cat "$TMP/err")"
+run stability "${ARGS[@]}" --sweep stiffness=1e5:1e6:2 --out "$TMP/e"
+[[ $RC -eq 2 ]] && grep -q "impedance ground only" "$TMP/err" || fail "(e) stiffness: $(cat "$TMP/err")"
+echo "stability CLI: all checks passed"
