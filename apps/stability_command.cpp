@@ -51,11 +51,15 @@ Sweep parseSweep(const std::string& text, const std::string& out_dir, sim::Scena
   Sweep s{p, {}, std::make_unique<SweepFile>(out_dir + "/sweep_" + name + ".csv")};
   if (p->geometric && !(axis.first > 0 && axis.last > 0))
     throw config::ConfigError("--sweep", name, 0, "a geometric range needs positive ends");
-  for (int k = 0; k < axis.count; ++k)
-    s.values.push_back(!p->geometric || axis.count == 1
-                           ? axis.value(k)
-                           : axis.first * std::pow(axis.last / axis.first,
-                                                   static_cast<double>(k) / (axis.count - 1)));
+  for (int k = 0; k < axis.count; ++k) {
+    const double v = !p->geometric || axis.count == 1
+                         ? axis.value(k)
+                         : axis.first * std::pow(axis.last / axis.first,
+                                                 static_cast<double>(k) / (axis.count - 1));
+    // Rounding noise snapped to 0, so -0.3:0.5:17 holds 0 rather than 5.6e-17.
+    const double scale = std::max(std::abs(axis.first), std::abs(axis.last));
+    s.values.push_back(std::abs(v) < 1e-12 * scale ? 0.0 : v);
+  }
   return s;
 }
 

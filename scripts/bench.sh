@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs the dynamics micro-benchmarks and prints a markdown table of per-benchmark median and
 # minimum time over 15 repetitions, with the ratio of each median to BM_MassMatrix's; then
-# the OCP solve-time table (bench/ocp_bench.cpp).
+# the OCP solve-time table (bench/ocp_bench.cpp), then the speed-against-accuracy table and chart
+# of the ground models (bench/ground_bench.cpp, scripts/plots/ground_chart.py).
 # Usage: scripts/bench.sh BUILD_DIR   (BUILD_DIR configured with GAITOPT_BUILD_BENCH=ON, built)
 set -euo pipefail
 
@@ -59,3 +60,10 @@ echo
 ocp="$1/bench/ocp_bench"
 [[ -x "$ocp" ]] || { echo "error: $ocp not built" >&2; exit 1; }
 "$ocp" 5
+
+echo
+ground="$1/bench/ground_bench"
+[[ -x "$ground" ]] || { echo "error: $ground not built" >&2; exit 1; }
+csv="$(mktemp -d "${TMPDIR:-/tmp}/ground_bench.XXXXXX")/ground_bench.csv"
+"$ground" 3 >"$csv"
+/usr/bin/python3 scripts/plots/ground_chart.py "$csv"

@@ -47,9 +47,14 @@ echo "== polynomial (A) versus least-cost-of-transport (B) gait of the five-link
 /usr/bin/python3 scripts/compare_gaits.py results/poly_mu2004 results/opt_cot_mu2004 \
   results/poly_vs_cot_mu2004.md
 
+bash scripts/closed_loop_demo.sh "$build"
+
 echo "Results are in $root/results/:"
 echo "  inspect/*.json          robot models and dynamics at a posture"
 echo "  convention.png          angle convention"
 echo "  poly_mu2004/            polynomial gait: trajectory.csv (1 kHz), summary.json, *.png"
 echo "  opt_mu2004/, opt_rabbit/, opt_cot_mu2004/  optimal gaits, same files"
 echo "  poly_vs_opt_mu2004.md, poly_vs_cot_mu2004.md  the comparison tables above"
+echo "  walk_*/                 closed-loop walks: summary.json, steps.csv, walk_overview.png"
+echo "  stability_*/            sweeps: sweep_*.csv, summary.json, stability.png"
+echo "  ground_bench.md, ground_speed_accuracy.png  speed against accuracy of the grounds"

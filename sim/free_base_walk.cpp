@@ -114,8 +114,12 @@ struct Walker {
       return ref.hasDsp();
     }
     // The trailing tip unloading ends the DSP early, as the trailing-force event of the rigid
-    // walk does.
-    const bool over = run.clock >= ref.endTime() - h / 2 || run.b_unloaded >= kUnloadTime;
+    // walk does, but only in the DSP's second half: right after touchdown the impact can
+    // unload it for a moment on a non-rigid contact (an optimum with a lightly loaded trailing
+    // tip), and ending the step there would restart the clock at a posture far from its start.
+    const double mid_dsp = 0.5 * (ref.touchdownTime() + ref.endTime());
+    const bool over = run.clock >= ref.endTime() - h / 2 ||
+                      (run.b_unloaded >= kUnloadTime && run.clock >= mid_dsp);
     if (over) r.dsp_duration = run.elapsed - r.ssp_duration;
     return !over;
   }

@@ -8,8 +8,8 @@
 ///   SSP: the controller runs on the step clock from the reference start. Touchdown: the first
 ///   step at whose end E, ahead of B, carries a normal force > 0 or is at or below the ground;
 ///   the clock jumps to the reference touchdown time.
-///   DSP (only if the reference has one): until the reference ends or the trailing tip B has
-///   carried no normal force for kUnloadTime. Then relabel (Mu 2.38): the base moves to E, the
+///   DSP (only if the reference has one): until the reference ends or, in its second half, the
+///   trailing tip B has carried no normal force for kUnloadTime. Then relabel (Mu 2.38): the base moves to E, the
 ///   tips swap roles (and anchors), the next SSP starts with the clock at 0.
 ///   Failures: as hybrid_walk.hpp (hip below half a leg, torso beyond 60 deg), a stance tip
 ///   without normal force for kLiftoffTime, a stance tip sliding more than kMaxSlip, no step end

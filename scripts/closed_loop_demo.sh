@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# The closed-loop part of `make demo`: walks the polynomial and the optimal five-link gait under
+# both controllers, sweeps where walking stops, and charts the ground models' speed against
+# accuracy, into results/. Sweeps resume: delete a stability folder to recompute it.
+# Usage: scripts/closed_loop_demo.sh BUILD_DIR   (run from the repository root)
+set -euo pipefail
+build=${1:-build}
+bin="$build/apps/gaitopt"
+
+echo "== gaitopt simulate: 20 steps of each five-link gait on rigid ground (Poincare map)"
+for gait in poly opt; do
+  for controller in computed_torque sliding_mode; do
+    "$bin" simulate --reference "results/${gait}_mu2004" --controller "$controller" --steps 20 \
+      --rate 50 --out "results/walk_${gait}_mu2004_${controller}" --quiet
+  done
+done
+echo "== gaitopt simulate: the optimal gait on the impedance and LCP grounds"
+for ground in impedance lcp; do
+  "$bin" simulate --reference results/opt_mu2004 --ground "$ground" --steps 20 --rate 50 \
+    --out "results/walk_opt_mu2004_${ground}" --quiet
+done
+
+echo "== gaitopt stability: where walking stops (10 steps per point)"
+sweeps=(--sweep push=-3:12:16 --sweep mass_error=-0.3:0.5:17 --sweep length_error=-0.1:0.1:11
+  --sweep friction=0.1:0.6:11 --sweep gain_scale=0.2:3:15)
+for gait in poly opt; do
+  for controller in computed_torque sliding_mode; do
+    "$bin" stability --reference "results/${gait}_mu2004" --controller "$controller" --steps 10 \
+      "${sweeps[@]}" --quiet --out "results/stability_${gait}_mu2004_${controller}"
+  done
+done
+"$bin" stability --reference results/opt_mu2004 --ground impedance --steps 10 --quiet \
+  --sweep stiffness=1e4:1e9:11 --sweep push=-3:12:16 --out results/stability_opt_mu2004_impedance
+
+echo "== ground models: speed against accuracy (bench/ground_bench, 3 repetitions)"
+if [[ -x "$build/bench/ground_bench" ]]; then
+  "$build/bench/ground_bench" 3 >results/ground_bench.csv
+  /usr/bin/python3 scripts/plots/ground_chart.py results/ground_bench.csv >results/ground_bench.md
+else
+  echo "  skipped: $build/bench/ground_bench not built (GAITOPT_BUILD_BENCH=OFF)" >&2
+fi
