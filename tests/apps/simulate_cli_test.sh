@@ -9,7 +9,11 @@ ROOT=$2
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh"
 cd "$ROOT" || fail "no repo root $ROOT"  # the reference folder names its robot under configs/
-REF=results/poly_mu2004
+# The reference: the polynomial gait, made here (results/ keeps no trajectory CSVs).
+REF="$TMP/poly"
+run poly --robot configs/robots/mu2004_five_link.yaml --gait configs/gaits/mu2004.yaml \
+  --out "$REF" --no-plots
+[[ $RC -eq 0 ]] || fail "poly exited $RC: $(cat "$TMP/err")"
 
 # (a) rigid ground, 2 steps: files, row counts, the planned steps, the summary keys.
 run simulate --reference "$REF" --steps 2 --no-poincare --no-plots --out "$TMP/rigid"

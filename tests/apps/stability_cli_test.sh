@@ -10,7 +10,11 @@ ROOT=$2
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh"
 cd "$ROOT" || fail "no repo root $ROOT"
-ARGS=(--reference results/poly_mu2004 --steps 2 --no-plots --quiet)
+# The reference: the polynomial gait, made here (results/ keeps no trajectory CSVs).
+run poly --robot configs/robots/mu2004_five_link.yaml --gait configs/gaits/mu2004.yaml \
+  --out "$TMP/poly" --no-plots
+[[ $RC -eq 0 ]] || fail "poly exited $RC: $(cat "$TMP/err")"
+ARGS=(--reference "$TMP/poly" --steps 2 --no-plots --quiet)
 
 # (a) friction 0.2 .. 0.5: the gait needs about 0.35 (its own friction ratio plus the impact).
 run stability "${ARGS[@]}" --sweep friction=0.2:0.5:4 --jobs 2 --out "$TMP/a"
