@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/command_runner.hpp"
+#include "apps/compare_command.hpp"
 #include "apps/impact_map_command.hpp"
 #include "apps/inspect_command.hpp"
 #include "apps/optimize_command.hpp"
@@ -32,6 +33,7 @@ void configure(CLI::App& app) {
   gaitopt::apps::registerImpactMapCommand(app);
   gaitopt::apps::registerSimulateCommand(app);
   gaitopt::apps::registerStabilityCommand(app);
+  gaitopt::apps::registerCompareCommand(app);
 }
 
 /// Parses the command line and runs the chosen subcommand (from its callback).

@@ -41,11 +41,14 @@ echo "== gaitopt optimize: least cost of transport, free single/double support s
 "$bin" optimize --config configs/ocp/mu2004_walk_cot.yaml --out results/opt_cot_mu2004 --quiet
 
 echo "== polynomial (A) versus torque-squared optimal (B) gait of the five-link robot"
-/usr/bin/python3 scripts/compare_gaits.py results/poly_mu2004 results/opt_mu2004 \
+/usr/bin/python3 scripts/plots/compare_gaits.py results/poly_mu2004 results/opt_mu2004 \
   results/poly_vs_opt_mu2004.md
 echo "== polynomial (A) versus least-cost-of-transport (B) gait of the five-link robot"
-/usr/bin/python3 scripts/compare_gaits.py results/poly_mu2004 results/opt_cot_mu2004 \
+/usr/bin/python3 scripts/plots/compare_gaits.py results/poly_mu2004 results/opt_cot_mu2004 \
   results/poly_vs_cot_mu2004.md
+
+echo "== gaitopt compare: polynomial versus optimal gait, table and overlaid plots"
+"$bin" compare results/poly_mu2004 results/opt_mu2004 --out results/compare_poly_opt_mu2004
 
 bash scripts/closed_loop_demo.sh "$build"
 
@@ -55,6 +58,7 @@ echo "  convention.png          angle convention"
 echo "  poly_mu2004/            polynomial gait: trajectory.csv (1 kHz), summary.json, *.png"
 echo "  opt_mu2004/, opt_rabbit/, opt_cot_mu2004/  optimal gaits, same files"
 echo "  poly_vs_opt_mu2004.md, poly_vs_cot_mu2004.md  the comparison tables above"
+echo "  compare_poly_opt_mu2004/  comparison.md and overlaid angles, torques, forces, ZMP"
 echo "  walk_*/                 closed-loop walks: summary.json, steps.csv, walk_overview.png"
 echo "  stability_*/            sweeps: sweep_*.csv, summary.json, stability.png"
 echo "  ground_bench.md, ground_speed_accuracy.png  speed against accuracy of the grounds"

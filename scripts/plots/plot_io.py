@@ -95,6 +95,23 @@ def check_values(path, name, texts, allowed):
                          f"{'/'.join(allowed)}")
 
 
+def numbered_names(header, prefix, first=1):
+    """The contiguous run prefix<first>, prefix<first+1>, ... of column names in the header
+    (e.g. theta1..theta5); empty when prefix<first> is missing."""
+    names = []
+    while f"{prefix}{first + len(names)}" in header:
+        names.append(f"{prefix}{first + len(names)}")
+    return names
+
+
+def check_phases(path, phase):
+    """Raises unless the 'phase' texts are SSP rows first, then (optionally) DSP rows."""
+    check_values(path, "phase", phase, ("SSP", "DSP"))
+    if len(phase) and (phase[0] != "SSP"
+                       or np.any((phase[:-1] == "DSP") & (phase[1:] == "SSP"))):
+        raise InputError(f"{path}: column 'phase': expected SSP rows followed by DSP rows")
+
+
 def check_increasing(path, name, values):
     """Raises where a column decreases (equal neighbours are fine)."""
     back = np.diff(values) < 0

@@ -1,0 +1,442 @@
+#!/usr/bin/python3
+"""Compares two gait result folders (DESIGN.md sec. 5): a markdown table and overlaid pictures.
+
+Usage: compare_gaits.py A_DIR B_DIR [OUT.md | OUT_DIR]
+Without a third argument, prints the markdown table of the two summary.json files (columns A, B
+and B/A; B/A is left empty when |A| < 1e-9 or A and B differ in sign). With OUT.md, also writes
+the table there. With OUT_DIR (an existing folder, or any name not ending in .md), creates it and
+writes, printing one line per file written:
+  comparison.md        the table
+  angles_overlay.png   link angles theta1..thetaN, one panel per link
+  torques_overlay.png  joint torques tau0..tau{N-1}, one panel per joint
+  forces_overlay.png   normal forces fb_y, fe_y and the friction ratio |f_x|/f_y (f_y > 1 N)
+                       with the friction coefficient (summary key 'friction') when present
+  zmp_overlay.png      zmp_x with the support interval (stance tip B at x = 0; in the DSP up
+                       to the leading tip E at step_length, or swing_x when the key is absent)
+  comparison.png       angles, torques, normal forces and ZMP on one page
+The pictures read A_DIR/trajectory.csv and B_DIR/trajectory.csv: A solid, B dashed, one colour
+per quantity; grey vertical lines mark each gait's touchdown (SSP -> DSP; the step end for a
+gait without DSP rows). A missing folder, file, column or key, or a malformed value, ends the
+script with "error: <file>: <what>" and exit code 1.
+"""
+import math
+import os
+import sys
+
+import plot_io
+from plot_io import InputError
+
+ROWS = [
+    ("status", "status", None),
+    ("cost_of_transport", "cost of transport", "{:.4f}"),
+    ("energy_J", "energy (absolute work) [J]", "{:.2f}"),
+    ("torque_squared", "torque-squared integral [N^2 m^2 s]", "{:.1f}"),
+    ("min_normal_force", "min normal force [N]", "{:.1f}"),
+    ("max_friction_ratio", "max friction ratio abs(Fx)/Fy", "{:.3f}"),
+    ("min_zmp_margin", "min ZMP margin [m]", "{:.4f}"),
+    ("impact_energy_loss_J", "impact energy loss [J]", "{:.3g}"),
+    ("step_length", "step length [m]", "{:.3f}"),
+    ("speed", "speed [m/s]", "{:.3f}"),
+]
+# B/A is shown only when |A| is at least this (below it the ratio is rounding noise).
+RATIO_MIN_A = 1e-9
+# The friction ratio is drawn where the normal force exceeds this [N].
+MIN_LOADED_FORCE = 1.0
+FORCE_COLUMNS = ["fb_x", "fb_y", "fe_x", "fe_y", "zmp_x"]
+JOINT_NAMES_5 = ["stance ankle", "stance knee", "stance hip", "swing hip", "swing knee"]
+DPI = 110
+TOUCHDOWN_COLOUR = "0.45"
+
+# ---------------------------------------------------------------------------------------------
+# Table
+
+
+def check_folder(folder):
+    if not os.path.isdir(folder):
+        raise InputError(f"{folder}: no such folder")
+
+
+def load(folder):
+    """The folder's summary.json; it must have the 'status' key every gait summary has."""
+    check_folder(folder)
+    path = os.path.join(folder, "summary.json")
+    s = plot_io.read_json(path, "summary")
+    plot_io.require_keys(path, s, ["status"])
+    return s
+
+
+def cell(value, fmt):
+    return fmt.format(value) if fmt is not None and plot_io.is_number(value) else str(value)
+
+
+def ratio(va, vb):
+    """B/A to two decimals, or '' when it means nothing (tiny A, signs differ, not numbers)."""
+    if not (plot_io.is_number(va) and plot_io.is_number(vb)):
+        return ""
+    if abs(va) < RATIO_MIN_A or va * vb < 0:
+        return ""
+    return f"{vb / va:.2f}"
+
+
+def table(a_dir, b_dir, a=None, b=None):
+    a = load(a_dir) if a is None else a
+    b = load(b_dir) if b is None else b
+    lines = [f"| quantity | A: {a_dir} | B: {b_dir} | B/A |", "|---|---:|---:|---:|"]
+    for key, label, fmt in ROWS:
+        va, vb = a.get(key), b.get(key)
+        if va is None or vb is None:
+            continue
+        r = ratio(va, vb) if fmt else ""
+        lines.append(f"| {label} | {cell(va, fmt)} | {cell(vb, fmt)} | {r} |")
+    joints = a.get("joints")
+    names = [j.get("name", "") if isinstance(j, dict) else str(j)
+             for j in (joints if isinstance(joints, list) else [])]
+    peaks_a, peaks_b = a.get("peak_torque"), b.get("peak_torque")
+    if isinstance(peaks_a, list) and isinstance(peaks_b, list):
+        for j, (pa, pb) in enumerate(zip(peaks_a, peaks_b)):
+            name = names[j] if j < len(names) and names[j] else f"joint {j}"
+            lines.append(f"| peak torque {name} [N m] | {cell(pa, '{:.1f}')} | "
+                         f"{cell(pb, '{:.1f}')} | {ratio(pa, pb)} |")
+    return "\n".join(lines) + "\n"
+
+
+def write_text(path, text):
+    try:
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(text)
+    except OSError as e:
+        raise InputError(f"{path}: cannot write ({e.strerror})") from e
+
+
+# ---------------------------------------------------------------------------------------------
+# Trajectories
+
+
+class Gait:
+    """One result folder's summary and trajectory, with how it is drawn (tag A/B, line style)."""
+
+    def __init__(self, folder, tag, ls):
+        self.folder, self.tag, self.ls = folder.rstrip("/") or folder, tag, ls
+        self.s = load(folder)
+        path = os.path.join(folder, "trajectory.csv")
+        header, rows = plot_io.read_rows(path, "trajectory", min_rows=2)
+        plot_io.require_columns(path, header, ["t", "phase", "theta1", "tau0"] + FORCE_COLUMNS)
+        thetas = plot_io.numbered_names(header, "theta", 1)
+        taus = plot_io.numbered_names(header, "tau", 0)
+        if len(thetas) < 2:
+            raise InputError(f"{path}: missing column 'theta2' (a biped has at least two links)")
+        optional = ["swing_x"] if "swing_x" in header else []
+        col = plot_io.columns(path, header, rows, ["t", "phase"] + thetas + taus + FORCE_COLUMNS
+                              + optional, strings={"phase"})
+        self.phase = col.pop("phase")
+        plot_io.check_phases(path, self.phase)
+        plot_io.check_increasing(path, "t", col["t"])
+        self.col, self.t = col, col["t"]
+        self.n, self.n_tau = len(thetas), len(taus)
+        self.dsp = self.phase == "DSP"
+        self.t_touchdown = self.t[self.dsp][0] if self.dsp.any() else self.t[-1]
+        summary = os.path.join(folder, "summary.json")
+        for key in ("friction", "step_length"):
+            if key in self.s:
+                plot_io.require_numbers(summary, self.s, [key])
+        self.mu = self.s.get("friction")
+        self.link_names = self.names_from(self.s.get("links"), self.n)
+
+    @staticmethod
+    def names_from(items, count):
+        if (isinstance(items, list) and len(items) == count
+                and all(isinstance(x, dict) and isinstance(x.get("name"), str) for x in items)):
+            return [x["name"] for x in items]
+        return None
+
+    def label(self):
+        return f"{self.tag}: {self.folder} ({'solid' if self.ls == '-' else 'dashed'})"
+
+    def touchdown_label(self):
+        if self.dsp.any():
+            return f"{self.tag} touchdown SSP→DSP, t = {self.t_touchdown:.3g} s"
+        return f"{self.tag} touchdown at the step end (no DSP), t = {self.t_touchdown:.3g} s"
+
+    def friction_ratio(self, tip):
+        """|f_x| / f_y at tip 'b' or 'e' where f_y > MIN_LOADED_FORCE, else NaN."""
+        import numpy as np
+        fx, fy = self.col[f"f{tip}_x"], self.col[f"f{tip}_y"]
+        loaded = fy > MIN_LOADED_FORCE
+        return np.where(loaded, np.abs(fx) / np.where(loaded, fy, 1.0), np.nan)
+
+    def support_edge(self):
+        """x of the leading tip E in the DSP rows (NaN in the SSP), or None if unknown."""
+        import numpy as np
+        if not self.dsp.any():
+            return None
+        if "step_length" in self.s:
+            e = np.full(len(self.t), float(self.s["step_length"]))
+        elif "swing_x" in self.col:
+            e = self.col["swing_x"].copy()
+        else:
+            return None
+        e[~self.dsp] = np.nan
+        return e
+
+
+# ---------------------------------------------------------------------------------------------
+# Pictures (matplotlib is imported here so the table needs only numpy)
+
+
+def pyplot():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt
+
+
+def colour(i):
+    return f"C{i % 10}"
+
+
+def mark_phases(ax, gaits):
+    for g in gaits:
+        ax.axvline(g.t_touchdown, color=TOUCHDOWN_COLOUR, ls=g.ls, lw=1)
+
+
+def style_legend(fig, gaits, ncol=2):
+    """Figure legend naming the folders (line styles) and their touchdowns."""
+    from matplotlib.lines import Line2D
+    handles = [Line2D([], [], color="k", ls=g.ls, lw=1.6, label=g.label()) for g in gaits]
+    handles += [Line2D([], [], color=TOUCHDOWN_COLOUR, ls=g.ls, lw=1, label=g.touchdown_label())
+                for g in gaits]
+    fig.legend(handles=handles, loc="lower center", ncol=ncol, fontsize=8)
+
+
+def colour_legend(ax, entries, **kw):
+    """Axes legend of quantity colours: entries are (colour, label)."""
+    from matplotlib.lines import Line2D
+    ax.legend(handles=[Line2D([], [], color=c, lw=1.6, label=text) for c, text in entries],
+              fontsize=7, **kw)
+
+
+def finish(ax, xlabel, ylabel, title):
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title, fontsize=9)
+    ax.grid(True, alpha=0.4)
+
+
+def link_label(gaits, i):
+    names = [g.link_names[i] for g in gaits if g.link_names and i < g.n]
+    name = names[0] if names and all(x == names[0] for x in names) else ""
+    return f"θ{i + 1} {name}".strip()
+
+
+def joint_label(gaits, j):
+    if all(g.n == 5 for g in gaits):
+        return f"τ{j} {JOINT_NAMES_5[j]}" if j < 5 else f"τ{j} joint {j}"
+    return f"τ{j} joint {j}"
+
+
+def draw_angle(ax, gaits, i):
+    import numpy as np
+    for g in gaits:
+        if i < g.n:
+            ax.plot(g.t, np.degrees(g.col[f"theta{i + 1}"]), color=colour(i), ls=g.ls, lw=1.5)
+    mark_phases(ax, gaits)
+
+
+def draw_torque(ax, gaits, j):
+    for g in gaits:
+        if j < g.n_tau:
+            ax.plot(g.t, g.col[f"tau{j}"], color=colour(j), ls=g.ls, lw=1.5)
+    mark_phases(ax, gaits)
+
+
+def draw_all_angles(ax, gaits):
+    n = max(g.n for g in gaits)
+    for i in range(n):
+        draw_angle(ax, gaits, i)
+    colour_legend(ax, [(colour(i), link_label(gaits, i)) for i in range(n)], ncol=2,
+                  loc="best")
+    finish(ax, "time [s]", "link angle θ [deg]", "Link angles (from the upward vertical)")
+
+
+def draw_all_torques(ax, gaits):
+    m = max(g.n_tau for g in gaits)
+    for j in range(m):
+        draw_torque(ax, gaits, j)
+    colour_legend(ax, [(colour(j), joint_label(gaits, j)) for j in range(m)], ncol=2,
+                  loc="best")
+    finish(ax, "time [s]", "joint torque [N m]", "Joint torques")
+
+
+def draw_normal_forces(ax, gaits):
+    for g in gaits:
+        ax.plot(g.t, g.col["fb_y"], color="tab:blue", ls=g.ls, lw=1.5)
+        ax.plot(g.t, g.col["fe_y"], color="tab:orange", ls=g.ls, lw=1.5)
+    mark_phases(ax, gaits)
+    colour_legend(ax, [("tab:blue", "fb_y, tip B (stance/trailing)"),
+                       ("tab:orange", "fe_y, tip E (swing/leading)")], loc="best")
+    finish(ax, "time [s]", "normal force [N]", "Normal ground forces")
+
+
+def draw_friction(ax, gaits):
+    import numpy as np
+    top = 0.0
+    for g in gaits:
+        for tip, c in (("b", "tab:blue"), ("e", "tab:orange")):
+            r = g.friction_ratio(tip)
+            ax.plot(g.t, r, color=c, ls=g.ls, lw=1.5)
+            if np.any(np.isfinite(r)):
+                top = max(top, float(np.nanmax(r)))
+    entries = [("tab:blue", "|fb_x|/fb_y"), ("tab:orange", "|fe_x|/fe_y")]
+    mus = [g for g in gaits if g.mu is not None]
+    for g in mus:
+        ax.axhline(g.mu, color="k", ls=g.ls, lw=1.1)
+        top = max(top, g.mu)
+    if mus:
+        same = all(g.mu == mus[0].mu for g in mus)
+        text = (f"friction μ = {mus[0].mu:g} ({', '.join(g.tag for g in mus)})" if same else
+                "friction μ: " + ", ".join(f"{g.tag} {g.mu:g}" for g in mus))
+        entries.append(("k", text))
+    mark_phases(ax, gaits)
+    ax.set_ylim(0, 1.2 * top if top > 0 else 1)
+    colour_legend(ax, entries, loc="best")
+    finish(ax, "time [s]", "|f_x| / f_y [-]",
+           f"Friction ratio where f_y > {MIN_LOADED_FORCE:g} N")
+
+
+def draw_zmp(ax, gaits):
+    entries = [("tab:red", "zmp_x")]
+    ax.axhline(0, color="0.3", lw=1)
+    entries.append(("0.3", "stance/trailing tip B, x = 0"))
+    shaded = False
+    for g in gaits:
+        edge = g.support_edge()
+        if edge is None:
+            continue
+        d = g.dsp
+        ax.fill_between(g.t[d], 0, edge[d], facecolor="0.6" if g.ls == "-" else "none",
+                        alpha=0.25 if g.ls == "-" else 0.6, hatch=None if g.ls == "-" else "//",
+                        edgecolor="0.5", lw=0)
+        ax.plot(g.t, edge, color="0.3", ls=g.ls, lw=1)
+        shaded = True
+    if shaded:
+        entries.append(("0.6", "DSP support B..E (A filled, B hatched)"))
+    for g in gaits:
+        ax.plot(g.t, g.col["zmp_x"], color="tab:red", ls=g.ls, lw=1.6)
+    mark_phases(ax, gaits)
+    colour_legend(ax, entries, loc="best")
+    finish(ax, "time [s]", "x (from tip B) [m]", "ZMP and support interval")
+
+
+def grid(plt, count, width=4.0, height=2.9):
+    """Small multiples: a figure with at least `count` axes; the unused ones hidden."""
+    ncols = 3 if count > 4 else 2 if count > 1 else 1
+    nrows = math.ceil(count / ncols)
+    fig, axes = plt.subplots(nrows, ncols, figsize=(width * ncols, height * nrows + 1.0),
+                             squeeze=False)
+    flat = list(axes.ravel())
+    for ax in flat[count:]:
+        ax.set_visible(False)
+    return fig, flat[:count]
+
+
+def title(fig, what, gaits):
+    fig.suptitle(f"{what}: " + " vs ".join(g.label() for g in gaits), fontsize=10)
+
+
+def save(fig, gaits, path, bottom):
+    style_legend(fig, gaits)
+    fig.tight_layout(rect=(0, bottom, 1, 1))
+    fig.savefig(path, dpi=DPI)
+    print(path)
+
+
+def angles_figure(plt, gaits):
+    n = max(g.n for g in gaits)
+    fig, axes = grid(plt, n)
+    for i, ax in enumerate(axes):
+        draw_angle(ax, gaits, i)
+        finish(ax, "time [s]", "θ [deg]", link_label(gaits, i))
+    title(fig, "Link angles", gaits)
+    return fig, 0.1
+
+
+def torques_figure(plt, gaits):
+    m = max(g.n_tau for g in gaits)
+    fig, axes = grid(plt, m)
+    for j, ax in enumerate(axes):
+        draw_torque(ax, gaits, j)
+        finish(ax, "time [s]", "torque [N m]", joint_label(gaits, j))
+    title(fig, "Joint torques", gaits)
+    return fig, 0.1
+
+
+def forces_figure(plt, gaits):
+    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(8.2, 7.6), sharex=True)
+    draw_normal_forces(ax1, gaits)
+    draw_friction(ax2, gaits)
+    ax1.set_xlabel("")
+    title(fig, "Contact forces", gaits)
+    return fig, 0.09
+
+
+def zmp_figure(plt, gaits):
+    fig, ax = plt.subplots(figsize=(8.2, 5.4))
+    draw_zmp(ax, gaits)
+    title(fig, "ZMP", gaits)
+    return fig, 0.14
+
+
+def comparison_figure(plt, gaits):
+    fig, axes = plt.subplots(2, 2, figsize=(13, 9.5))
+    draw_all_angles(axes[0, 0], gaits)
+    draw_all_torques(axes[0, 1], gaits)
+    draw_normal_forces(axes[1, 0], gaits)
+    draw_zmp(axes[1, 1], gaits)
+    title(fig, "Gait comparison", gaits)
+    return fig, 0.07
+
+
+PICTURES = [("angles_overlay.png", angles_figure), ("torques_overlay.png", torques_figure),
+            ("forces_overlay.png", forces_figure), ("zmp_overlay.png", zmp_figure),
+            ("comparison.png", comparison_figure)]
+
+
+def report(a_dir, b_dir, out_dir):
+    """Reads everything first, so a broken input writes nothing."""
+    gaits = [Gait(a_dir, "A", "-"), Gait(b_dir, "B", "--")]
+    text = table(a_dir, b_dir, gaits[0].s, gaits[1].s)
+    plt = pyplot()
+    try:
+        os.makedirs(out_dir, exist_ok=True)
+    except OSError as e:
+        raise InputError(f"{out_dir}: cannot create the folder ({e.strerror})") from e
+    path = os.path.join(out_dir, "comparison.md")
+    write_text(path, text)
+    print(path)
+    for name, make in PICTURES:
+        fig, bottom = make(plt, gaits)
+        save(fig, gaits, os.path.join(out_dir, name), bottom)
+        plt.close(fig)
+
+
+def is_folder_target(arg):
+    return os.path.isdir(arg) or not arg.endswith(".md")
+
+
+def main(args):
+    if len(args) == 3 and is_folder_target(args[2]):
+        report(*args)
+        return
+    text = table(args[0], args[1])
+    if len(args) == 3:
+        write_text(args[2], text)
+    print(text, end="")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) not in (3, 4):
+        sys.exit(__doc__)
+    try:
+        main(sys.argv[1:])
+    except InputError as e:
+        sys.exit(f"error: {e}")

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# End-to-end checks of `gaitopt compare`: the report of two gait folders, and exit 2 with the
+# missing file named when a folder is not a gait result.
+# Usage: compare_cli_test.sh <path to gaitopt binary> <repo root>
+set -u
+[[ $# -eq 2 ]] || { echo "usage: $0 <gaitopt binary> <repo root>" >&2; exit 1; }
+GAITOPT=$1
+ROOT=$2
+# shellcheck source=tests/apps/cli_test_lib.sh
+source "$(dirname "$0")/cli_test_lib.sh"
+"$PY" -c "import matplotlib" 2>/dev/null || { echo "SKIP: no matplotlib"; exit 0; }
+cd "$ROOT" || fail "no repo root $ROOT"
+
+# (a) the polynomial gait against itself at a lower rate: the table's B/A column is 1.
+for rate in 1000 200; do
+  run poly --robot configs/robots/mu2004_five_link.yaml --gait configs/gaits/mu2004.yaml \
+    --out "$TMP/poly$rate" --rate "$rate" --no-plots
+  [[ $RC -eq 0 ]] || fail "poly exited $RC: $(cat "$TMP/err")"
+done
+run compare "$TMP/poly1000" "$TMP/poly200" --out "$TMP/cmp"
+[[ $RC -eq 0 ]] || fail "(a) compare exited $RC: $(cat "$TMP/err")"
+for f in comparison.md comparison.png angles_overlay.png torques_overlay.png forces_overlay.png \
+  zmp_overlay.png; do
+  [[ -s "$TMP/cmp/$f" ]] || fail "(a) $f missing"
+done
+grep -q "^| step length \[m\] | 0.350 | 0.350 | 1.00 |" "$TMP/cmp/comparison.md" ||
+  fail "(a) table: $(cat "$TMP/cmp/comparison.md")"
+
+# (b) a folder without a trajectory: exit 2 naming the file.
+mkdir -p "$TMP/empty"
+run compare "$TMP/poly1000" "$TMP/empty" --out "$TMP/cmp2"
+[[ $RC -eq 2 ]] || fail "(b) expected exit 2, got $RC"
+grep -q "empty/summary.json.*missing" "$TMP/err" || fail "(b) $(cat "$TMP/err")"
+echo "compare CLI: all checks passed"
