@@ -55,16 +55,9 @@ def read_csv(path):
         raise InputError(f"{path}: found {n} theta<i> columns, a biped has at least two links")
     cols = plot_io.columns(path, header, rows, needed, strings={"phase"})
     phase = cols.pop("phase")
-    check_phases(path, phase)
+    plot_io.check_phases(path, phase)
     plot_io.check_increasing(path, "t", cols["t"])
     return cols, phase, n
-
-
-def check_phases(path, phase):
-    """SSP rows first, then (optionally) DSP rows."""
-    plot_io.check_values(path, "phase", phase, ("SSP", "DSP"))
-    if phase[0] != "SSP" or np.any((phase[:-1] == "DSP") & (phase[1:] == "SSP")):
-        raise InputError(f"{path}: column 'phase': expected SSP rows followed by DSP rows")
 
 
 def read_summary(path, n):
