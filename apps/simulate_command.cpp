@@ -40,16 +40,11 @@ nlohmann::ordered_json poincareJson(const std::optional<sim::PoincareAnalysis>& 
 
 /// Mean step length and duration over the completed steps.
 nlohmann::ordered_json gaitJson(const sim::WalkResult& w) {
-  double advance = 0, duration = 0;
-  for (int k = 0; k < w.steps_completed; ++k) {
-    advance += w.steps[static_cast<size_t>(k)].advance;
-    duration +=
-        w.steps[static_cast<size_t>(k)].ssp_duration + w.steps[static_cast<size_t>(k)].dsp_duration;
-  }
   if (w.steps_completed == 0) return {{"mean_step_length", nullptr}, {"mean_speed", nullptr}};
-  return {{"mean_step_length", advance / w.steps_completed},
-          {"mean_step_duration", duration / w.steps_completed},
-          {"mean_speed", advance / duration}};
+  const sim::WalkTotals total = sim::completedTotals(w);
+  return {{"mean_step_length", total.distance / w.steps_completed},
+          {"mean_step_duration", total.duration / w.steps_completed},
+          {"mean_speed", total.distance / total.duration}};
 }
 
 nlohmann::ordered_json summaryJson(const SimulateOptions& o, const ReferenceFolder& ref,

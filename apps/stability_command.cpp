@@ -70,10 +70,8 @@ SweepRow walkPoint(const ReferenceFolder& ref, const sim::Reference& reference,
   SweepRow row{value,       r.walk.steps_completed, scenario.steps,
                r.walk.fell, r.walk.failure,         r.walk.max_tracking_error};
   if (r.poincare && r.poincare->ok) row.max_multiplier = r.poincare->max_multiplier;
-  double advance = 0;
-  for (int k = 0; k < r.walk.steps_completed; ++k)
-    advance += r.walk.steps[static_cast<size_t>(k)].advance;
-  row.mean_advance = r.walk.steps_completed ? advance / r.walk.steps_completed : 0;
+  if (r.walk.steps_completed > 0)
+    row.mean_advance = sim::completedTotals(r.walk).distance / r.walk.steps_completed;
   row.wall_time_s = r.wall_time_s;
   return row;
 }

@@ -201,14 +201,7 @@ WalkResult walkFreeBase(const dynamics::Model& plant, const TrackingController& 
   double t = 0;
   for (int k = 0; k < plan.steps; ++k) {
     const StepResult r = walker.step(s, t, k, plan.push);
-    w.max_tracking_error = std::max(w.max_tracking_error, r.max_tracking_error);
-    w.steps.push_back(r);
-    if (!r.ok) {
-      w.fell = true;
-      w.failure = fmt::format("step {}: {}", k + 1, r.failure);
-      break;
-    }
-    ++w.steps_completed;
+    if (!appendStep(w, r)) break;
     t += r.ssp_duration + r.dsp_duration;
   }
   return w;

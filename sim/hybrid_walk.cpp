@@ -272,6 +272,28 @@ StepResult simulateStep(const dynamics::Model& plant, const TrackingController& 
   return r;
 }
 
+bool appendStep(WalkResult& walk, const StepResult& step) {
+  walk.max_tracking_error = std::max(walk.max_tracking_error, step.max_tracking_error);
+  walk.steps.push_back(step);
+  if (!step.ok) {
+    walk.fell = true;
+    walk.failure = fmt::format("step {}: {}", walk.steps.size(), step.failure);
+    return false;
+  }
+  ++walk.steps_completed;
+  return true;
+}
+
+WalkTotals completedTotals(const WalkResult& walk) {
+  WalkTotals totals;
+  for (int k = 0; k < walk.steps_completed; ++k) {
+    const StepResult& s = walk.steps[static_cast<std::size_t>(k)];
+    totals.distance += s.advance;
+    totals.duration += s.ssp_duration + s.dsp_duration;
+  }
+  return totals;
+}
+
 WalkResult simulateWalk(const dynamics::Model& plant, const TrackingController& controller,
                         const Reference& ref, const WalkOptions& options, const WalkLog& log,
                         const VecD& theta0, const VecD& dtheta0) {
@@ -280,16 +302,9 @@ WalkResult simulateWalk(const dynamics::Model& plant, const TrackingController& 
   VecD dtheta = dtheta0.size() ? dtheta0 : VecD(ref.start().dtheta);
   double t = 0, stance_x = 0;
   for (int k = 0; k < options.steps; ++k) {
-    StepResult s = simulateStep(plant, controller, ref, theta, dtheta, options.integrator, log, t,
-                                k, stance_x, options.push);
-    w.max_tracking_error = std::max(w.max_tracking_error, s.max_tracking_error);
-    w.steps.push_back(s);
-    if (!s.ok) {
-      w.fell = true;
-      w.failure = fmt::format("step {}: {}", k + 1, s.failure);
-      break;
-    }
-    ++w.steps_completed;
+    const StepResult s = simulateStep(plant, controller, ref, theta, dtheta, options.integrator,
+                                      log, t, k, stance_x, options.push);
+    if (!appendStep(w, s)) break;
     t += s.ssp_duration + s.dsp_duration;
     stance_x += s.advance;
     theta = s.theta;

@@ -69,6 +69,16 @@ struct WalkResult {
   std::vector<StepResult> steps;
 };
 
+/// Adds a step to the walk (its error, and the failure as "step k: ..."); false when the step
+/// failed, which ends the walk. Every ground's walk keeps its record through this.
+bool appendStep(WalkResult& walk, const StepResult& step);
+
+/// Distance advanced [m] and time taken [s] over the completed steps.
+struct WalkTotals {
+  double distance = 0, duration = 0;
+};
+WalkTotals completedTotals(const WalkResult& walk);
+
 /// Up to options.steps steps from the reference's start, or (theta0, dtheta0) when given.
 WalkResult simulateWalk(const dynamics::Model& plant, const TrackingController& controller,
                         const Reference& ref, const WalkOptions& options, const WalkLog& log = {},

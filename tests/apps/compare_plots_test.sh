@@ -9,15 +9,9 @@ set -u
 [[ $# -eq 1 ]] || { echo "usage: $0 <repo root>" >&2; exit 1; }
 ROOT=$1
 SCRIPT="$ROOT/scripts/plots/compare_gaits.py"
-PY=/usr/bin/python3
+# shellcheck source=tests/apps/cli_test_lib.sh
+source "$(dirname "$0")/cli_test_lib.sh"  # PY, TMP (removed on exit), fail
 "$PY" -c "import matplotlib, numpy" 2>/dev/null || { echo "SKIP: no matplotlib/numpy"; exit 0; }
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-
-fail() {
-  echo "FAIL: $*" >&2
-  exit 1
-}
 
 # Runs compare_gaits.py with the given arguments, keeping stdout, stderr and the exit code.
 compare() {
