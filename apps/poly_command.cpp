@@ -9,6 +9,7 @@
 #include "apps/command_runner.hpp"
 #include "apps/plotting.hpp"
 #include "apps/result_folder.hpp"
+#include "dynamics/model_variation.hpp"
 #include "dynamics/robot_config.hpp"
 #include "gaits/gait_summary.hpp"
 #include "gaits/hip_plan_search.hpp"
@@ -55,8 +56,10 @@ gaits::HipPlanSearch designHipPlan(const dynamics::Model& model, const gaits::Ga
 
 void runPoly(const PolyOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const dynamics::Model model = dynamics::loadRobot(options.robot_path);
   const gaits::GaitParams params = gaits::loadGait(options.gait_path);
+  // The gait's ground slope rotates gravity (dynamics/model.hpp).
+  const dynamics::Model model =
+      dynamics::withSlope(dynamics::loadRobot(options.robot_path), params.slope);
   fmt::print("poly: {} on {}: step {:.3f} m in {:.3f} s ({:.3f} m/s)\n", params.name, model.name(),
              params.step_length, params.duration(), params.speed());
 

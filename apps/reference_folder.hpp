@@ -17,7 +17,8 @@ struct ReferenceFolder {
 };
 
 /// Reads DIR/trajectory.csv for the robot `robot_path`, or, when that is empty, for
-/// configs/robots/<summary.json's "robot">.yaml under the working directory.
+/// configs/robots/<summary.json's "robot">.yaml under the working directory. The model carries
+/// summary.json's "slope_rad" (0 when absent), so a simulation walks the reference's slope.
 /// @throws config::ConfigError naming the file and what is wrong (missing folder, unknown robot,
 ///         a trajectory that does not fit the robot).
 ReferenceFolder loadReferenceFolder(const std::string& dir, const std::string& robot_path);

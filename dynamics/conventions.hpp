@@ -3,7 +3,9 @@
 /// The one place that owns gaitopt's conventions (DESIGN.md section 3). Everything else uses it.
 ///
 /// Frames and units: SI units, radians. x points in the walking direction, y up. Every step is
-/// expressed in the frame whose origin is the stance tip B.
+/// expressed in the frame whose origin is the stance tip B. On a slope (Model::slope(), > 0
+/// uphill) this is the GROUND frame: x along the slope, y along its normal, the ground y = 0,
+/// theta from the slope normal; only gravity rotates, to (-g sin gamma, -g cos gamma).
 ///
 /// Links are numbered along the serial chain from the stance tip (Mu 2004, Fig. 2.1): for the
 /// five-link robot 1 stance shank, 2 stance thigh, 3 torso, 4 swing thigh, 5 swing shank. In code

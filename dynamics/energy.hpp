@@ -20,12 +20,16 @@ S kineticEnergy(const Model& model, const Vec<S>& theta, const Vec<S>& dtheta,
   return k;
 }
 
-/// P = sum_i m_i g y_ci with B on the ground, y = 0 (Mu 2.3) [J].
+/// P = -sum_i m_i g_vec . r_ci with B at the origin (Mu 2.3 with gravity rotated by the slope:
+/// sum_i m_i g (x_ci sin gamma + y_ci cos gamma); on level ground sum_i m_i g y_ci) [J].
 template <class S>
 S potentialEnergy(const Model& model, const Vec<S>& theta) {
+  const Eigen::Vector2d g_vec = model.gravityAcceleration();
   S p = S(0);
-  for (int i = 0; i < model.nLinks(); ++i)
-    p += model.link(i).mass * model.gravity() * pointPosition(model.comWeights(i), theta)(1);
+  for (int i = 0; i < model.nLinks(); ++i) {
+    const Vec2<S> r = pointPosition(model.comWeights(i), theta);
+    p -= model.link(i).mass * (g_vec(0) * r(0) + g_vec(1) * r(1));
+  }
   return p;
 }
 

@@ -5,11 +5,12 @@
 /// tip. Mu (2004) sec. 2.4 writes them as D(q) qddot + H qdot + G = tau (2.47) with generalised
 /// contact forces Q = J^T F_e (2.50); here, by virtual work on each link CoM,
 ///   D_ext qddot + b(q, qdot) = M_ext^T tau + J_B^T F_B + J_E^T F_E,
-///   b = sum_i m_i J_ci^T (Jdot_ci qdot + g e_y),   M_ext^T tau = (0, 0, M^T tau) (2.43),
+///   b = sum_i m_i J_ci^T (Jdot_ci qdot - g_vec),   M_ext^T tau = (0, 0, M^T tau) (2.43),
 /// where J_ci is the CoM Jacobian of link i (floating_base.hpp) and D_ext the mass matrix of
 /// floatingBaseMassMatrix. b holds Coriolis, centrifugal and gravity forces: the link rotation
 /// rates enter only through CoM velocities, so no term depends on the base velocity. Used by
-/// the walks on compliant and time-stepping grounds, where the stance tip is not pinned.
+/// the walks on compliant and time-stepping grounds, where the stance tip is not pinned. On a
+/// slope the "world" frame is the ground frame of model.hpp and g_vec = gravityAcceleration().
 #include <Eigen/Core>
 
 #include "dynamics/floating_base.hpp"
@@ -34,11 +35,11 @@ inline FloatingBaseDynamics floatingBaseDynamics(const Model& model, const VecD&
   FloatingBaseDynamics fb{floatingBaseMassMatrix(model, theta), Eigen::VectorXd::Zero(n + 2),
                           Eigen::MatrixXd::Zero(2, n + 2), Eigen::MatrixXd::Zero(2, n + 2),
                           Eigen::Vector2d::Zero()};
-  const Eigen::Vector2d gravity(0, model.gravity());
+  const Eigen::Vector2d minus_gravity = -model.gravityAcceleration();
   for (int i = 0; i < n; ++i) {
     const Eigen::MatrixXd jc = floatingJacobian(model.comWeights(i), theta);
     const Vec2d acc_bias = pointBias(model.comWeights(i), theta, dtheta);
-    fb.bias += model.link(i).mass * jc.transpose() * (acc_bias + gravity);
+    fb.bias += model.link(i).mass * jc.transpose() * (acc_bias + minus_gravity);
   }
   fb.jac_b.leftCols(2).setIdentity();
   fb.jac_e = floatingJacobian(model.tipWeights(), theta);

@@ -1,30 +1,35 @@
 #pragma once
 /// @file ground.hpp
 /// Ground reactions and the zero-moment point. Mu gives neither formula (notes/mu2004.md sec.
-/// 2.5); these are the standard Newton-Euler results for the whole robot on level ground.
+/// 2.5); these are the standard Newton-Euler results for the whole robot. On a slope everything
+/// is in the ground frame (model.hpp) with gravity g_vec = model.gravityAcceleration().
 #include "dynamics/kinematics.hpp"
 
 namespace gaitopt::dynamics {
 
 /// Ground force on the robot at the stance tip B from total linear momentum:
-/// F_B = m (a_com + g e_y) - F_E, with F_E the force at E (zero in single support) [N].
+/// F_B = m (a_com - g_vec) - F_E, with F_E the force at E (zero in single support) [N]
+/// (level ground: g_vec = -g e_y).
 template <class S>
 Vec2<S> stanceForce(const Model& model, const Vec<S>& theta, const Vec<S>& dtheta,
                     const Vec<S>& ddtheta, const Vec2<S>& force_swing) {
   // Scalar on the right: Eigen's nested AutoDiff types only support matrix * scalar.
   Vec2<S> f =
       pointAcceleration(model.totalComWeights(), theta, dtheta, ddtheta) * S(model.totalMass());
-  f(1) += model.totalMass() * model.gravity();
+  const Eigen::Vector2d g_vec = model.gravityAcceleration();
+  f(0) -= model.totalMass() * g_vec(0);
+  f(1) -= model.totalMass() * g_vec(1);
   return f - force_swing;
 }
 
-/// x of the zero-moment point relative to B, from the rate of change of angular momentum about B
-/// (Vukobratovic's definition, Mu ch. 1): x_zmp = [sum m_i ((yddot_ci + g) x_ci - xddot_ci y_ci)
-/// + sum I_i omegadot_i] / sum m_i (yddot_ci + g), with omegadot_i = -ddtheta_i (theta grows
-/// clockwise) [m].
+/// x of the zero-moment point relative to B on the ground y = 0, from the rate of change of
+/// angular momentum about B (Vukobratovic's definition, Mu ch. 1): with b_ci = a_ci - g_vec,
+/// x_zmp = [sum m_i (b_ci,y x_ci - b_ci,x y_ci) + sum I_i omegadot_i] / sum m_i b_ci,y, with
+/// omegadot_i = -ddtheta_i (theta grows clockwise) [m]. Level ground: b_ci = (xddot, yddot + g).
 template <class S>
 S zeroMomentPoint(const Model& model, const Vec<S>& theta, const Vec<S>& dtheta,
                   const Vec<S>& ddtheta) {
+  const Eigen::Vector2d g_vec = model.gravityAcceleration();
   S num = S(0);
   S den = S(0);
   for (int i = 0; i < model.nLinks(); ++i) {
@@ -32,15 +37,17 @@ S zeroMomentPoint(const Model& model, const Vec<S>& theta, const Vec<S>& dtheta,
     const Vec2<S> pos = pointPosition(w, theta);
     const Vec2<S> acc = pointAcceleration(w, theta, dtheta, ddtheta);
     const double m = model.link(i).mass;
-    num += m * ((acc(1) + model.gravity()) * pos(0) - acc(0) * pos(1)) -
-           model.link(i).inertia * ddtheta(i);
-    den += m * (acc(1) + model.gravity());
+    const S bx = acc(0) - g_vec(0);
+    const S by = acc(1) - g_vec(1);
+    num += m * (by * pos(0) - bx * pos(1)) - model.link(i).inertia * ddtheta(i);
+    den += m * by;
   }
   return num / den;
 }
 
-/// Centre of pressure of point contacts on level ground: the x where the ground wrench has zero
-/// moment. `moment_b` is the ground moment on the robot at B (ccw, = -tau0) [m].
+/// Centre of pressure of point contacts on the ground y = 0 (ground frame on a slope): the x where
+/// the ground wrench has zero moment. `moment_b` is the ground moment on the robot at B (ccw, =
+/// -tau0) [m].
 template <class S>
 S centreOfPressure(const S& x_b, const Vec2<S>& force_b, const S& moment_b, const S& x_e,
                    const Vec2<S>& force_e) {

@@ -29,13 +29,18 @@ bool mirrors(const Link& stance, const Link& swing) {
 }  // namespace
 
 Model::Model(std::string name, std::vector<Link> links, std::vector<Joint> joints, double gravity,
-             double friction, Foot foot)
+             double friction, Foot foot, double slope)
     : name_(std::move(name)),
       links_(std::move(links)),
       joints_(std::move(joints)),
       gravity_(gravity),
       friction_(friction),
-      foot_(foot) {
+      foot_(foot),
+      slope_(slope),
+      gravity_acc_(-gravity * std::sin(slope), -gravity * std::cos(slope)) {
+  if (!(std::isfinite(slope) && std::abs(slope) < M_PI / 2))
+    throw std::invalid_argument(
+        fmt::format("slope {} rad: expected a finite inclination with |slope| < pi/2", slope));
   checkStructure();
   precompute();
 }

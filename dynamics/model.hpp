@@ -3,9 +3,17 @@
 /// Immutable parameters of a planar serial-chain biped (Mu 2004, sec. 2.2-2.3) and the constants
 /// every dynamics function needs (p_ij, g_i of eq. 2.8, chain-point weights of eqs. 2.1-2.2).
 /// Build it from a robot YAML with loadRobot() (robot_config.hpp); it never changes afterwards.
+///
+/// Ground slope: every geometric quantity lives in the GROUND frame (x along the slope in the
+/// walking direction, y along the slope normal, the ground is y = 0, theta measured from the
+/// slope normal, clockwise positive). Only gravity rotates: with slope gamma (> 0 uphill) it is
+/// g_vec = (-g sin gamma, -g cos gamma) in that frame. Contact, clearance, friction cones, the
+/// ZMP support and the step geometry E = B + (step_length, 0) are unchanged.
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "dynamics/conventions.hpp"
 
@@ -35,21 +43,30 @@ struct Foot {
   double toe = 0;   ///< extent ahead of the tip
 };
 
+/// Largest |slope| the gait and OCP configs accept [rad] (about 20 deg; key `slope`).
+inline constexpr double kMaxConfigSlope = 0.35;
+
 /// Weights w of a point on the chain: position = sum_j w_j u_j (Mu 2.1-2.2), u_j = (sin, cos).
 using ChainPoint = VecD;
 
 class Model {
  public:
-  /// @throws std::invalid_argument when the links do not form a two-legged chain.
+  /// `slope` is the ground inclination gamma [rad], > 0 uphill (see the file comment).
+  /// @throws std::invalid_argument when the links do not form a two-legged chain or the slope is
+  /// not finite with |slope| < pi/2.
   Model(std::string name, std::vector<Link> links, std::vector<Joint> joints, double gravity,
-        double friction, Foot foot);
+        double friction, Foot foot, double slope = 0.0);
 
   const std::string& name() const { return name_; }
   int nLinks() const { return static_cast<int>(links_.size()); }
   const std::vector<Link>& links() const { return links_; }
   const Link& link(int i) const { return links_.at(static_cast<size_t>(i)); }
   const std::vector<Joint>& joints() const { return joints_; }
-  double gravity() const { return gravity_; }    ///< g [m/s^2], acting along -y
+  double gravity() const { return gravity_; }  ///< |g| [m/s^2]; direction: gravityAcceleration()
+  double slope() const { return slope_; }      ///< ground inclination gamma [rad], > 0 uphill
+  /// Gravity acceleration in the ground frame, g_vec = (-g sin gamma, -g cos gamma) [m/s^2]
+  /// (along -y on level ground).
+  Eigen::Vector2d gravityAcceleration() const { return gravity_acc_; }
   double friction() const { return friction_; }  ///< Coulomb coefficient mu
   const Foot& foot() const { return foot_; }
   double totalMass() const { return total_mass_; }
@@ -61,7 +78,7 @@ class Model {
 
   /// p_ij of Mu (2.8a): D_ij = p_ij cos(theta_i - theta_j), symmetric [kg m^2].
   const MatD& inertiaCoefficients() const { return p_; }
-  /// g_i of Mu (2.8c): G_i = -g_i sin(theta_i) [N m].
+  /// g_i of Mu (2.8c): G_i = -g_i sin(theta_i - slope) [N m] (level ground: -g_i sin(theta_i)).
   const VecD& gravityCoefficients() const { return g_; }
   /// a_i l_i: weights of the swing tip E relative to B (2.1).
   const ChainPoint& tipWeights() const { return tip_; }
@@ -84,6 +101,8 @@ class Model {
   double gravity_;
   double friction_;
   Foot foot_;
+  double slope_;
+  Eigen::Vector2d gravity_acc_;
   double total_mass_ = 0;
   int leg_links_ = 0;
   std::optional<int> torso_;

@@ -40,15 +40,25 @@ Model perturbedModel(const Model& nominal, const ParameterErrors& e) {
     l.length *= fl;
     l.com *= fd;
   }
-  return {nominal.name(),     links,         nominal.joints(), nominal.gravity(),
-          nominal.friction(), nominal.foot()};
+  return {nominal.name(),     links,          nominal.joints(), nominal.gravity(),
+          nominal.friction(), nominal.foot(), nominal.slope()};
 }
 
 Model withFriction(const Model& nominal, double friction) {
   if (!(std::isfinite(friction) && friction >= 0))
     throw std::invalid_argument(fmt::format("friction {} must be finite and >= 0", friction));
-  return {nominal.name(),    nominal.links(), nominal.joints(),
-          nominal.gravity(), friction,        nominal.foot()};
+  return {nominal.name(), nominal.links(), nominal.joints(), nominal.gravity(),
+          friction,       nominal.foot(),  nominal.slope()};
+}
+
+Model withSlope(const Model& nominal, double slope) {
+  return {nominal.name(),
+          nominal.links(),
+          nominal.joints(),
+          nominal.gravity(),
+          nominal.friction(),
+          nominal.foot(),
+          slope};
 }
 
 }  // namespace gaitopt::dynamics

@@ -19,11 +19,16 @@ struct ParameterErrors {
 /// @throws std::invalid_argument for another case number.
 ParameterErrors muUncertaintyCase(int mu_case);
 
-/// The model with every link's parameters scaled by (1 + E); joints, feet, gravity, friction
-/// unchanged. @throws std::invalid_argument when an error is <= -1 or not finite.
+/// The model with every link's parameters scaled by (1 + E); joints, feet, gravity, friction,
+/// slope unchanged. @throws std::invalid_argument when an error is <= -1 or not finite.
 Model perturbedModel(const Model& nominal, const ParameterErrors& errors);
 
-/// The model on a ground of Coulomb coefficient `friction` (>= 0).
+/// The model on a ground of Coulomb coefficient `friction` (>= 0); slope unchanged.
 Model withFriction(const Model& nominal, double friction);
+
+/// The model on a ground inclined by `slope` [rad] (> 0 uphill, |slope| < pi/2): gravity rotates
+/// in the ground frame (model.hpp); links, joints, feet, friction unchanged.
+/// @throws std::invalid_argument when the slope is not finite or |slope| >= pi/2.
+Model withSlope(const Model& nominal, double slope);
 
 }  // namespace gaitopt::dynamics

@@ -46,7 +46,8 @@ Eigen::MatrixXd residualJacobian(const Model& model, const DynamicsPoint& x, boo
   Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(residualRows(model, dsp), residualCols(model, dsp));
   for (int i = 0; i < n; ++i) {
     jac(i, z.ddth(i)) = p(i, i);
-    jac(i, z.th(i)) = -g(i) * std::cos(th(i));
+    // dG_i/dtheta_i of G_i = -g_i sin(theta_i - gamma) (Mu 2.8c, sign corrected, sloped).
+    jac(i, z.th(i)) = -g(i) * std::cos(th(i) - model.slope());
     for (int j = 0; j < n; ++j) {
       if (j == i) continue;
       const double c = std::cos(th(i) - th(j));
@@ -93,7 +94,7 @@ Eigen::MatrixXd residualHessian(const Model& model, const DynamicsPoint& x, bool
   Eigen::MatrixXd h = Eigen::MatrixXd::Zero(cols, cols);
   for (int i = 0; i < n; ++i) {
     const double si = sigma(i);
-    h(z.th(i), z.th(i)) += si * g(i) * std::sin(th(i));
+    h(z.th(i), z.th(i)) += si * g(i) * std::sin(th(i) - model.slope());  // d2G_i/dtheta_i^2
     for (int j = 0; j < n; ++j) {
       if (j == i) continue;
       // T = p_ij (cos(phi) ddtheta_j + sin(phi) dtheta_j^2), phi = theta_i - theta_j.

@@ -3,7 +3,9 @@
 /// Single-support dynamics of the pinned chain, Mu (2.7): D(theta) ddtheta + H(theta, dtheta)
 /// dtheta + G(theta) = M^T tau, with D, H, G from (2.8) and the gravity sign of (2.8c)
 /// corrected to G_i = -g_i sin(theta_i) (printed "+" violates energy conservation; Appendix I
-/// eq. A1 has the minus; see notes/mu2004.md sec. 0 item 1). Templated on the scalar type.
+/// eq. A1 has the minus; see notes/mu2004.md sec. 0 item 1). On a ground inclined by gamma
+/// (model.hpp: theta from the slope normal, gravity rotated) G_i = -g_i sin(theta_i - gamma).
+/// Templated on the scalar type.
 #include <cmath>
 
 #include <Eigen/Cholesky>
@@ -44,13 +46,18 @@ Vec<S> coriolis(const Model& model, const Vec<S>& theta, const Vec<S>& dtheta) {
   return h;
 }
 
-/// G of Mu (2.8c), sign corrected: G_i = -g_i sin(theta_i) [N m].
+/// G of Mu (2.8c), sign corrected and with gravity rotated by the slope gamma:
+/// G_i = -g_i sin(theta_i - gamma) [N m]. Derivation: with gravity (-g sin gamma, -g cos gamma)
+/// in the ground frame, P = sum_i m_i g (x_ci sin gamma + y_ci cos gamma) (Mu 2.3 rotated);
+/// x_ci, y_ci = sum_j w_ij (sin theta_j, cos theta_j) (2.2) give P = sum_j g_j cos(theta_j -
+/// gamma), and G = dP/dtheta (Appendix I, A1).
 template <class S>
 Vec<S> gravityVector(const Model& model, const Vec<S>& theta) {
   using std::sin;
   const auto& g = model.gravityCoefficients();
+  const double gamma = model.slope();
   Vec<S> out(model.nLinks());
-  for (int i = 0; i < model.nLinks(); ++i) out(i) = -g(i) * sin(theta(i));
+  for (int i = 0; i < model.nLinks(); ++i) out(i) = -g(i) * sin(theta(i) - gamma);
   return out;
 }
 

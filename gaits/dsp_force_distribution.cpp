@@ -63,9 +63,10 @@ DspForces distributeDspForces(const dynamics::Model& model, const VecD& theta, c
   TorqueMap map{m_inv_t * (dynamics::massMatrix(model, theta) * ddtheta +
                            dynamics::nonlinearEffects(model, theta, dtheta)),
                 m_inv_t * jac.transpose()};
+  // Total ground force F_B + F_E = m (a_com - g_vec), g_vec in the ground frame (model.hpp).
   Vec2d total = model.totalMass() *
                 dynamics::pointAcceleration(model.totalComWeights(), theta, dtheta, ddtheta);
-  total(1) += model.totalMass() * model.gravity();
+  total -= model.totalMass() * model.gravityAcceleration();
 
   std::vector<LinearRow> rows = contactRows(total, model.friction());
   LinearRow ankle{map.a.row(0).transpose(), map.tau_bar(0)};  // tau0(lambda) = 0

@@ -1,6 +1,7 @@
 #include <numbers>
 
 #include "config/yaml_reader.hpp"
+#include "dynamics/model.hpp"
 #include "gaits/gait_params.hpp"
 
 namespace gaitopt::gaits {
@@ -10,7 +11,7 @@ GaitParams loadGait(const std::string& path) {
   using config::positive;
   const auto root = config::YamlReader::fromFile(path);
   root.allowOnly({"name", "description", "step_length", "ssp_duration", "dsp_duration",
-                  "swing_apex", "hip", "torso_angle", "knee"});
+                  "swing_apex", "hip", "torso_angle", "knee", "slope"});
   GaitParams p;
   p.name = root.string("name");
   root.stringOr("description", "");
@@ -38,6 +39,8 @@ GaitParams loadGait(const std::string& path) {
 
   p.torso_angle = root.numberOr("torso_angle", 0.0,
                                 config::angleInRange(-std::numbers::pi / 2, std::numbers::pi / 2));
+  p.slope = root.numberOr(
+      "slope", 0.0, config::angleInRange(-dynamics::kMaxConfigSlope, dynamics::kMaxConfigSlope));
   p.knee = root.has("knee") && root.choice("knee", {"forward", "backward"}) == "backward"
                ? KneeDirection::kBackward
                : KneeDirection::kForward;

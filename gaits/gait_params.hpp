@@ -23,6 +23,9 @@ struct GaitParams {
   std::optional<double> hip_velocity_start;      ///< V_h1 (3.18); empty: optimised
   std::optional<double> hip_velocity_touchdown;  ///< V_h2 (3.22); empty: optimised
   double torso_angle = 0;                        ///< constant theta of the torso [rad]
+  /// Ground inclination gamma [rad], > 0 uphill (dynamics/model.hpp: the gait is designed in the
+  /// ground frame; only gravity rotates). `gaitopt poly` applies it with dynamics::withSlope.
+  double slope = 0;
   KneeDirection knee = KneeDirection::kForward;
 
   double duration() const { return ssp_duration + dsp_duration; }

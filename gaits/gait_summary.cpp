@@ -64,6 +64,7 @@ ordered_json gaitSummary(const Trajectory& traj, const dynamics::Model& model,
       {"max_defect", maxDynamicsResidual(traj, model)},
       {"periodicity_error", periodicityError(traj, model)},
       {"friction", model.friction()},
+      {"slope_rad", model.slope()},  // ground inclination, > 0 uphill (dynamics/model.hpp)
       {"total_mass", model.totalMass()},
   };
   s.update(robotJson(model));

@@ -21,7 +21,7 @@ struct SummaryContext {
 };
 
 /// Every metric of metrics.hpp and consistency.hpp, the phases, and the robot's links, joints
-/// and friction (which plots need). `cost` is the metric named by cost_type.
+/// friction and slope_rad (which plots need). `cost` is the metric named by cost_type.
 nlohmann::ordered_json gaitSummary(const Trajectory& traj, const dynamics::Model& model,
                                    const SummaryContext& context);
 

@@ -78,6 +78,7 @@ double costOfTransport(const Trajectory& traj, const dynamics::Model& model) {
   if (!(traj.stepLength() > 0))
     throw std::invalid_argument(
         fmt::format("cost of transport needs a positive step length, got {} m", traj.stepLength()));
+  // W / (m g d) with |g| and d the distance along the ground, also on a slope (no cos gamma).
   return absoluteWork(traj) / (model.totalMass() * model.gravity() * traj.stepLength());
 }
 

@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 
 #include "config/yaml_reader.hpp"
+#include "dynamics/model_variation.hpp"
+#include "dynamics/robot_config.hpp"
 
 namespace gaitopt::ocp {
 namespace {
@@ -116,13 +118,15 @@ OcpConfig loadOcpConfig(const std::string& path) {
   const YamlReader root = YamlReader::fromFile(path);
   root.allowOnly({"name", "description", "robot", "initial_guess", "step_length", "phases",
                   "step_duration", "scheme", "impact", "cost", "mesh_refinement", "constraints",
-                  "solver"});
+                  "solver", "slope"});
   OcpConfig c;
   c.name = root.string("name");
   root.stringOr("description", "");
   c.robot_path = relativeTo(path, root.string("robot"));
   c.guess_gait_path = relativeTo(path, root.string("initial_guess"));
   c.step_length = root.number("step_length", config::inRange(0.01, 5.0, "[m]"));
+  c.slope = root.numberOr(
+      "slope", 0.0, config::angleInRange(-dynamics::kMaxConfigSlope, dynamics::kMaxConfigSlope));
   for (const auto& item : root.list("phases")) c.phases.push_back(readPhase(item));
   if (c.phases.front().name != "SSP" || c.phases.size() > 2 ||
       (c.phases.size() == 2 && c.phases.back().name != "DSP"))
@@ -144,6 +148,10 @@ OcpConfig loadOcpConfig(const std::string& path) {
   if (root.has("constraints")) readConstraints(root.map("constraints"), c);
   if (root.has("solver")) readSolver(root.map("solver"), c.solver);
   return c;
+}
+
+dynamics::Model problemModel(const OcpConfig& config) {
+  return dynamics::withSlope(dynamics::loadRobot(config.robot_path), config.slope);
 }
 
 }  // namespace gaitopt::ocp

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/model.hpp"
 #include "ocp/clearance_profile.hpp"
 #include "ocp/collocation.hpp"
 #include "ocp/ipopt_adapter.hpp"
@@ -50,6 +51,9 @@ struct OcpConfig {
   std::string robot_path;
   std::string guess_gait_path;  ///< polynomial gait used as the initial guess
   double step_length = 0;       ///< tips apart at touchdown [m]
+  /// Ground inclination gamma [rad], > 0 uphill (dynamics/model.hpp); problemModel() applies it.
+  /// The guess gait file's own `slope` is ignored: the guess is built on problemModel().
+  double slope = 0;
   std::vector<PhaseConfig> phases;
   double step_duration = 0;  ///< with free durations: SSP + DSP = step_duration (0: free) [s]
   Scheme scheme = Scheme::kHermiteSimpson;
@@ -74,5 +78,10 @@ struct OcpConfig {
 
 /// @throws config::ConfigError naming file, key and expectation.
 OcpConfig loadOcpConfig(const std::string& path);
+
+/// The model the gait problem is posed on: the config's robot on its slope,
+/// dynamics::withSlope(loadRobot(config.robot_path), config.slope).
+/// @throws config::ConfigError for a bad robot file.
+dynamics::Model problemModel(const OcpConfig& config);
 
 }  // namespace gaitopt::ocp

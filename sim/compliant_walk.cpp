@@ -32,13 +32,14 @@ CompliantForces contactForces(const dynamics::Model& plant, const ImpedanceGroun
           Vec2d(b.anchor, e.anchor)};
 }
 
-/// Kinetic plus potential energy of the robot (Mu 2.3-2.4 with the base at (x_b, y_b)) [J].
+/// Kinetic plus potential energy of the robot (Mu 2.3-2.4 with the base at (x_b, y_b); on a
+/// slope the base term is -m g_vec . (x_b, y_b) in the ground frame) [J].
 double energy(const dynamics::Model& plant, const FreeBaseState& s) {
   const int n = plant.nLinks();
   const VecD theta = s.q.tail(n), dtheta = s.v.tail(n);
   return dynamics::kineticEnergy<double>(plant, theta, dtheta, Vec2d(s.v.head<2>())) +
-         dynamics::potentialEnergy<double>(plant, theta) +
-         plant.totalMass() * plant.gravity() * s.q(1);
+         dynamics::potentialEnergy<double>(plant, theta) -
+         plant.totalMass() * plant.gravityAcceleration().dot(s.q.head<2>());
 }
 
 ImpedanceGround withPlantFriction(const dynamics::Model& plant, const CompliantGround& ground) {

@@ -3,6 +3,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "dynamics/model_variation.hpp"
 #include "dynamics/ssp_dynamics.hpp"
 #include "support/fixtures.hpp"
 #include "support/numeric_lagrangian.hpp"
@@ -55,6 +56,21 @@ TEST_P(LagrangianTest, GravityEqualsNumericLagrangianAndCatchesPrintedSign) {
     for (int i = 0; i < model_.nLinks(); ++i)
       printed(i) = model_.gravityCoefficients()(i) * std::sin(theta(i));
     EXPECT_GT(relErr(printed, numeric), 1.0);
+  }
+}
+
+TEST_P(LagrangianTest, GravityOnASlopeEqualsNumericLagrangianOfTheRotatedPotential) {
+  // Mu (2.8c) with gravity rotated by the slope: G_i = -g_i sin(theta_i - gamma), against the
+  // derivative of P = -sum m_i g_vec . r_ci (energy.hpp, from CoM positions, not from g_i).
+  for (const double slope : {0.2, -0.3}) {
+    const Model sloped = dynamics::withSlope(model_, slope);
+    for (int trial = 0; trial < 20; ++trial) {
+      const VecD theta = randomVec(rng_, model_.nLinks(), -M_PI, M_PI);
+      const VecD numeric = numericGravity(sloped, theta);
+      EXPECT_LT(relErr(dynamics::gravityVector(sloped, theta), numeric), 1e-9) << slope;
+      // The level-ground G is not the answer: the slope must matter.
+      EXPECT_GT(relErr(dynamics::gravityVector(model_, theta), numeric), 0.01) << slope;
+    }
   }
 }
 

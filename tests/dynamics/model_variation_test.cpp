@@ -47,6 +47,24 @@ TEST(ModelVariation, FrictionVariantChangesOnlyFriction) {
   EXPECT_THROW(withFriction(nominal, -0.1), std::invalid_argument);
 }
 
+TEST(ModelVariation, SlopeVariantRotatesGravityOnly) {
+  const Model nominal = loadRobot(kRobot);
+  EXPECT_EQ(nominal.slope(), 0.0);
+  EXPECT_EQ(nominal.gravityAcceleration(), Eigen::Vector2d(0, -nominal.gravity()));
+  const Model sloped = withSlope(nominal, 0.1);
+  EXPECT_EQ(sloped.slope(), 0.1);
+  const double g = nominal.gravity();
+  EXPECT_NEAR(sloped.gravityAcceleration()(0), -g * std::sin(0.1), 1e-15);
+  EXPECT_NEAR(sloped.gravityAcceleration()(1), -g * std::cos(0.1), 1e-15);
+  EXPECT_EQ(sloped.gravityCoefficients(), nominal.gravityCoefficients());
+  EXPECT_EQ(sloped.inertiaCoefficients(), nominal.inertiaCoefficients());
+  // The other variants keep the slope.
+  EXPECT_EQ(withFriction(sloped, 0.3).slope(), 0.1);
+  EXPECT_EQ(perturbedModel(sloped, muUncertaintyCase(2)).slope(), 0.1);
+  EXPECT_THROW(withSlope(nominal, M_PI / 2), std::invalid_argument);
+  EXPECT_THROW(withSlope(nominal, NAN), std::invalid_argument);
+}
+
 TEST(ModelVariation, RejectsImpossibleErrors) {
   const Model nominal = loadRobot(kRobot);
   EXPECT_THROW(perturbedModel(nominal, {-1.0, 0, 0, 0}), std::invalid_argument);

@@ -1,6 +1,7 @@
 // Exact derivatives of the SSP and DSP dynamics residuals: the analytic Jacobian and Hessian
 // against central finite differences (1e-6 relative) and against forward-mode automatic
-// differentiation of the templated residual (Eigen AutoDiffScalar, to rounding).
+// differentiation of the templated residual (Eigen AutoDiffScalar, to rounding); on level
+// ground and on a slope (the gravity terms of Mu 2.8c with gravity rotated).
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
@@ -9,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "dynamics/dsp_dynamics.hpp"
+#include "dynamics/model_variation.hpp"
 #include "dynamics/residual_derivatives.hpp"
 #include "support/fixtures.hpp"
 
@@ -82,11 +84,12 @@ Eigen::MatrixXd autodiffJacobian(const dynamics::Model& m, const DynamicsPoint& 
 struct Case {
   std::string robot;
   bool dsp;
+  double slope = 0;  ///< ground inclination [rad]
 };
 
 class ResidualDerivativesTest : public ::testing::TestWithParam<Case> {
  protected:
-  dynamics::Model model_ = loadNamed(GetParam().robot);
+  dynamics::Model model_ = dynamics::withSlope(loadNamed(GetParam().robot), GetParam().slope);
   bool dsp_ = GetParam().dsp;
   std::mt19937 rng_{21};
 };
@@ -138,12 +141,17 @@ std::vector<Case> allCases() {
     cases.push_back({r, false});
     cases.push_back({r, true});
   }
+  for (const std::string r : {"mu2004_five_link", "compass_gait"}) {
+    cases.push_back({r, false, 0.3});
+    cases.push_back({r, true, -0.2});
+  }
   return cases;
 }
 
 INSTANTIATE_TEST_SUITE_P(AllRobots, ResidualDerivativesTest, ::testing::ValuesIn(allCases()),
                          [](const auto& info) {
-                           return info.param.robot + (info.param.dsp ? "_dsp" : "_ssp");
+                           return info.param.robot + (info.param.dsp ? "_dsp" : "_ssp") +
+                                  (info.param.slope != 0 ? "_slope" : "");
                          });
 
 }  // namespace
