@@ -10,11 +10,10 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
-#include <utility>
-#include <vector>
 
 #include <fmt/format.h>
 
+#include "bench/ocp_bench_common.hpp"
 #include "dynamics/robot_config.hpp"
 #include "ocp/gait_problem.hpp"
 #include "ocp/initial_guess.hpp"
@@ -24,45 +23,17 @@ namespace {
 
 using namespace gaitopt;
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-struct Row {
-  ocp::SolveResult last;
-  double wall, callbacks;
-};
-
-Row run(const ocp::OcpConfig& c, const dynamics::Model& model, const gaits::Trajectory& guess,
-        int repeats) {
-  const ocp::GaitProblem p = ocp::buildGaitProblem(model, c, guess);
-  std::vector<double> wall, callbacks;
-  ocp::SolveResult r;
-  for (int k = 0; k < repeats; ++k) {
-    r = ocp::solveWithIpopt(p.nlp, c.solver);
-    wall.push_back(r.wall_time_s);
-    callbacks.push_back(r.callback_time_s);
-  }
-  return {r, median(wall), median(callbacks)};
-}
-
-/// Derivatives handed to Ipopt: (Hessian, Jacobian).
-const std::vector<std::pair<std::string, std::string>> kDerivativeModes = {
-    {"exact", "exact"},
-    {"limited-memory", "exact"},
-    {"limited-memory", "finite-difference-values"}};
-
 /// One table row per derivative mode for `config` with the SSP cut into `segments`.
 void benchmark(const std::string& label, ocp::OcpConfig config, int segments, int repeats) {
   const auto model = dynamics::loadRobot(config.robot_path);
   const gaits::Trajectory guess = ocp::polynomialGuess(model, config);
   config.phases.front().segments = segments;
   double exact_wall = 0;
-  for (const auto& [hessian, jacobian] : kDerivativeModes) {
+  for (const auto& [hessian, jacobian] : bench::kDerivativeModes) {
     config.solver.hessian = hessian;
     config.solver.jacobian = jacobian;
-    const Row r = run(config, model, guess, repeats);
+    const bench::TimedSolve r = bench::solveRepeated(
+        ocp::buildGaitProblem(model, config, guess).nlp, config.solver, repeats);
     if (exact_wall == 0) exact_wall = r.wall;
     fmt::print("| {} | {} | {} | {} | {} | {} | {:.4f} | {:.4f} | {:.4f} | {:.0f} % | {:.2f} |\n",
                label, segments, hessian, jacobian == "exact" ? "exact" : "finite differences",
