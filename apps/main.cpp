@@ -9,6 +9,8 @@
 #include "apps/compare_command.hpp"
 #include "apps/impact_map_command.hpp"
 #include "apps/inspect_command.hpp"
+#include "apps/interpolate_command.hpp"
+#include "apps/library_command.hpp"
 #include "apps/optimize_command.hpp"
 #include "apps/poly_command.hpp"
 #include "apps/simulate_command.hpp"
@@ -34,6 +36,8 @@ void configure(CLI::App& app) {
   gaitopt::apps::registerSimulateCommand(app);
   gaitopt::apps::registerStabilityCommand(app);
   gaitopt::apps::registerCompareCommand(app);
+  gaitopt::apps::registerLibraryCommand(app);
+  gaitopt::apps::registerInterpolateCommand(app);
 }
 
 /// Parses the command line and runs the chosen subcommand (from its callback).

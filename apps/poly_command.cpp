@@ -7,14 +7,13 @@
 #include <fmt/format.h>
 
 #include "apps/command_runner.hpp"
-#include "apps/plotting.hpp"
+#include "apps/gait_result.hpp"
 #include "apps/result_folder.hpp"
 #include "dynamics/model_variation.hpp"
 #include "dynamics/robot_config.hpp"
 #include "gaits/gait_summary.hpp"
 #include "gaits/hip_plan_search.hpp"
 #include "gaits/polynomial_gait.hpp"
-#include "gaits/trajectory_csv.hpp"
 
 namespace gaitopt::apps {
 namespace {
@@ -78,9 +77,7 @@ void runPoly(const PolyOptions& options) {
   auto summary = gaits::gaitSummary(traj, model, {options.gait_path, "designed", 0, elapsed, 0});
   summary.update(gaitJson(params, search));
   writeResultFolder(options.output.out_dir, [&](const std::string& dir) {
-    gaits::writeTrajectoryCsv(traj, model, dir + "/trajectory.csv");
-    gaits::writeJsonFile(summary, dir + "/summary.json");
-    if (options.output.plots) runPlotScript("gait_plots.py", fmt::format("'{}'", dir));
+    writeGaitFiles(dir, traj, model, summary, options.output.plots);
   });
   fmt::print(
       "poly: energy {:.2f} J, CoT {:.4f}, min normal force {:.1f} N, max friction ratio "

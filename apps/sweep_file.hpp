@@ -1,12 +1,11 @@
 #pragma once
 /// @file sweep_file.hpp
-/// One stability sweep on disk: sweep_<parameter>.csv, one row per finished point, appended and
-/// flushed as soon as the point is done. A killed run keeps every finished row; a rerun reads
-/// them and skips those values (a torn last line is ignored and its point redone).
-#include <fstream>
+/// One stability sweep on disk: sweep_<parameter>.csv, a RowLog (row_log.hpp) of one row per
+/// walked value, so a rerun skips the values already walked.
 #include <map>
-#include <mutex>
 #include <string>
+
+#include "apps/row_log.hpp"
 
 namespace gaitopt::apps {
 
@@ -35,9 +34,8 @@ class SweepFile {
   static std::string key(double value);
 
  private:
-  std::string path_;
+  RowLog log_;
   std::map<std::string, SweepRow> rows_;
-  std::ofstream out_;
   std::mutex mutex_;
 };
 

@@ -165,6 +165,30 @@ std::string YamlReader::stringOr(const std::string& key, const std::string& fall
   return has(key) ? string(key) : fallback;
 }
 
+std::vector<double> YamlReader::numbers(const std::string& key, const NumberCheck& check) const {
+  const YAML::Node n = child(key);
+  if (n.IsScalar()) return {number(key, check)};
+  if (!n.IsSequence() || n.size() == 0)
+    fail(key, "expected a number or a non-empty list of numbers, got " + describeNode(n));
+  std::vector<double> values;
+  for (size_t i = 0; i < n.size(); ++i) {
+    const std::string path = fmt::format("{}[{}]", keyPath(key), i);
+    double value = 0;
+    if (!n[i].IsScalar() || !parseFinite(n[i].Scalar(), value))
+      throw ConfigError(file_, path, lineOf(n[i]),
+                        "expected a finite number, got " + describeNode(n[i]));
+    if (const std::string expected = check(value); !expected.empty())
+      throw ConfigError(file_, path, lineOf(n[i]),
+                        fmt::format("expected {}, got {}", expected, n[i].Scalar()));
+    values.push_back(value);
+  }
+  return values;
+}
+
+bool YamlReader::isMap(const std::string& key) const {
+  return has(key) && node_[key].IsMap();
+}
+
 YamlReader YamlReader::map(const std::string& key) const {
   const YAML::Node n = child(key);
   if (!n.IsMap()) fail(key, "expected a mapping of keys to values");

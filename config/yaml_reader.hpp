@@ -44,8 +44,12 @@ class YamlReader {
   bool booleanOr(const std::string& key, bool fallback) const;
   std::string string(const std::string& key) const;
   std::string stringOr(const std::string& key, const std::string& fallback) const;
+  /// One number or a non-empty list of numbers, each checked (e.g. `speed: [0.4, 0.6]`).
+  std::vector<double> numbers(const std::string& key, const NumberCheck& check) const;
   /// The mapping under `key`.
   YamlReader map(const std::string& key) const;
+  /// Whether the value under `key` is a mapping (e.g. a range `{from, to, count}`).
+  bool isMap(const std::string& key) const;
   bool has(const std::string& key) const;
   /// Elements of the non-empty sequence under `key`, each a mapping.
   std::vector<YamlReader> list(const std::string& key) const;

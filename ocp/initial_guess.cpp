@@ -5,7 +5,10 @@
 namespace gaitopt::ocp {
 
 gaits::Trajectory polynomialGuess(const dynamics::Model& model, const OcpConfig& config) {
-  const gaits::GaitParams params = gaits::loadGait(config.guess_gait_path);
+  return polynomialGuess(model, gaits::loadGait(config.guess_gait_path));
+}
+
+gaits::Trajectory polynomialGuess(const dynamics::Model& model, const gaits::GaitParams& params) {
   const gaits::HipPlanSearch search = gaits::searchHipPlan(model, params);
   return gaits::buildTrajectory(gaits::PolynomialGait(model, params, search.plan), model, 1000);
 }

@@ -4,12 +4,19 @@
 /// ch. 3 named by the config, its free hip parameters chosen by NLopt (hip_plan_search.hpp),
 /// sampled at 1 kHz.
 #include "dynamics/model.hpp"
+#include "gaits/gait_params.hpp"
 #include "gaits/trajectory.hpp"
 #include "ocp/ocp_config.hpp"
 
 namespace gaitopt::ocp {
 
+/// The gait is designed on `model` (normally problemModel(config)), so it carries the OCP's
+/// slope; the gait file's own `slope` key is ignored here.
 /// @throws config::ConfigError for a bad gait file, std::domain_error for an unreachable gait.
 gaits::Trajectory polynomialGuess(const dynamics::Model& model, const OcpConfig& config);
+
+/// The polynomial gait of `params` on `model` (a gait library point's own parameters).
+/// @throws std::domain_error for an unreachable gait.
+gaits::Trajectory polynomialGuess(const dynamics::Model& model, const gaits::GaitParams& params);
 
 }  // namespace gaitopt::ocp

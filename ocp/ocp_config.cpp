@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -152,6 +153,17 @@ OcpConfig loadOcpConfig(const std::string& path) {
 
 dynamics::Model problemModel(const OcpConfig& config) {
   return dynamics::withSlope(dynamics::loadRobot(config.robot_path), config.slope);
+}
+
+void requireReachable(const dynamics::Model& model, const OcpConfig& config,
+                      const std::string& path) {
+  double leg = 0;
+  for (int i = 0; i < model.legLinks(); ++i) leg += model.link(i).length;
+  if (config.step_length < 2 * leg) return;
+  throw std::domain_error(fmt::format(
+      "{}: key 'step_length': {:g} m is out of reach: the legs of robot '{}' ({:.4g} m each) "
+      "span less than {:.4g} m",
+      path, config.step_length, model.name(), leg, 2 * leg));
 }
 
 }  // namespace gaitopt::ocp

@@ -84,4 +84,10 @@ OcpConfig loadOcpConfig(const std::string& path);
 /// @throws config::ConfigError for a bad robot file.
 dynamics::Model problemModel(const OcpConfig& config);
 
+/// A step the two legs cannot span, even stretched, is bad input, not a question for Ipopt
+/// (which would spend its iteration limit on it). @throws std::domain_error naming `path` and
+/// the key.
+void requireReachable(const dynamics::Model& model, const OcpConfig& config,
+                      const std::string& path);
+
 }  // namespace gaitopt::ocp

@@ -52,12 +52,22 @@ echo "== gaitopt compare: polynomial versus optimal gait, table and overlaid plo
 
 bash scripts/closed_loop_demo.sh "$build"
 
+# Gait libraries resume: points already in results/library_*/index.csv are not solved again.
+echo "== gaitopt library: 5 speeds x 5 step lengths of the default problem"
+"$bin" library --config configs/library/mu2004_speed_step.yaml --out results/library_mu2004 --quiet
+echo "== gaitopt library: least cost of transport from 0.4 to 1.4 m/s (the speed sweep)"
+"$bin" library --config configs/library/mu2004_cot_speed.yaml \
+  --out results/library_cot_speed_mu2004 --quiet
+echo "== gaitopt library: slopes from -0.1 to 0.1 rad x 3 speeds"
+"$bin" library --config configs/library/mu2004_slope.yaml --out results/library_slope_mu2004 --quiet
+
 echo "Results are in $root/results/:"
 echo "  inspect/*.json          robot models and dynamics at a posture"
 echo "  convention.png          angle convention"
 echo "  poly_mu2004/            polynomial gait: trajectory.csv (1 kHz), summary.json, *.png"
 echo "  opt_mu2004/, opt_rabbit/, opt_cot_mu2004/  optimal gaits, same files"
 echo "  poly_vs_opt_mu2004.md, poly_vs_cot_mu2004.md  the comparison tables above"
+echo "  library_*/              gait libraries: index.csv, index.json, library.png, points/"
 echo "  compare_poly_opt_mu2004/  comparison.md and overlaid angles, torques, forces, ZMP"
 echo "  walk_*/                 closed-loop walks: summary.json, steps.csv, walk_overview.png"
 echo "  stability_*/            sweeps: sweep_*.csv, summary.json, stability.png"

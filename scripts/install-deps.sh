@@ -14,6 +14,7 @@ packages=(
   libboost-dev
   python3 python3-matplotlib python3-numpy
   valgrind
+  openmpi-bin libopenmpi-dev
 )
 fuzz_packages=(clang libclang-rt-14-dev)
 

@@ -1,0 +1,154 @@
+#include "apps/gait_result.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "apps/plotting.hpp"
+#include "apps/result_folder.hpp"
+#include "dynamics/energy.hpp"
+#include "gaits/consistency.hpp"
+#include "gaits/gait_summary.hpp"
+#include "gaits/metrics.hpp"
+#include "gaits/trajectory_csv.hpp"
+
+namespace gaitopt::apps {
+namespace {
+
+/// Kinetic energy lost in the strike, from the solution's own impact variables [J].
+double impactLoss(const ocp::GaitProblem& p, const dynamics::Model& model,
+                  const Eigen::VectorXd& x) {
+  const int n = model.nLinks();
+  const Eigen::VectorXd strike = p.ssp.point(x, p.ssp.points() - 1);
+  const VecD theta = strike.head(n), dtheta = strike.segment(n, n);
+  const Vec2d base = x.segment<2>(p.impact_offset);
+  const VecD dtheta_plus = x.segment(p.impact_offset + 2, n);
+  return dynamics::kineticEnergy<double>(model, theta, dtheta) -
+         dynamics::kineticEnergy<double>(model, theta, dtheta_plus, base);
+}
+
+/// The worst friction ratio, or why there is none (a tip pulling on the ground).
+nlohmann::ordered_json frictionRatioJson(const gaits::Trajectory& traj) {
+  const double ratio = gaits::maxFrictionRatio(traj);
+  if (std::isfinite(ratio) && gaits::minNormalForce(traj) > 0) return ratio;
+  return "unbounded: a normal force <= 0";
+}
+
+nlohmann::ordered_json meshHistory(const std::vector<ocp::MeshRound>& history) {
+  auto rounds = nlohmann::ordered_json::array();
+  for (const auto& m : history)
+    rounds.push_back({{"segments", m.segments},
+                      {"status", m.status},
+                      {"iterations", m.iterations},
+                      {"cost", m.cost},
+                      {"max_segment_error_Nms", m.max_segment_error},
+                      {"wall_time_s", m.wall_time_s}});
+  return rounds;
+}
+
+/// The location of a violation for summary.json; `name_key` says what the name names.
+nlohmann::ordered_json violationJson(const ocp::LocatedViolation& v, const std::string& name_key) {
+  const ocp::Violation& w = v.violation;
+  if (w.name.empty()) return nullptr;
+  using Json = nlohmann::ordered_json;
+  const bool on_grid = v.node >= 0;
+  return {{name_key, w.name},
+          {"phase", v.phase},
+          {"node_kind", on_grid ? Json(v.node_kind) : Json()},
+          {"node", on_grid ? Json(v.node) : Json()},
+          {v.part, on_grid ? v.index : w.index},
+          {"value", w.value},
+          {"lower", w.lower},
+          {"upper", w.upper},
+          {"violation", w.amount}};
+}
+
+/// Why a solve failed and where: the error line (also in FAILED.txt) and summary.json's keys.
+struct FailureReport {
+  std::string message;
+  nlohmann::ordered_json summary;
+};
+
+FailureReport failureReport(const ocp::GaitSolution& solution, const std::string& dir) {
+  const ocp::SolveResult& r = solution.result;
+  const auto row = ocp::worstConstraint(solution.problem, r.x);
+  const auto bound = ocp::worstBound(solution.problem, r.x);
+  const std::string message = fmt::format(
+      "solver status {} after {} iterations; worst violated constraint: {}; worst variable "
+      "bound: {}; {} (max violation {:.3g}) written to {}",
+      r.status, r.iterations, ocp::describe(row), ocp::describe(bound), r.point, r.max_violation,
+      dir);
+  return {message,
+          {{"point", r.point},
+           {"worst_violation", violationJson(row, "constraint")},
+           {"worst_bound_violation", violationJson(bound, "variable")}}};
+}
+
+}  // namespace
+
+void writeGaitFiles(const std::string& dir, const gaits::Trajectory& traj,
+                    const dynamics::Model& model, const nlohmann::ordered_json& summary,
+                    bool plots) {
+  gaits::writeTrajectoryCsv(traj, model, dir + "/trajectory.csv");
+  gaits::writeJsonFile(summary, dir + "/summary.json");
+  if (plots) runPlotScript("gait_plots.py", fmt::format("'{}'", dir));
+}
+
+void writeGaitResult(const GaitResultOptions& o, const dynamics::Model& model,
+                     const ocp::OcpConfig& config, const ocp::GaitSolution& solution,
+                     const nlohmann::ordered_json& failure, const std::string& dir) {
+  const ocp::GaitProblem& problem = solution.problem;
+  const ocp::SolveResult& r = solution.result;
+  const gaits::Trajectory traj = ocp::reconstruct(problem, model, r.x);
+  // Between the points the export follows the scheme's own polynomials.
+  const gaits::Trajectory dense = ocp::reconstructDense(problem, model, r.x, o.rate_hz);
+  auto summary = gaits::gaitSummary(traj, model,
+                                    {o.config_path, r.status, r.iterations, r.wall_time_s,
+                                     r.callback_time_s, config.cost.primary()});
+  summary["converged"] = r.success;
+  summary["cost"] = r.cost;  // the solver's objective (the scheme's own quadrature)
+  if (problem.impact_offset >= 0) summary["impact_energy_loss_J"] = impactLoss(problem, model, r.x);
+  summary["max_violation"] = r.max_violation;
+  if (!failure.is_null()) summary.update(failure);
+  // The constraints hold at the collocation points; the dense export shows how far they are
+  // missed between them.
+  summary["between_nodes"] = {{"max_dynamics_defect", gaits::maxDynamicsResidual(dense, model)},
+                              {"min_normal_force", gaits::minNormalForce(dense)},
+                              {"max_friction_ratio", frictionRatioJson(dense)},
+                              {"min_zmp_margin", gaits::minZmpMargin(dense, model)},
+                              {"rate_hz", o.rate_hz}};
+  summary["nlp"] = {{"variables", problem.nlp.variables()},
+                    {"constraints", problem.nlp.constraints()},
+                    {"segments", solution.history.back().segments},
+                    {"scheme", ocp::toString(problem.ssp.scheme)}};
+  summary["mesh_history"] = meshHistory(solution.history);
+  writeGaitFiles(dir, dense, model, summary, o.plots);
+}
+
+namespace {
+
+/// FAILED.txt, so that a person browsing the folders cannot mistake it for a gait. The folder
+/// is renamed into place only when complete, so a plain write suffices.
+void writeFailedNote(const std::string& path, const std::string& message) {
+  std::ofstream out(path);
+  out << "This folder holds a failed solve, not a gait: do not use it as a reference.\n"
+      << message << '\n';
+  if (!out) throw std::runtime_error("cannot write " + path);
+}
+
+}  // namespace
+
+std::string writeFailedResult(const GaitResultOptions& o, const dynamics::Model& model,
+                              const ocp::OcpConfig& config, const ocp::GaitSolution& solution,
+                              const std::string& failed_dir) {
+  const FailureReport report = failureReport(solution, failed_dir);
+  writeResultFolder(failed_dir, [&](const std::string& dir) {
+    writeGaitResult(o, model, config, solution, report.summary, dir);
+    writeFailedNote(dir + "/FAILED.txt", report.message);
+  });
+  return report.message;
+}
+
+}  // namespace gaitopt::apps

@@ -1,0 +1,34 @@
+#pragma once
+/// @file interpolation.hpp
+/// A gait between the points of a library, as a controller would take it online: multilinear
+/// interpolation between the solved gaits at the corners of the grid cell holding the query, in
+/// phase-normalised time s = t / T_phase. Angles, their s-derivatives (dtheta T, ddtheta T^2)
+/// and the swing-tip force are blended with the corners' weights, the rates are turned back to
+/// time with the query's own durations (T = step_length / speed, the corners' SSP/DSP split),
+/// and the torques and stance force follow from the blended motion by inverse dynamics. The
+/// blend is not a solution of the problem; interpolation_test.cpp measures how far off it is.
+#include <array>
+#include <functional>
+
+#include "dynamics/model.hpp"
+#include "gaits/trajectory.hpp"
+#include "library/grid.hpp"
+
+namespace gaitopt::library {
+
+/// The solved gait of a grid point, or nullptr when it has none.
+using GaitLookup = std::function<const gaits::Trajectory*(int point)>;
+
+/// The corners of the cell holding `values` and their weights (summing to 1; corners of
+/// weight 0 left out). @throws std::domain_error when a value lies outside its axis.
+std::vector<std::pair<int, double>> cellWeights(const Grid& grid,
+                                                const std::array<double, 3>& values);
+
+/// The interpolated step sampled at `rate_hz`.
+/// @throws std::domain_error outside the grid or when a corner has no solved gait,
+///         std::invalid_argument when the corners' phases differ.
+gaits::Trajectory interpolateGait(const Grid& grid, const GaitLookup& gait_at,
+                                  const dynamics::Model& model, const std::array<double, 3>& values,
+                                  double rate_hz);
+
+}  // namespace gaitopt::library

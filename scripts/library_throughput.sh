@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# Points per second of `gaitopt library` on this machine: the 9-point library of
+# configs/library/throughput.yaml solved from scratch with 1 worker process, with 2, and as 2
+# MPI ranks of 1 worker each (mpirun --oversubscribe -np 2), REPEATS times each, interleaved so
+# that load from other jobs falls on every mode alike. Prints a markdown table of medians and
+# the ratio to the 1-worker median.
+# Usage: scripts/library_throughput.sh BUILD_DIR [REPEATS]   (default 3)
+set -euo pipefail
+
+if [[ $# -lt 1 || $# -gt 2 ]]; then
+  echo "usage: $0 BUILD_DIR [REPEATS]" >&2
+  exit 2
+fi
+gaitopt="$1/apps/gaitopt"
+repeats="${2:-3}"
+[[ -x "$gaitopt" ]] || { echo "error: $gaitopt not built" >&2; exit 1; }
+root="$(cd "$(dirname "$0")/.." && pwd)"
+config="$root/configs/library/throughput.yaml"
+work="$(mktemp -d "${TMPDIR:-/tmp}/library_throughput.XXXXXX")"
+trap 'rm -rf "$work"' EXIT
+# OpenMPI refuses root unless told; CI runs as root.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+
+run() {  # run MODE REPEAT: one library from scratch, its points/s appended to MODE.txt
+  local mode="$1" out="$work/$1-$2"
+  case "$mode" in
+    1-process) "$gaitopt" library --config "$config" --out "$out" --jobs 1 --quiet >/dev/null ;;
+    2-processes) "$gaitopt" library --config "$config" --out "$out" --jobs 2 --quiet >/dev/null ;;
+    2-mpi-ranks) mpirun --oversubscribe -np 2 "$gaitopt" library --config "$config" \
+                   --out "$out" --quiet >/dev/null ;;
+  esac
+  /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1]))
+print(d['last_run']['points_per_second'], d['points_solved'], d['last_run']['wall_time_s'])" \
+    "$out/index.json" >>"$work/$mode.txt"
+}
+
+modes=(1-process 2-processes)
+command -v mpirun >/dev/null && modes+=(2-mpi-ranks)
+for r in $(seq "$repeats"); do
+  for m in "${modes[@]}"; do
+    echo "library_throughput: $m, run $r of $repeats" >&2
+    run "$m" "$r"
+  done
+done
+
+cpu="$(sed -n 's/^model name[[:space:]]*:[[:space:]]*//p' /proc/cpuinfo | head -n 1)"
+echo "Machine: $(nproc) CPUs, ${cpu:-unknown CPU}; date: $(date -u '+%Y-%m-%d %H:%M:%S UTC')"
+echo "Library: configs/library/throughput.yaml (9 points), medians of $repeats runs"
+echo
+/usr/bin/python3 - "$work" "${modes[@]}" <<'PY'
+import statistics, sys
+work, modes = sys.argv[1], sys.argv[2:]
+rows = {}
+for m in modes:
+    runs = [tuple(map(float, line.split())) for line in open(f"{work}/{m}.txt")]
+    rows[m] = (statistics.median(r[0] for r in runs), statistics.median(r[2] for r in runs),
+               min(int(r[1]) for r in runs))
+base = rows["1-process"][0]
+print("| mode | points/s (median) | wall time s (median) | points solved (min) | ratio to 1 process |")
+print("|---|---:|---:|---:|---:|")
+for m in modes:
+    pps, wall, solved = rows[m]
+    print(f"| {m} | {pps:.3f} | {wall:.1f} | {solved}/9 | {pps / base:.2f} |")
+PY

@@ -1,0 +1,212 @@
+#!/usr/bin/env bash
+# End-to-end checks of `gaitopt library` on a tiny library of RABBIT (Kelly 2017, 8 segments):
+# 3 speeds x 1 step length all converge and are indexed; a rerun has nothing to do; a lost row
+# and a torn last line are solved again, and only they; a failed point is skipped on rerun and
+# solved with --retry-failed; a solve that cannot converge is listed with its status and
+# folder; another grid in the same folder and a bad config exit 2; `gaitopt interpolate`
+# blends two solved points and refuses a query off the grid.
+# With a third argument `mpi`: instead, the same library on two MPI ranks gives the same rows
+# as on one process.
+# Usage: library_cli_test.sh <path to gaitopt binary> <repo root> [mpi]
+set -u
+[[ $# -eq 2 || $# -eq 3 ]] || { echo "usage: $0 <gaitopt binary> <repo root> [mpi]" >&2; exit 1; }
+GAITOPT=$1
+ROOT=$2
+MODE=${3:-}
+# shellcheck source=tests/apps/cli_test_lib.sh
+source "$(dirname "$0")/cli_test_lib.sh"
+cd "$ROOT" || fail "no repo root $ROOT"
+# No pictures: python would take longer than the solves.
+export GAITOPT_SCRIPTS="$TMP/no_scripts"
+NAMES="v0.600_L0.500_s+0.000 v0.700_L0.500_s+0.000 v0.800_L0.500_s+0.000"
+
+# The base problem: RABBIT with 8 segments (about 0.1 s a solve), paths made absolute.
+sed "s|segments: 25|segments: 8|; s|\.\./|$ROOT/configs/|" configs/ocp/rabbit_kelly2017.yaml \
+  >"$TMP/rabbit8.yaml"
+grep -q "segments: 8" "$TMP/rabbit8.yaml" || fail "rabbit8.yaml: no segments line to edit"
+# library NAME OCP SPEEDS: a library YAML in $TMP/NAME.yaml.
+library() {
+  printf 'name: %s\nocp: %s\ngrid:\n  speed: %s\n' "$1" "$2" "$3" >"$TMP/$1.yaml"
+}
+library tiny rabbit8.yaml "[0.6, 0.7, 0.8]"
+
+# check_index NAME DIR SOLVED FAILED: index.json counts, and every row converged as it says.
+check_index() {
+  EXPECT_SOLVED=$3 EXPECT_FAILED=$4 check_json "$1 index.json" "$2/index.json" <<'PY'
+import os
+solved, failed = int(os.environ["EXPECT_SOLVED"]), int(os.environ["EXPECT_FAILED"])
+assert d["points_total"] == 3, d["points_total"]
+assert (d["points_solved"], d["points_failed"]) == (solved, failed), (d["points_solved"], d["points_failed"])
+assert len(d["points"]) == solved + failed
+assert d["axes"]["speed"] == [0.6, 0.7, 0.8] and d["axes"]["step_length"] == [0.5], d["axes"]
+assert d["axes"]["slope"] == [0.0], d["axes"]
+assert d["last_run"]["points_per_second"] >= 0, d["last_run"]
+for p in d["points"]:
+    if p["converged"]:
+        assert p["status"] == "Solve_Succeeded" and p["iterations"] > 0, p
+        assert 0 < p["cost_of_transport"] < 10 and p["poly_cost_of_transport"] > 0, p
+PY
+}
+
+if [[ $MODE == mpi ]]; then
+  command -v mpirun >/dev/null || { echo "SKIP: no mpirun"; exit 0; }
+  run library --config "$TMP/tiny.yaml" --out "$TMP/one" --jobs 2 --quiet
+  [[ $RC -eq 0 ]] || fail "(mpi) one-process run exited $RC: $(cat "$TMP/err")"
+  mpirun --allow-run-as-root --oversubscribe -np 2 "$GAITOPT" library --config "$TMP/tiny.yaml" \
+    --out "$TMP/two" --quiet >"$TMP/out" 2>"$TMP/err"
+  RC=$?
+  [[ $RC -eq 0 ]] || fail "(mpi) mpirun exited $RC: $(cat "$TMP/err")"
+  grep -q "on 2 workers" "$TMP/out" || fail "(mpi) not 2 workers: $(cat "$TMP/out")"
+  check_index "(mpi)" "$TMP/two" 3 0
+  "$PY" - "$TMP/one/index.csv" "$TMP/two/index.csv" <<'PY' || fail "(mpi) rows differ"
+import csv, sys
+one, two = ({r["point"]: r for r in csv.DictReader(open(p))} for p in sys.argv[1:])
+assert sorted(one) == sorted(two) and len(one) == 3, (sorted(one), sorted(two))
+for name, a in one.items():
+    b = two[name]
+    assert a["converged"] == b["converged"] == "1", (a, b)
+    for key in ("cost", "cost_of_transport", "poly_cost_of_transport"):
+        x, y = float(a[key]), float(b[key])
+        assert abs(x - y) <= 1e-6 * max(abs(x), abs(y)), (name, key, x, y)
+PY
+  for p in $NAMES; do
+    [[ -s "$TMP/two/points/$p/trajectory.csv" ]] || fail "(mpi) no trajectory for $p"
+  done
+  echo "library MPI CLI: all checks passed"
+  exit 0
+fi
+
+# (a) the tiny library: 3 points solved from the root (0.7 m/s, the base speed 0.714), the
+# others warm-started from it.
+L="$TMP/lib"
+run library --config "$TMP/tiny.yaml" --out "$L" --jobs 2
+[[ $RC -eq 0 ]] || fail "(a) exited $RC: $(cat "$TMP/err")"
+grep -q "^library: 3 of 3 points to solve on 2 workers$" "$TMP/out" || fail "(a) $(cat "$TMP/out")"
+grep -q "^library: 3 points solved, 0 failed in" "$TMP/out" || fail "(a) $(cat "$TMP/out")"
+[[ $(wc -l <"$L/index.csv") -eq 4 ]] || fail "(a) index.csv: $(cat "$L/index.csv")"
+head -n 1 "$L/index.csv" | grep -qx "point,speed,step_length,slope,status,converged,cost,\
+cost_of_transport,poly_cost_of_transport,iterations,solve_time_s,start,message" ||
+  fail "(a) header: $(head -n 1 "$L/index.csv")"
+check_index "(a)" "$L" 3 0
+check_json "(a) starts" "$L/index.json" <<'PY'
+start = {p["point"]: p["start"] for p in d["points"]}
+assert start["v0.700_L0.500_s+0.000"] == "polynomial", start
+assert start["v0.600_L0.500_s+0.000"] == "warm:v0.700_L0.500_s+0.000", start
+assert start["v0.800_L0.500_s+0.000"] == "warm:v0.700_L0.500_s+0.000", start
+# Faster walking costs more torque; the cost of transport of the optimum beats the polynomial.
+cost = {p["speed"]: p["cost"] for p in d["points"]}
+assert cost[0.6] < cost[0.7] < cost[0.8], cost
+for p in d["points"]:
+    assert p["cost_of_transport"] < p["poly_cost_of_transport"], p
+PY
+for p in $NAMES; do
+  [[ -s "$L/points/$p/trajectory.csv" && -s "$L/points/$p/summary.json" ]] || fail "(a) $p files"
+done
+check_json "(a) claim" "$L/library.json" <<'PY'
+assert d["name"] == "tiny" and d["axes"]["speed"] == [0.6, 0.7, 0.8], d
+PY
+cp "$L/index.csv" "$TMP/index_a.csv"
+
+# (a') interpolate: halfway between two solved speeds the corners weigh 1/2 each and the step
+# lasts step_length / speed; outside the grid exits 3; a folder that is no library exits 2.
+run interpolate --library "$L" --speed 0.65 --step-length 0.5 --out "$TMP/mid" --no-plots
+[[ $RC -eq 0 ]] || fail "(a') interpolate exited $RC: $(cat "$TMP/err")"
+check_json "(a') interpolate" "$TMP/mid/summary.json" <<'PY'
+w = sorted((c["point"], c["weight"]) for c in d["library_corners"])
+assert [p for p, _ in w] == ["v0.600_L0.500_s+0.000", "v0.700_L0.500_s+0.000"], w
+assert all(abs(x - 0.5) < 1e-12 for _, x in w), w
+assert abs(d["duration"] - 0.5 / 0.65) < 1e-9, d["duration"]
+PY
+run interpolate --library "$L" --speed 0.9 --step-length 0.5 --out "$TMP/far" --no-plots
+[[ $RC -eq 3 ]] || fail "(a') outside the grid exited $RC: $(cat "$TMP/err")"
+grep -q "speed 0.9 is outside the library's range \[0.6, 0.8\]" "$TMP/err" || fail "(a') $(cat "$TMP/err")"
+run interpolate --library "$TMP" --speed 0.7 --step-length 0.5 --out "$TMP/none" --no-plots
+[[ $RC -eq 2 ]] || fail "(a') not a library exited $RC"
+
+# (b) a rerun has nothing to do and leaves index.csv as it was.
+run library --config "$TMP/tiny.yaml" --out "$L" --jobs 2
+[[ $RC -eq 0 ]] || fail "(b) exited $RC: $(cat "$TMP/err")"
+grep -q "^library: 0 of 3 points to solve" "$TMP/out" || fail "(b) $(cat "$TMP/out")"
+cmp -s "$L/index.csv" "$TMP/index_a.csv" || fail "(b) index.csv changed"
+check_index "(b)" "$L" 3 0
+
+# (c) resume after a kill: the 0.6 row lost and the 0.8 row torn (no newline, cut short). Only
+# those two are solved again, warm from the 0.7 point; the torn fragment is not a row.
+{
+  head -n 1 "$TMP/index_a.csv"
+  grep "^v0.700" "$TMP/index_a.csv"
+  grep "^v0.800" "$TMP/index_a.csv" | head -c 40
+} >"$L/index.csv"
+run library --config "$TMP/tiny.yaml" --out "$L" --jobs 2
+[[ $RC -eq 0 ]] || fail "(c) exited $RC: $(cat "$TMP/err")"
+grep -q "^library: 2 of 3 points to solve" "$TMP/out" || fail "(c) $(cat "$TMP/out")"
+solved=$(grep -o '^library: \[[0-9]/2\] [^:]*' "$TMP/out" | sed 's/.*\] //' | sort | tr '\n' ' ')
+[[ $solved == "v0.600_L0.500_s+0.000 v0.800_L0.500_s+0.000 " ]] || fail "(c) solved: $solved"
+check_index "(c)" "$L" 3 0
+"$PY" - "$L/index.csv" <<'PY' || fail "(c) index.csv: $(cat "$L/index.csv")"
+import csv, sys
+rows = list(csv.reader(open(sys.argv[1])))
+full = [r for r in rows[1:] if len(r) == len(rows[0])]
+assert sorted(r[0] for r in full) == ["v0.600_L0.500_s+0.000", "v0.700_L0.500_s+0.000",
+                                      "v0.800_L0.500_s+0.000"], rows
+assert all(r[11] == "warm:v0.700_L0.500_s+0.000" for r in full if not r[0].startswith("v0.700")), full
+PY
+run library --config "$TMP/tiny.yaml" --out "$L" --jobs 2
+grep -q "^library: 0 of 3 points to solve" "$TMP/out" || fail "(c) rerun: $(cat "$TMP/out")"
+
+# (d) a failed point (0.8 marked converged=0, as a failed solve leaves it) is skipped by a
+# rerun and solved again with --retry-failed.
+sed -i 's/^\(v0\.800_L0\.500_s+0\.000,[^,]*,[^,]*,[^,]*,\)[^,]*,1,/\1Maximum_Iterations_Exceeded,0,/' \
+  "$L/index.csv"
+grep -q "^v0.800.*,Maximum_Iterations_Exceeded,0," "$L/index.csv" || fail "(d) edit: $(cat "$L/index.csv")"
+run library --config "$TMP/tiny.yaml" --out "$L" --jobs 2
+[[ $RC -eq 0 ]] || fail "(d) exited $RC: $(cat "$TMP/err")"
+grep -q "^library: 0 of 3 points to solve" "$TMP/out" || fail "(d) failed point redone: $(cat "$TMP/out")"
+check_index "(d) skipped" "$L" 2 1
+run library --config "$TMP/tiny.yaml" --out "$L" --jobs 2 --retry-failed
+[[ $RC -eq 0 ]] || fail "(d) retry exited $RC: $(cat "$TMP/err")"
+grep -q "^library: 1 of 3 points to solve" "$TMP/out" || fail "(d) retry: $(cat "$TMP/out")"
+grep -q "^library: \[1/1\] v0.800_L0.500_s+0.000: " "$TMP/out" || fail "(d) retry: $(cat "$TMP/out")"
+check_index "(d) retried" "$L" 3 0
+
+# (e) another grid into the same folder is refused, naming library.json; the index is kept.
+library other rabbit8.yaml "[0.6, 0.7]"
+cp "$L/index.csv" "$TMP/index_d.csv"
+run library --config "$TMP/other.yaml" --out "$L" --jobs 1
+[[ $RC -eq 2 ]] || fail "(e) expected exit 2, got $RC: $(cat "$TMP/err")"
+grep -q "library.json" "$TMP/err" || fail "(e) message: $(cat "$TMP/err")"
+cmp -s "$L/index.csv" "$TMP/index_d.csv" || fail "(e) index.csv changed"
+
+# (f) a solve that cannot converge (3 iterations): listed as failed with its status, its
+# folder DIR/points/<point>.failed, and the run still exits 0; the neighbour of a failed root
+# starts from the polynomial gait.
+sed "s|max_iterations: 500|max_iterations: 3|" "$TMP/rabbit8.yaml" >"$TMP/rabbit8_short.yaml"
+printf 'name: short\nocp: rabbit8_short.yaml\ngrid:\n  speed: [0.7, 0.8]\n' >"$TMP/short.yaml"
+run library --config "$TMP/short.yaml" --out "$TMP/short" --jobs 1
+[[ $RC -eq 0 ]] || fail "(f) exited $RC: $(cat "$TMP/err")"
+grep -q "^library: 0 points solved, 2 failed" "$TMP/out" || fail "(f) $(cat "$TMP/out")"
+grep -q "FAILED Maximum_Iterations_Exceeded (polynomial)" "$TMP/out" || fail "(f) $(cat "$TMP/out")"
+check_json "(f) index.json" "$TMP/short/index.json" <<'PY'
+assert d["points_total"] == 2 and d["points_solved"] == 0 and d["points_failed"] == 2, d
+for p in d["points"]:
+    assert not p["converged"] and p["status"] == "Maximum_Iterations_Exceeded", p
+    assert p["start"] == "polynomial" and p["cost_of_transport"] is None, p
+    assert p["iterations"] == 3, p
+PY
+for p in v0.700_L0.500_s+0.000 v0.800_L0.500_s+0.000; do
+  [[ -f "$TMP/short/points/$p.failed/FAILED.txt" ]] || fail "(f) no $p.failed folder"
+  [[ ! -e "$TMP/short/points/$p" ]] || fail "(f) $p written as solved"
+done
+
+# (g) bad configs exit 2 naming the file and key.
+printf 'name: bad\nocp: rabbit8.yaml\ngrid:\n  slope: [0, 10]\n' >"$TMP/bad.yaml"
+run library --config "$TMP/bad.yaml" --out "$TMP/bad"
+[[ $RC -eq 2 ]] || fail "(g) expected exit 2, got $RC: $(cat "$TMP/err")"
+grep -q "bad.yaml:4: key 'grid.slope\[1\]'.*degrees?" "$TMP/err" || fail "(g) $(cat "$TMP/err")"
+printf 'name: bad\nocp: rabbit8.yaml\ngrid:\n  speed: {from: 0.5, to: 0.9, count: 2.5}\n' >"$TMP/bad.yaml"
+run library --config "$TMP/bad.yaml" --out "$TMP/bad"
+[[ $RC -eq 2 ]] && grep -q "key 'grid.speed.count'" "$TMP/err" || fail "(g) count: $(cat "$TMP/err")"
+run library --config "$TMP/missing.yaml" --out "$TMP/bad"
+[[ $RC -eq 2 ]] && grep -q "missing.yaml" "$TMP/err" || fail "(g) missing: $(cat "$TMP/err")"
+[[ ! -e "$TMP/bad" ]] || fail "(g) a bad config created its folder"
+echo "library CLI: all checks passed"

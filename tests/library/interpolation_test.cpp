@@ -1,0 +1,98 @@
+// A gait blended from a library against the gait solved at the same point: the five-link
+// default problem at 0.45 and 0.55 m/s blended at 0.5 m/s.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "dynamics/kinematics.hpp"
+#include "gaits/consistency.hpp"
+#include "gaits/retime.hpp"
+#include "library/interpolation.hpp"
+#include "library/point_problem.hpp"
+#include "ocp/gait_solve.hpp"
+#include "ocp/initial_guess.hpp"
+
+namespace gaitopt::library {
+namespace {
+
+constexpr double kRate = 500;
+
+/// The gait at `speed`, started as the library starts it: from the neighbour's gait, retimed
+/// (null: from the polynomial gait).
+gaits::Trajectory solveAt(const ocp::OcpConfig& base, double speed,
+                          const gaits::Trajectory* neighbour) {
+  const PointProblem pp = pointProblem(base, {speed, base.step_length, 0.0});
+  const gaits::Trajectory guess =
+      neighbour ? gaits::retimed(*neighbour, phaseDurations(pp.config), base.step_length)
+                : ocp::polynomialGuess(pp.model, pp.guess);
+  const ocp::GaitSolution s = ocp::solveGait(pp.model, pp.config, guess);
+  EXPECT_TRUE(s.result.success) << s.result.status;
+  return ocp::reconstructDense(s.problem, pp.model, s.result.x, kRate);
+}
+
+double maxAngleError(const gaits::Trajectory& a, const gaits::Trajectory& b) {
+  double worst = 0;
+  for (const auto& k : a.knots()) {
+    if (k.t > b.endTime()) continue;
+    worst = std::max(worst, (k.theta - b.at(k.t).theta).cwiseAbs().maxCoeff());
+  }
+  return worst;
+}
+
+TEST(Interpolation, CellWeightsBlendTheBracketingPoints) {
+  const Grid grid({std::vector<double>{0.4, 0.5, 0.7}, {0.3, 0.4}, {0.0}});
+  const auto w = cellWeights(grid, {0.55, 0.3, 0.0});
+  ASSERT_EQ(w.size(), 2u);
+  EXPECT_EQ(grid.point(w[0].first).name, "v0.500_L0.300_s+0.000");
+  EXPECT_NEAR(w[0].second, 0.75, 1e-12);
+  EXPECT_NEAR(w[1].second, 0.25, 1e-12);
+  EXPECT_EQ(cellWeights(grid, {0.45, 0.35, 0.0}).size(), 4u);
+  EXPECT_THROW(cellWeights(grid, {0.8, 0.35, 0.0}), std::domain_error);
+}
+
+/// The largest distance of the swing tip from its touchdown point (step_length, 0) from the end
+/// of the SSP on (the DSP pins it there) [m].
+double maxTipMiss(const gaits::Trajectory& traj, const dynamics::Model& model) {
+  const auto ssp_end = traj.phaseDurations().front().second + traj.startTime();
+  double worst = 0;
+  for (const auto& k : traj.knots()) {
+    if (k.t < ssp_end) continue;
+    const VecD theta = k.theta;
+    const Vec2d tip = dynamics::pointPosition<double>(model.tipWeights(), theta);
+    worst = std::max(worst, (tip - Vec2d(traj.stepLength(), 0)).norm());
+  }
+  return worst;
+}
+
+#ifdef NDEBUG  // five OCP solves: Release only
+TEST(Interpolation, BlendErrorFallsWithTheSquareOfTheGridSpacing) {
+  const ocp::OcpConfig base =
+      ocp::loadOcpConfig(GAITOPT_SOURCE_DIR "/configs/ocp/mu2004_walk.yaml");
+  const dynamics::Model model = ocp::problemModel(base);
+  const double v = 0.5, length = base.step_length;
+  const gaits::Trajectory direct = solveAt(base, v, nullptr);
+  std::vector<double> errors;
+  for (const double h : {0.1, 0.05}) {
+    const gaits::Trajectory slow = solveAt(base, v - h / 2, &direct);
+    const gaits::Trajectory fast = solveAt(base, v + h / 2, &direct);
+    const Grid grid({std::vector<double>{v - h / 2, v + h / 2}, {length}, {0.0}});
+    const GaitLookup lookup = [&](int p) { return p == 0 ? &slow : &fast; };
+    const gaits::Trajectory blend = interpolateGait(grid, lookup, model, {v, length, 0.0}, kRate);
+    EXPECT_NEAR(blend.duration(), length / v, 1e-12);
+    // Relabelling is linear, so a blend of periodic gaits is periodic.
+    EXPECT_LT(gaits::periodicityError(blend, model), 1e-9);
+    errors.push_back(maxAngleError(blend, direct));
+    const double miss = maxTipMiss(blend, model), corner_miss = maxTipMiss(slow, model);
+    std::printf(
+        "blend at %.2f m/s from %.3f/%.3f: max angle error %.3g rad; DSP tip off its "
+        "point by %.3g m (solved corner %.3g m)\n",
+        v, v - h / 2, v + h / 2, errors.back(), miss, corner_miss);
+    EXPECT_LT(miss, 2e-3);
+  }
+  EXPECT_GT(errors[0], 0);  // a blend is not the solution
+  EXPECT_GT(errors[0] / errors[1], 2.5) << "linear interpolation is second order: ratio 4";
+}
+#endif
+
+}  // namespace
+}  // namespace gaitopt::library
