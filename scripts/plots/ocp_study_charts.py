@@ -46,6 +46,15 @@ GUESSES = ["robot", "guess", "noise_rad", "seed", "status", "converged", "iterat
 SAME_OPTIMUM = 1e-4
 
 
+
+def save(fig, folder, name):
+    """Writes `fig` to folder/name, closes it and prints the path."""
+    fig.tight_layout()
+    out = os.path.join(folder, name)
+    fig.savefig(out, dpi=DPI)
+    plt.close(fig)
+    print(out)
+
 def keys(rows, *names):
     """The distinct tuples of `names` columns, in order of appearance."""
     return list(dict.fromkeys(zip(*(rows[n] for n in names))))
@@ -123,11 +132,7 @@ def collocation_charts(folder, rows):
                  f"{FIT_POINTS} meshes)")
         fig.suptitle(f"{title}; optimal torques re-simulated by RKF 7(8) at 1e-12",
                      fontsize=11)
-        fig.tight_layout()
-        out = os.path.join(folder, name)
-        fig.savefig(out, dpi=DPI)
-        plt.close(fig)
-        print(out)
+        save(fig, folder, name)
     return orders
 
 
@@ -207,11 +212,7 @@ def derivatives_chart(folder, rows):
     ax.legend(fontsize=8, loc="upper left")
     ax.set_title("Derivatives handed to Ipopt: wall time from the polynomial guess "
                  "(labels: iterations; crossed and hatched: did not converge)", fontsize=11)
-    fig.tight_layout()
-    out = os.path.join(folder, "derivatives.png")
-    fig.savefig(out, dpi=DPI)
-    plt.close(fig)
-    print(out)
+    save(fig, folder, "derivatives.png")
 
 
 def derivatives_table(rows):
@@ -295,11 +296,7 @@ def guesses_chart(folder, rows):
     time_ax.set_ylabel("median wall time over all attempts [s]")
     fig.suptitle("Initial guesses: polynomial gait, straight line (Kelly 2017), perturbed optimum "
                  "(uniform angle noise, fixed seeds)", fontsize=11)
-    fig.tight_layout()
-    out = os.path.join(folder, "guesses.png")
-    fig.savefig(out, dpi=DPI)
-    plt.close(fig)
-    print(out)
+    save(fig, folder, "guesses.png")
 
 
 def guesses_table(rows):
