@@ -12,8 +12,13 @@ CMAKE_GEN := $(shell command -v ninja >/dev/null 2>&1 && echo "-G Ninja")
 deps:
 	@bash scripts/install-deps.sh
 
+# The tests do not need the benchmarks: `make test` leaves them out of the build (CI time),
+# `make bench` puts them back; demo and build keep whatever the build folder has.
+test-release: CONFIGURE_FLAGS = -DGAITOPT_BUILD_BENCH=OFF
+bench: CONFIGURE_FLAGS = -DGAITOPT_BUILD_BENCH=ON
+
 configure: deps
-	@cmake -S . -B $(BUILD) $(CMAKE_GEN) -DCMAKE_BUILD_TYPE=Release >/dev/null
+	@cmake -S . -B $(BUILD) $(CMAKE_GEN) -DCMAKE_BUILD_TYPE=Release $(CONFIGURE_FLAGS) >/dev/null
 
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
