@@ -362,22 +362,15 @@ def paths_figure(g):
 
 
 def dsp_zmp_figure(g):
-    fig, ax = plt.subplots(figsize=(8.2, 5.2))
-    draw_dsp_zmp(ax, g)
-    fig.suptitle(headline(g), fontsize=9)
-    fig.tight_layout()
-    return fig
+    return plot_io.panel_figure(draw_dsp_zmp, g, headline(g), (8.2, 5.2))
 
 
 def stick_figure(g):
     """The stick diagram on a figure shaped like the robot's sweep (equal axes)."""
     points = np.concatenate([np.vstack(g.link_points(k)) for k in range(len(g.t))])
     width, height = np.ptp(points[:, 0]), np.ptp(points[:, 1])
-    fig, ax = plt.subplots(figsize=(min(max(7 * width / height + 2, 5.5), 10), 7))
-    draw_stick(ax, g)
-    fig.suptitle(headline(g), fontsize=9)
-    fig.tight_layout()
-    return fig
+    return plot_io.panel_figure(draw_stick, g, headline(g),
+                                (min(max(7 * width / height + 2, 5.5), 10), 7))
 
 
 def forces_figure(g):

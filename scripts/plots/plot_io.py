@@ -168,6 +168,22 @@ def require_type(path, s, key, kind, label, prefix=""):
 
 
 # ---------------------------------------------------------------------------------------------
+# Figures
+
+
+def panel_figure(draw, data, title, figsize, fontsize=9):
+    """A figure of one panel, drawn by draw(ax, data) under `title`. pyplot is imported here,
+    after the calling script has chosen its backend."""
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=figsize)
+    draw(ax, data)
+    fig.suptitle(title, fontsize=fontsize)
+    fig.tight_layout()
+    return fig
+
+
+# ---------------------------------------------------------------------------------------------
 # Entry point
 
 

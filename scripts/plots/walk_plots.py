@@ -411,19 +411,11 @@ def stick_figure(w):
     width = np.ptp(points[:, 0]) + 0.2
     height = max(np.ptp(points[:, 1]), np.max(points[:, 1])) + 0.3
     fig_w = min(max(5.5 * width / height + 2.5, 7), 18)
-    fig, ax = plt.subplots(figsize=(fig_w, 6.5))
-    draw_walk_stick(ax, w)
-    fig.suptitle(headline(w), fontsize=9)
-    fig.tight_layout()
-    return fig
+    return plot_io.panel_figure(draw_walk_stick, w, headline(w), (fig_w, 6.5))
 
 
 def tracking_figure(w):
-    fig, ax = plt.subplots(figsize=(9, 5))
-    draw_tracking(ax, w)
-    fig.suptitle(headline(w), fontsize=9)
-    fig.tight_layout()
-    return fig
+    return plot_io.panel_figure(draw_tracking, w, headline(w), (9, 5))
 
 
 def torques_figure(w):
@@ -474,11 +466,7 @@ def overview_figure(w):
 
 
 def poincare_figure(w):
-    fig, ax = plt.subplots(figsize=(6, 6))
-    draw_poincare(ax, w)
-    fig.suptitle(headline(w), fontsize=8)
-    fig.tight_layout()
-    return fig
+    return plot_io.panel_figure(draw_poincare, w, headline(w), (6, 6), fontsize=8)
 
 
 def pictures(w):
