@@ -350,24 +350,24 @@ def save(fig, gaits, path, bottom):
     print(path)
 
 
-def angles_figure(plt, gaits):
-    n = max(g.n for g in gaits)
-    fig, axes = grid(plt, n)
-    for i, ax in enumerate(axes):
-        draw_angle(ax, gaits, i)
-        finish(ax, "time [s]", "θ [deg]", link_label(gaits, i))
-    title(fig, "Link angles", gaits)
+def small_multiples(plt, gaits, count, draw, ylabel, label, name):
+    """One panel per link or joint k: draw(ax, gaits, k), titled label(gaits, k)."""
+    fig, axes = grid(plt, count)
+    for k, ax in enumerate(axes):
+        draw(ax, gaits, k)
+        finish(ax, "time [s]", ylabel, label(gaits, k))
+    title(fig, name, gaits)
     return fig, 0.1
+
+
+def angles_figure(plt, gaits):
+    return small_multiples(plt, gaits, max(g.n for g in gaits), draw_angle, "θ [deg]",
+                           link_label, "Link angles")
 
 
 def torques_figure(plt, gaits):
-    m = max(g.n_tau for g in gaits)
-    fig, axes = grid(plt, m)
-    for j, ax in enumerate(axes):
-        draw_torque(ax, gaits, j)
-        finish(ax, "time [s]", "torque [N m]", joint_label(gaits, j))
-    title(fig, "Joint torques", gaits)
-    return fig, 0.1
+    return small_multiples(plt, gaits, max(g.n_tau for g in gaits), draw_torque, "torque [N m]",
+                           joint_label, "Joint torques")
 
 
 def forces_figure(plt, gaits):
