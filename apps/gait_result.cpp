@@ -96,9 +96,11 @@ void writeGaitFiles(const std::string& dir, const gaits::Trajectory& traj,
   if (plots) runPlotScript("gait_plots.py", fmt::format("'{}'", dir));
 }
 
-void writeGaitResult(const GaitResultOptions& o, const dynamics::Model& model,
-                     const ocp::OcpConfig& config, const ocp::GaitSolution& solution,
-                     const nlohmann::ordered_json& failure, const std::string& dir) {
+nlohmann::ordered_json writeGaitResult(const GaitResultOptions& o, const dynamics::Model& model,
+                                       const ocp::OcpConfig& config,
+                                       const ocp::GaitSolution& solution,
+                                       const nlohmann::ordered_json& failure,
+                                       const std::string& dir) {
   const ocp::GaitProblem& problem = solution.problem;
   const ocp::SolveResult& r = solution.result;
   const gaits::Trajectory traj = ocp::reconstruct(problem, model, r.x);
@@ -125,6 +127,7 @@ void writeGaitResult(const GaitResultOptions& o, const dynamics::Model& model,
                     {"scheme", ocp::toString(problem.ssp.scheme)}};
   summary["mesh_history"] = meshHistory(solution.history);
   writeGaitFiles(dir, dense, model, summary, o.plots);
+  return summary;
 }
 
 namespace {

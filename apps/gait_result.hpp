@@ -27,10 +27,12 @@ void writeGaitFiles(const std::string& dir, const gaits::Trajectory& traj,
                     bool plots);
 
 /// Writes the files into `dir` (an existing staging folder); `failure` (or null) is merged into
-/// summary.json.
-void writeGaitResult(const GaitResultOptions& options, const dynamics::Model& model,
-                     const ocp::OcpConfig& config, const ocp::GaitSolution& solution,
-                     const nlohmann::ordered_json& failure, const std::string& dir);
+/// summary.json, which is returned.
+nlohmann::ordered_json writeGaitResult(const GaitResultOptions& options,
+                                       const dynamics::Model& model, const ocp::OcpConfig& config,
+                                       const ocp::GaitSolution& solution,
+                                       const nlohmann::ordered_json& failure,
+                                       const std::string& dir);
 
 /// Writes a failed solve's least-violated point to `failed_dir` (staged, result_folder.hpp) with
 /// FAILED.txt, `"converged": false` and the worst violations; returns the one-line account

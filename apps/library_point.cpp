@@ -79,10 +79,9 @@ void record(const LibrarySetup& setup, const library::PointProblem& pp, const At
     row.message = writeFailedResult(options, pp.model, pp.config, s, dir + ".failed");
     return;
   }
-  row.cost_of_transport =
-      gaits::costOfTransport(ocp::reconstruct(s.problem, pp.model, s.result.x), pp.model);
   writeResultFolder(dir, [&](const std::string& staging) {
-    writeGaitResult(options, pp.model, pp.config, s, nullptr, staging);
+    const auto summary = writeGaitResult(options, pp.model, pp.config, s, nullptr, staging);
+    row.cost_of_transport = summary.at("cost_of_transport").get<double>();
   });
   std::filesystem::remove_all(dir + ".failed");  // a retried point's old failure
 }
