@@ -1,18 +1,18 @@
 #include "apps/gait_result.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
 #include "apps/plotting.hpp"
-#include "apps/result_folder.hpp"
 #include "dynamics/energy.hpp"
 #include "gaits/consistency.hpp"
 #include "gaits/gait_summary.hpp"
 #include "gaits/metrics.hpp"
 #include "gaits/trajectory_csv.hpp"
+#include "io/checked_write.hpp"
+#include "io/output_folder.hpp"
 
 namespace gaitopt::apps {
 namespace {
@@ -93,7 +93,7 @@ void writeGaitFiles(const std::string& dir, const gaits::Trajectory& traj,
                     bool plots) {
   gaits::writeTrajectoryCsv(traj, model, dir + "/trajectory.csv");
   gaits::writeJsonFile(summary, dir + "/summary.json");
-  if (plots) runPlotScript("gait_plots.py", fmt::format("'{}'", dir));
+  if (plots) runPlotScript("gait_plots.py", {dir});
 }
 
 nlohmann::ordered_json writeGaitResult(const GaitResultOptions& o, const dynamics::Model& model,
@@ -135,10 +135,8 @@ namespace {
 /// FAILED.txt, so that a person browsing the folders cannot mistake it for a gait. The folder
 /// is renamed into place only when complete, so a plain write suffices.
 void writeFailedNote(const std::string& path, const std::string& message) {
-  std::ofstream out(path);
-  out << "This folder holds a failed solve, not a gait: do not use it as a reference.\n"
-      << message << '\n';
-  if (!out) throw std::runtime_error("cannot write " + path);
+  io::writeFile(path, "This folder holds a failed solve, not a gait: do not use it as a "
+                      "reference.\n" + message + '\n');
 }
 
 }  // namespace
@@ -147,7 +145,7 @@ std::string writeFailedResult(const GaitResultOptions& o, const dynamics::Model&
                               const ocp::OcpConfig& config, const ocp::GaitSolution& solution,
                               const std::string& failed_dir) {
   const FailureReport report = failureReport(solution, failed_dir);
-  writeResultFolder(failed_dir, [&](const std::string& dir) {
+  io::OutputFolder(failed_dir, {o.config_path}).write([&](const std::string& dir) {
     writeGaitResult(o, model, config, solution, report.summary, dir);
     writeFailedNote(dir + "/FAILED.txt", report.message);
   });

@@ -2,6 +2,9 @@
 
 #include <filesystem>
 
+#include <fmt/format.h>
+
+#include "config/config_error.hpp"
 #include "sim/ground_config.hpp"
 
 namespace gaitopt::apps {
@@ -62,6 +65,20 @@ sim::Scenario makeScenario(const ScenarioOptions& o) {
   if (o.push != 0) sim::setSweepValue(s, "push", o.push);
   s.gain_scale = o.gain_scale;
   return s;
+}
+
+std::vector<std::string> scenarioInputs(const ScenarioOptions& o) {
+  return {o.reference_dir, o.robot_path, groundPath(o.ground)};
+}
+
+void requireControllerFits(const ScenarioOptions& o, const dynamics::Model& model) {
+  if (model.joints().front().actuated) return;
+  throw config::ConfigError(
+      "--controller", o.controller, 0,
+      fmt::format("the {} controller imposes all {} joint accelerations through the joint "
+                  "torques, so it needs an actuated stance ankle; robot '{}' has a passive one "
+                  "(walking it needs an underactuated controller, which gaitopt does not have)",
+                  o.controller, model.nLinks(), model.name()));
 }
 
 nlohmann::ordered_json scenarioJson(const ScenarioOptions& o, const sim::Scenario& s) {

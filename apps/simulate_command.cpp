@@ -8,9 +8,9 @@
 #include "apps/command_runner.hpp"
 #include "apps/plotting.hpp"
 #include "apps/reference_folder.hpp"
-#include "apps/result_folder.hpp"
 #include "apps/walk_record.hpp"
 #include "gaits/gait_summary.hpp"
+#include "io/output_folder.hpp"
 
 namespace gaitopt::apps {
 namespace {
@@ -78,7 +78,9 @@ void printOutcome(const sim::ScenarioResult& r, int steps) {
 }  // namespace
 
 void runSimulate(const SimulateOptions& o) {
+  const io::OutputFolder out(o.output.out_dir, scenarioInputs(o.scenario));
   const ReferenceFolder ref = loadReferenceFolder(o.scenario.reference_dir, o.scenario.robot_path);
+  requireControllerFits(o.scenario, ref.model);
   sim::Scenario scenario = makeScenario(o.scenario);
   scenario.poincare = o.poincare && !scenario.push;  // a pushed walk has no periodic cycle
   const dynamics::Model plant = sim::scenarioPlant(ref.model, scenario);
@@ -90,14 +92,14 @@ void runSimulate(const SimulateOptions& o) {
       sim::runScenario(ref.model, sim::Reference(ref.step), scenario, recorder.log());
   recorder.finish();
   printOutcome(r, scenario.steps);
-  writeResultFolder(o.output.out_dir, [&](const std::string& dir) {
+  out.write([&](const std::string& dir) {
     recorder.writeWalkCsv(dir + "/walk.csv");
     recorder.writeStickCsv(dir + "/stick.csv", kStickFrameInterval);
     writeStepsCsv(r.walk, dir + "/steps.csv");
     gaits::writeJsonFile(summaryJson(o, ref, scenario, plant, r), dir + "/summary.json");
   });
-  if (o.output.plots) runPlotScript("walk_plots.py", fmt::format("'{}'", o.output.out_dir));
-  fmt::print("simulate: wrote {}/walk.csv, steps.csv, stick.csv, summary.json\n", o.output.out_dir);
+  if (o.output.plots) runPlotScript("walk_plots.py", {out.path()});
+  fmt::print("simulate: wrote {}/walk.csv, steps.csv, stick.csv, summary.json\n", out.path());
 }
 
 void registerSimulateCommand(CLI::App& app) {
