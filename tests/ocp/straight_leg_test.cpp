@@ -15,6 +15,7 @@
 #include "dynamics/impact.hpp"
 #include "dynamics/kinematics.hpp"
 #include "dynamics/relabel.hpp"
+#include "dynamics/robot_config.hpp"
 #include "ocp/gait_solve.hpp"
 #include "ocp/initial_guess.hpp"
 #include "ocp/resimulation.hpp"
@@ -105,13 +106,18 @@ TEST_P(ShippedStraightLegConfig, SolvesToAPeriodicGaitTheResimulationReproduces)
   const StateError period = difference(next, sspPointState(p, n, r.x, 0));
   EXPECT_LT(period.angle, 1e-7);
   EXPECT_LT(period.rate, 1e-6);
-  // The torques re-simulated open loop reproduce the strike state (Hermite-Simpson on 25
-  // segments of a smooth swing).
+  // The torques re-simulated segment by segment reproduce each segment's end state (local
+  // error, Hermite-Simpson O(h^5)); open loop over the whole SSP the unstable single support
+  // (the three-link walker's torso above an unactuated ankle) amplifies it.
+  const StateError local = sspSegmentError(p, s.model, r.x);
   const StateError sim = sspEndStateError(p, s.model, r.x);
   RecordProperty("cost", fmt::format("{:.6g}", r.cost));
-  RecordProperty("resimulation_error_rad", fmt::format("{:.2e} {:.2e}", sim.angle, sim.rate));
-  EXPECT_LT(sim.angle, 1e-4);
-  EXPECT_LT(sim.rate, 1e-3);
+  RecordProperty("segment_error", fmt::format("{:.2e} {:.2e}", local.angle, local.rate));
+  RecordProperty("end_error", fmt::format("{:.2e} {:.2e}", sim.angle, sim.rate));
+  EXPECT_LT(local.angle, 1e-5);
+  EXPECT_LT(local.rate, 1e-4);
+  EXPECT_LT(sim.angle, 1e-3);
+  EXPECT_LT(sim.rate, 1e-2);
 }
 
 INSTANTIATE_TEST_SUITE_P(Robots, ShippedStraightLegConfig,
