@@ -92,7 +92,11 @@ def ratio(a, b):
 
 def write_table(rows, path):
     by = {(r["speed"], r["robot"]): r for r in rows}
-    out = ["| speed m/s | five-link CoT | peak N m | solve s | three-link CoT / peak / time "
+    out = ["Torque-squared optimum of each model at Mu's step (0.35 m, step time 0.35 / v), cold "
+           "solves by scripts/fidelity_chart.py; cost of transport = absolute joint work / (m g d); "
+           "peak = largest |joint torque|; solve = Ipopt wall time on the machine that ran it. "
+           "Ratios to the five-link value in parentheses; 'failed': no converged solve.", "",
+           "| speed m/s | five-link CoT | peak N m | solve s | three-link CoT / peak / time "
            "(ratio to five-link) | compass CoT / peak / time (ratio) |",
            "|---:|---:|---:|---:|---|---|"]
     for v in SPEEDS:
