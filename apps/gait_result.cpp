@@ -8,7 +8,6 @@
 
 #include "apps/plotting.hpp"
 #include "apps/result_folder.hpp"
-#include "dynamics/energy.hpp"
 #include "gaits/consistency.hpp"
 #include "gaits/gait_summary.hpp"
 #include "gaits/metrics.hpp"
@@ -16,18 +15,6 @@
 
 namespace gaitopt::apps {
 namespace {
-
-/// Kinetic energy lost in the strike, from the solution's own impact variables [J].
-double impactLoss(const ocp::GaitProblem& p, const dynamics::Model& model,
-                  const Eigen::VectorXd& x) {
-  const int n = model.nLinks();
-  const Eigen::VectorXd strike = p.ssp.point(x, p.ssp.points() - 1);
-  const VecD theta = strike.head(n), dtheta = strike.segment(n, n);
-  const Vec2d base = x.segment<2>(p.impact_offset);
-  const VecD dtheta_plus = x.segment(p.impact_offset + 2, n);
-  return dynamics::kineticEnergy<double>(model, theta, dtheta) -
-         dynamics::kineticEnergy<double>(model, theta, dtheta_plus, base);
-}
 
 /// The worst friction ratio, or why there is none (a tip pulling on the ground).
 nlohmann::ordered_json frictionRatioJson(const gaits::Trajectory& traj) {
@@ -55,7 +42,7 @@ nlohmann::ordered_json violationJson(const ocp::LocatedViolation& v, const std::
   using Json = nlohmann::ordered_json;
   const bool on_grid = v.node >= 0;
   return {{name_key, w.name},
-          {"phase", v.phase},
+          {"phase", w.phase},
           {"node_kind", on_grid ? Json(v.node_kind) : Json()},
           {"node", on_grid ? Json(v.node) : Json()},
           {v.part, on_grid ? v.index : w.index},
@@ -111,7 +98,8 @@ nlohmann::ordered_json writeGaitResult(const GaitResultOptions& o, const dynamic
                                      r.callback_time_s, config.cost.primary()});
   summary["converged"] = r.success;
   summary["cost"] = r.cost;  // the solver's objective (the scheme's own quadrature)
-  if (problem.impact_offset >= 0) summary["impact_energy_loss_J"] = impactLoss(problem, model, r.x);
+  if (const auto loss = problem.touchdown.energyLoss(model, r.x))
+    summary["impact_energy_loss_J"] = *loss;
   summary["max_violation"] = r.max_violation;
   if (!failure.is_null()) summary.update(failure);
   // The constraints hold at the collocation points; the dense export shows how far they are
@@ -124,7 +112,7 @@ nlohmann::ordered_json writeGaitResult(const GaitResultOptions& o, const dynamic
   summary["nlp"] = {{"variables", problem.nlp.variables()},
                     {"constraints", problem.nlp.constraints()},
                     {"segments", solution.history.back().segments},
-                    {"scheme", ocp::toString(problem.ssp.scheme)}};
+                    {"scheme", ocp::toString(problem.ssp.layout.scheme)}};
   summary["mesh_history"] = meshHistory(solution.history);
   writeGaitFiles(dir, dense, model, summary, o.plots);
   return summary;

@@ -15,7 +15,7 @@ void addScenarioOptions(CLI::App* cmd, ScenarioOptions& o) {
                   "Robot YAML (default: configs/robots/<summary robot>.yaml)")
       ->option_text("FILE");
   cmd->add_option("--controller", o.controller, "Tracking controller")
-      ->check(CLI::IsMember({"computed_torque", "sliding_mode"}))
+      ->check(CLI::IsMember({"computed_torque", "sliding_mode", "hzd"}))
       ->capture_default_str();
   cmd->add_option("--ground", o.ground,
                   "rigid, impedance, lcp (configs/grounds/NAME.yaml) or a ground YAML")
@@ -45,10 +45,19 @@ void addScenarioOptions(CLI::App* cmd, ScenarioOptions& o) {
       ->capture_default_str();
 }
 
+namespace {
+bool isBuiltinGround(const std::string& ground) {
+  return ground == "rigid" || ground == "impedance" || ground == "lcp";
+}
+}  // namespace
+
 std::string groundPath(const std::string& ground) {
-  for (const char* name : {"rigid", "impedance", "lcp"})
-    if (ground == name) return std::string(GAITOPT_SOURCE_DIR "/configs/grounds/") + name + ".yaml";
+  if (isBuiltinGround(ground)) return std::string(GAITOPT_SOURCE_DIR "/") + groundRecord(ground);
   return ground;
+}
+
+std::string groundRecord(const std::string& ground) {
+  return isBuiltinGround(ground) ? "configs/grounds/" + ground + ".yaml" : ground;
 }
 
 sim::Scenario makeScenario(const ScenarioOptions& o) {
@@ -69,7 +78,7 @@ nlohmann::ordered_json scenarioJson(const ScenarioOptions& o, const sim::Scenari
           {"controller", s.controller},
           {"gain_scale", s.gain_scale},
           {"ground", sim::groundName(s.ground)},
-          {"ground_file", groundPath(o.ground)},
+          {"ground_file", groundRecord(o.ground)},
           {"uncertainty_case", o.uncertainty_case},
           {"uncertainty_on", o.uncertainty_on},
           {"parameter_errors",

@@ -31,6 +31,10 @@ void addScenarioOptions(CLI::App* cmd, ScenarioOptions& o);
 /// The ground YAML `ground` names: a shipped configs/grounds/<name>.yaml or a file path.
 std::string groundPath(const std::string& ground);
 
+/// The ground as summary.json records it: a shipped ground by its path relative to the source
+/// tree (no absolute path of the machine that ran it), a user's file as given.
+std::string groundRecord(const std::string& ground);
+
 /// The scenario the options describe. @throws config::ConfigError for a bad ground file.
 sim::Scenario makeScenario(const ScenarioOptions& o);
 

@@ -38,6 +38,27 @@ nlohmann::ordered_json poincareJson(const std::optional<sim::PoincareAnalysis>& 
   return j;
 }
 
+/// HZD's restricted Poincare map (sim/hzd_poincare.hpp): analytic, and measured on the walk.
+nlohmann::ordered_json hzdJson(const sim::ScenarioResult& r) {
+  const sim::RestrictedMap& a = *r.hzd_map;
+  nlohmann::ordered_json j{
+      {"phase_weights", std::vector<double>(a.phase_weights.begin(), a.phase_weights.end())},
+      {"phase_plus", a.phi_plus},
+      {"phase_minus", a.phi_minus},
+      {"restricted_multiplier", a.multiplier},
+      {"delta_zero", a.delta},
+      {"v_zero_minus", a.v_minus},
+      {"v_zero_max", a.v_max},
+      {"zeta_minus_fixed_point", a.zeta_minus},
+      {"phase_rate_at_touchdown", a.phidot_minus},
+      {"hybrid_zero_dynamics_walk", a.walks}};
+  if (r.hzd_measured && r.hzd_measured->ok)
+    j["restricted_multiplier_measured"] = r.hzd_measured->multiplier;
+  else if (r.hzd_measured)
+    j["restricted_multiplier_measured_failure"] = r.hzd_measured->failure;
+  return j;
+}
+
 /// Mean step length and duration over the completed steps.
 nlohmann::ordered_json gaitJson(const sim::WalkResult& w) {
   if (w.steps_completed == 0) return {{"mean_step_length", nullptr}, {"mean_speed", nullptr}};
@@ -59,6 +80,7 @@ nlohmann::ordered_json summaryJson(const SimulateOptions& o, const ReferenceFold
   j["max_tracking_error"] = r.walk.max_tracking_error;
   j.update(gaitJson(r.walk));
   j.update(poincareJson(r.poincare));
+  if (r.hzd_map) j["hzd"] = hzdJson(r);
   j["wall_time_s"] = r.wall_time_s;
   return j;
 }
@@ -73,6 +95,11 @@ void printOutcome(const sim::ScenarioResult& r, int steps) {
                r.poincare->max_multiplier, r.poincare->max_multiplier < 1 ? "stable" : "unstable");
   else if (r.poincare)
     fmt::print("simulate: Poincare map failed: {}\n", r.poincare->failure);
+  if (r.hzd_map)
+    fmt::print("simulate: HZD restricted multiplier {:.4g} analytic{}\n", r.hzd_map->multiplier,
+               r.hzd_measured && r.hzd_measured->ok
+                   ? fmt::format(", {:.4g} measured", r.hzd_measured->multiplier)
+                   : "");
 }
 
 }  // namespace

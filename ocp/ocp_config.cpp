@@ -154,6 +154,13 @@ OcpConfig loadOcpConfig(const std::string& path) {
   return c;
 }
 
+double frictionBound(const dynamics::Model& model, const OcpConfig& config) {
+  const double mu = model.friction() - config.friction_margin;
+  if (!(mu > 0))
+    throw std::invalid_argument("friction_margin must be below the robot's friction coefficient");
+  return mu;
+}
+
 dynamics::Model problemModel(const OcpConfig& config) {
   return dynamics::withSlope(dynamics::loadRobot(config.robot_path), config.slope);
 }

@@ -89,6 +89,10 @@ OcpConfig loadOcpConfig(const std::string& path);
 /// @throws config::ConfigError for a bad robot file.
 dynamics::Model problemModel(const OcpConfig& config);
 
+/// The friction coefficient of the optimiser's cones: the robot's, less the configured margin.
+/// @throws std::invalid_argument when the margin leaves no cone.
+double frictionBound(const dynamics::Model& model, const OcpConfig& config);
+
 /// A step the two legs cannot span, even stretched, is bad input, not a question for Ipopt
 /// (which would spend its iteration limit on it). @throws std::domain_error naming `path` and
 /// the key.
