@@ -13,6 +13,7 @@
 #include "apps/library_command.hpp"
 #include "apps/optimize_command.hpp"
 #include "apps/poly_command.hpp"
+#include "apps/report_command.hpp"
 #include "apps/simulate_command.hpp"
 #include "apps/stability_command.hpp"
 
@@ -38,6 +39,7 @@ void configure(CLI::App& app) {
   gaitopt::apps::registerCompareCommand(app);
   gaitopt::apps::registerLibraryCommand(app);
   gaitopt::apps::registerInterpolateCommand(app);
+  gaitopt::apps::registerReportCommand(app);
 }
 
 /// Parses the command line and runs the chosen subcommand (from its callback).
