@@ -43,7 +43,7 @@ const std::map<std::string, std::unique_ptr<Shipped>>& shippedProblems() {
       }
       const dynamics::Model model = problemModel(config);
       auto s = std::make_unique<Shipped>(Shipped{config, model, {}});
-      s->problem = buildGaitProblem(s->model, s->config, polynomialGuess(s->model, s->config));
+      s->problem = buildGaitProblem(s->model, s->config, initialGuess(s->model, s->config));
       all.emplace(entry.path().stem().string(), std::move(s));
     }
     return all;
