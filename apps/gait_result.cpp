@@ -123,8 +123,10 @@ namespace {
 /// FAILED.txt, so that a person browsing the folders cannot mistake it for a gait. The folder
 /// is renamed into place only when complete, so a plain write suffices.
 void writeFailedNote(const std::string& path, const std::string& message) {
-  io::writeFile(path, "This folder holds a failed solve, not a gait: do not use it as a "
-                      "reference.\n" + message + '\n');
+  io::writeFile(path,
+                "This folder holds a failed solve, not a gait: do not use it as a "
+                "reference.\n" +
+                    message + '\n');
 }
 
 }  // namespace
