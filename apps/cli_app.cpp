@@ -10,6 +10,7 @@
 #include "apps/optimize_command.hpp"
 #include "apps/option_checks.hpp"
 #include "apps/poly_command.hpp"
+#include "apps/report_command.hpp"
 #include "apps/simulate_command.hpp"
 #include "apps/stability_command.hpp"
 #include "io/terminal_text.hpp"
@@ -39,6 +40,7 @@ void configureCli(CLI::App& app) {
   registerCompareCommand(app);
   registerLibraryCommand(app);
   registerInterpolateCommand(app);
+  registerReportCommand(app);
   requireFiniteNumbers(app);
 }
 

@@ -8,6 +8,7 @@
 #include "apps/command_runner.hpp"
 #include "apps/gait_result.hpp"
 #include "apps/reference_folder.hpp"
+#include "config/config_error.hpp"
 #include "gaits/trajectory_csv.hpp"
 #include "io/output_folder.hpp"
 #include "ocp/gait_solve.hpp"
@@ -16,18 +17,21 @@
 namespace gaitopt::apps {
 namespace {
 
-/// A previous result (warm start), or the config's polynomial gait.
+/// A previous result (warm start), or the config's initial guess (`path`: the config file).
 gaits::Trajectory initialGuess(const dynamics::Model& model, const ocp::OcpConfig& config,
-                               const std::string& warm_start) {
+                               const std::string& path, const std::string& warm_start) {
   if (!warm_start.empty()) {
     requireGaitOf(warm_start, model);
     return gaits::readTrajectoryCsv(warm_start + "/trajectory.csv", model);
   }
   try {
-    return ocp::polynomialGuess(model, config);
+    return ocp::initialGuess(model, config);
   } catch (const std::domain_error& e) {  // say which file holds the unrealisable gait
-    throw std::domain_error(fmt::format("{}: the initial-guess gait cannot be realised: {}",
-                                        config.guess_gait_path, e.what()));
+    throw std::domain_error(
+        fmt::format("{}: the initial-guess gait cannot be realised: {}",
+                    config.guess_gait_path.empty() ? path : config.guess_gait_path, e.what()));
+  } catch (const std::invalid_argument& e) {  // a straight-leg guess for a robot with knees
+    throw config::ConfigError(path, "initial_guess", 0, e.what());
   }
 }
 
@@ -53,7 +57,8 @@ void runOptimize(const OptimizeOptions& o) {
   config.solver.progress = !o.quiet;
   if (!o.warm_start.empty()) config.solver = ocp::warmStarted(config.solver);
   const ocp::GaitSolution solution = ocp::solveGait(
-      model, config, initialGuess(model, config, o.warm_start), [&](const ocp::MeshRound& m) {
+      model, config, initialGuess(model, config, o.config_path, o.warm_start),
+      [&](const ocp::MeshRound& m) {
         if (!o.quiet)
           fmt::print(
               "optimize: mesh {} segments, {} after {} iterations, cost {:.6g}, max "

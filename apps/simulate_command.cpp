@@ -11,6 +11,7 @@
 #include "apps/walk_record.hpp"
 #include "gaits/gait_summary.hpp"
 #include "io/output_folder.hpp"
+#include "sim/hzd_controller.hpp"
 
 namespace gaitopt::apps {
 namespace {
@@ -85,6 +86,16 @@ nlohmann::ordered_json summaryJson(const SimulateOptions& o, const ReferenceFold
   return j;
 }
 
+/// The gait HZD needs (no DSP, every joint but the ankle actuated, a growing phase variable) is
+/// an input requirement: exit 2 naming the option and the folder.
+void checkHzdReference(const ReferenceFolder& ref, const sim::Reference& reference) {
+  try {
+    sim::makeHzdController(ref.model, reference, nullptr);
+  } catch (const std::invalid_argument& e) {
+    throw CommandError(kExitInputError, fmt::format("--controller hzd: {}: {}", ref.dir, e.what()));
+  }
+}
+
 void printOutcome(const sim::ScenarioResult& r, int steps) {
   fmt::print("simulate: {} of {} steps{}, max tracking error {:.3g} rad, {:.2f} s\n",
              r.walk.steps_completed, steps,
@@ -114,9 +125,10 @@ void runSimulate(const SimulateOptions& o) {
   if (!o.quiet)
     fmt::print("simulate: {} steps of {} with {} on {} ground\n", scenario.steps, ref.dir,
                scenario.controller, sim::groundName(scenario.ground));
+  const sim::Reference reference(ref.step);
+  if (scenario.controller == "hzd") checkHzdReference(ref, reference);
   WalkRecorder recorder(plant, o.output.rate_hz);
-  const sim::ScenarioResult r =
-      sim::runScenario(ref.model, sim::Reference(ref.step), scenario, recorder.log());
+  const sim::ScenarioResult r = sim::runScenario(ref.model, reference, scenario, recorder.log());
   recorder.finish();
   printOutcome(r, scenario.steps);
   out.write([&](const std::string& dir) {

@@ -81,18 +81,17 @@ void WalkRecorder::writeWalkCsv(const std::string& path) const {
 
 void WalkRecorder::writeStickCsv(const std::string& path, double frame_interval) const {
   std::ostringstream out = openCsv();
-  out << "t,step,link,x0,y0,x1,y1\n";
+  out << "t,step,link,x0,y0,x1,y1,phase\n";
   double next = -1;
   for (const auto& s : samples_) {
     if (s.t < next && &s != &samples_.back()) continue;
     next = s.t + frame_interval;
     const Vec2d base(s.stance_x, s.stance_y);
     for (int i = 0; i < plant_->nLinks(); ++i) {
-      const Vec2d p0 = base + dynamics::pointPosition<double>(plant_->jointWeights(i), s.theta);
-      const Vec2d u(std::sin(s.theta(i)), std::cos(s.theta(i)));  // conventions.hpp
-      const Vec2d p1 = p0 + plant_->link(i).length * u;
-      out << s.t << ',' << s.step + 1 << ',' << i + 1 << ',' << p0(0) << ',' << p0(1) << ','
-          << p1(0) << ',' << p1(1) << '\n';
+      const auto [p0, p1] = dynamics::linkEnds(*plant_, s.theta, i);
+      const Vec2d a = base + p0, b = base + p1;
+      out << s.t << ',' << s.step + 1 << ',' << i + 1 << ',' << a(0) << ',' << a(1) << ',' << b(0)
+          << ',' << b(1) << ',' << gaits::toString(s.phase) << '\n';
     }
   }
   io::writeFile(path, out.str());

@@ -144,6 +144,20 @@ TEST_F(RabbitHzd, StepsFromTheFixedPointStayOnTheOrbit) {
   }
 }
 
+// Started on Z 30 % above the fixed point's zeta+, the walk returns to it geometrically: each
+// step multiplies the distance by delta^2 (the restricted map is affine in zeta).
+TEST_F(RabbitHzd, ZeroDynamicsReturnToTheFixedPointByTheMultiplier) {
+  const RestrictedMap a = restrictedMap(*model_, vc());
+  const double fixed = a.multiplier * a.zeta_minus;
+  double zeta = 1.3 * fixed;
+  for (int k = 0; k < 3; ++k) {
+    const double next = restrictedReturn(*model_, *controller_, *ref_, vc(), zeta);
+    ASSERT_TRUE(std::isfinite(next)) << "step " << k;
+    EXPECT_NEAR((next - fixed) / (zeta - fixed), a.multiplier, 1e-3) << "step " << k;
+    zeta = next;
+  }
+}
+
 // `gaitopt simulate --controller hzd` on Kelly's gait: 20 steps from the gait's own start (on Z
 // up to the OCP's tolerance), at the gait's step length and speed, and the full-state Poincare
 // map's largest multiplier equal to the restricted one (the outputs' own multipliers, e^-20T,
