@@ -37,8 +37,7 @@ gaits::ImpactGrid parseGrid(const ImpactMapOptions& o, const dynamics::Model& mo
                                           "robot '{}' has {} link(s) per leg",
                                           model.name(), model.legLinks()));
   // Measured: 705 B of memory per point (the points and their CSV row); rounded up.
-  requireGridFits(static_cast<double>(grid.axes[0].count) * grid.axes[1].count *
-                      grid.axes[2].count,
+  requireGridFits(static_cast<double>(grid.axes[0].count) * grid.axes[1].count * grid.axes[2].count,
                   1024, "command line (--step-lengths x --knee-bias x --approach-angles)");
   try {
     gaits::checkImpactGrid(model, grid);
@@ -69,8 +68,8 @@ void runImpactMap(const ImpactMapOptions& options) {
   const io::OutputFolder out(options.out_dir, {options.robot_path});
   const dynamics::Model model = dynamics::loadRobot(options.robot_path);
   const gaits::ImpactGrid grid = parseGrid(options, model);
-  const int jobs = static_cast<int>(
-      std::min<std::size_t>(parallel::resolveJobs(options.jobs), grid.size()));
+  const int jobs =
+      static_cast<int>(std::min<std::size_t>(parallel::resolveJobs(options.jobs), grid.size()));
   fmt::print("impact-map: {} on {} points with {} job(s)\n", model.name(), grid.size(), jobs);
   std::fflush(stdout);
   const gaits::ImpactMap map =

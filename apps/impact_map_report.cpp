@@ -132,7 +132,7 @@ nlohmann::ordered_json referenceJson(const gaits::ImpactMap& map) {
 void writeImpactMapCsv(const gaits::ImpactMap& map, const std::string& path) {
   std::string text =
       "step_length,mu_SL,knee_bias_deg,approach_angle_deg,approach_speed,hip_height,type,"
-           "P_lx,P_ly,P_rx,P_ry,xdot_b,ydot_b,P_Sx,P_Sy,mu_L,mu_R,mu_S,double_no_slip,"
+      "P_lx,P_ly,P_rx,P_ry,xdot_b,ydot_b,P_Sx,P_Sy,mu_L,mu_R,mu_S,double_no_slip,"
       "single_no_slip\n";
   for (const auto& p : map.points) text += csvRow(p);
   io::writeFileAtomically(path, text);

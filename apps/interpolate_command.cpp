@@ -67,9 +67,8 @@ void runInterpolate(InterpolateOptions o) {
   auto& corners = summary["library_corners"] = nlohmann::ordered_json::array();
   for (const auto& [p, w] : library::cellWeights(lib.grid, o.values))
     corners.push_back({{"point", lib.grid.point(p).name}, {"weight", w}});
-  out.write([&](const std::string& dir) {
-    writeGaitFiles(dir, traj, model, summary, o.output.plots);
-  });
+  out.write(
+      [&](const std::string& dir) { writeGaitFiles(dir, traj, model, summary, o.output.plots); });
   fmt::print(
       "interpolate: {} corners; max dynamics residual {:.3g} N m, periodicity error "
       "{:.3g}; wrote {}/trajectory.csv\n",

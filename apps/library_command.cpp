@@ -12,11 +12,11 @@
 #include "apps/command_runner.hpp"
 #include "apps/library_point.hpp"
 #include "apps/option_checks.hpp"
-#include "io/output_folder.hpp"
-#include "io/settings_record.hpp"
 #include "apps/plotting.hpp"
 #include "config/config_error.hpp"
 #include "gaits/gait_summary.hpp"
+#include "io/output_folder.hpp"
+#include "io/settings_record.hpp"
 #include "parallel/mpi_executor.hpp"
 #include "parallel/parallel_for.hpp"
 #include "parallel/process_executor.hpp"
@@ -161,12 +161,14 @@ library::Grid makeGrid(const library::LibraryConfig& config, const std::string& 
 void runLibrary(const LibraryOptions& o) {
   library::LibraryConfig config = library::loadLibraryConfig(o.config_path);
   library::Grid grid = makeGrid(config, o.config_path);
-  const LibrarySetup setup{
-      std::move(config), std::move(grid), io::normaliseOutPath(o.out_dir, "--out"), {o.config_path, o.rate_hz, o.plots}};
+  const LibrarySetup setup{std::move(config),
+                           std::move(grid),
+                           io::normaliseOutPath(o.out_dir, "--out"),
+                           {o.config_path, o.rate_hz, o.plots}};
   const bool under_mpi = parallel::launchedByMpi();
   // No more worker processes than points.
-  const int jobs = std::min(o.jobs > 0 ? o.jobs : (under_mpi ? 1 : parallel::resolveJobs(0)),
-                            setup.grid.size());
+  const int jobs =
+      std::min(o.jobs > 0 ? o.jobs : (under_mpi ? 1 : parallel::resolveJobs(0)), setup.grid.size());
   // The workers are forked first, so they hold neither MPI's state nor its threads.
   auto local = std::make_unique<parallel::ProcessExecutor>(
       jobs,

@@ -38,11 +38,10 @@ gaits::Trajectory initialGuess(const dynamics::Model& model, const ocp::OcpConfi
 /// A failed solve goes to OUT.failed and never touches a previous good result in OUT.
 /// @throws CommandError with the exit code.
 [[noreturn]] void reportFailure(const OptimizeOptions& o, const std::string& out_dir,
-                                const dynamics::Model& model,
-                                const ocp::OcpConfig& config, const ocp::GaitSolution& solution) {
-  const std::string message =
-      writeFailedResult({o.config_path, o.output.rate_hz, o.output.plots}, model, config, solution,
-                        out_dir + ".failed");
+                                const dynamics::Model& model, const ocp::OcpConfig& config,
+                                const ocp::GaitSolution& solution) {
+  const std::string message = writeFailedResult({o.config_path, o.output.rate_hz, o.output.plots},
+                                                model, config, solution, out_dir + ".failed");
   const bool infeasible = solution.result.status == "Infeasible_Problem_Detected";
   throw CommandError(infeasible ? kExitInfeasible : kExitNotConverged, message);
 }

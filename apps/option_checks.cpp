@@ -21,7 +21,8 @@ std::string finiteOrWhy(const std::string& text) {
 void addFiniteChecks(CLI::App& app) {
   for (CLI::Option* opt : app.get_options())
     // CLI11 appends the validators' descriptions: "FLOAT:FLOAT in [0 - 10]".
-    if (opt->get_type_name().rfind("FLOAT", 0) == 0) opt->check(CLI::Validator(finiteOrWhy, "", "finite"));
+    if (opt->get_type_name().rfind("FLOAT", 0) == 0)
+      opt->check(CLI::Validator(finiteOrWhy, "", "finite"));
   for (CLI::App* sub : app.get_subcommands({})) addFiniteChecks(*sub);
 }
 

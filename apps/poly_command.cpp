@@ -86,8 +86,8 @@ void runPoly(const PolyOptions& options) {
       summary["energy_J"].get<double>(), summary["cost_of_transport"].get<double>(),
       summary["min_normal_force"].get<double>(), summary["max_friction_ratio"].get<double>(),
       summary["min_zmp_margin"].get<double>());
-  fmt::print("poly: wrote {}/trajectory.csv ({} samples), summary.json and pictures\n",
-             out.path(), traj.knots().size());
+  fmt::print("poly: wrote {}/trajectory.csv ({} samples), summary.json and pictures\n", out.path(),
+             traj.knots().size());
 }
 
 void registerPolyCommand(CLI::App& app) {

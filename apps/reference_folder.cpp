@@ -78,9 +78,9 @@ ReferenceFolder loadReferenceFolder(const std::string& dir, const std::string& r
   requireGaitOf(dir, model);
   gaits::Trajectory step = gaits::readTrajectoryCsv(dir + "/trajectory.csv", model);
   if (step.knots().size() < 2)
-    throw config::ConfigError(dir + "/trajectory.csv", "", 0,
-                              fmt::format("{} sample(s): a step needs at least 2",
-                                          step.knots().size()));
+    throw config::ConfigError(
+        dir + "/trajectory.csv", "", 0,
+        fmt::format("{} sample(s): a step needs at least 2", step.knots().size()));
   return {dir, robot, std::move(model), std::move(step)};
 }
 

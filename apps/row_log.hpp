@@ -3,7 +3,8 @@
 /// The on-disk record of a resumable run (stability sweeps, gait libraries): a CSV with one row
 /// per finished point, appended and flushed as soon as the point is done. A killed run keeps
 /// every finished row; a rerun reads them back (a torn last line is ignored, so its point is
-/// redone, and the torn bytes are cut from the file). Rows are keyed by their first field; a later row replaces an earlier one.
+/// redone, and the torn bytes are cut from the file). Rows are keyed by their first field; a later
+/// row replaces an earlier one.
 #include <map>
 #include <mutex>
 #include <string>

@@ -27,7 +27,8 @@ std::string holderPid(int fd) {
 /// Whether `fd` is still the file at `path`: a holder that finished unlinks it, and a lock on
 /// the unlinked file would exclude nobody.
 bool stillLinked(int fd, const std::string& path) {
-  struct stat a {}, b {};
+  struct stat a {
+  }, b{};
   return ::fstat(fd, &a) == 0 && ::stat(path.c_str(), &b) == 0 && a.st_ino == b.st_ino &&
          a.st_dev == b.st_dev;
 }
@@ -53,8 +54,7 @@ FolderLock::FolderLock(const std::string& dir) : path_(dir + ".lock"), owner_pid
       // The pid only names the holder in the message above: on a full disk it stays unwritten
       // and the run goes on to fail at its first real write, with the reason.
       const std::string pid = std::to_string(owner_pid_);
-      static_cast<void>(::ftruncate(fd_, 0) == 0 &&
-                        ::pwrite(fd_, pid.data(), pid.size(), 0) >= 0);
+      static_cast<void>(::ftruncate(fd_, 0) == 0 && ::pwrite(fd_, pid.data(), pid.size(), 0) >= 0);
       return;
     }
     ::close(fd_);  // raced with a holder removing it: take the new file

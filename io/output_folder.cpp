@@ -125,9 +125,8 @@ void cleanLeftovers(const std::string& out) {
       const auto pid = leftoverPid(name, base, kind);
       if (!pid || alive(*pid)) continue;
       stale.push_back(entry.path());
-      if (std::string(kind) == ".old-" &&
-          (!newest_old || fs::last_write_time(entry.path(), ec) >
-                              fs::last_write_time(*newest_old, ec)))
+      if (std::string(kind) == ".old-" && (!newest_old || fs::last_write_time(entry.path(), ec) >
+                                                              fs::last_write_time(*newest_old, ec)))
         newest_old = entry.path();
     }
   }

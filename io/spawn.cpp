@@ -35,7 +35,8 @@ int runProgram(const std::vector<std::string>& argv, bool quiet) {
   }
   pid_t pid = 0;
   const int error = ::posix_spawn(&pid, args[0], &fa.actions, nullptr, args.data(), environ);
-  if (error != 0) throw std::system_error(error, std::generic_category(), "cannot start " + argv[0]);
+  if (error != 0)
+    throw std::system_error(error, std::generic_category(), "cannot start " + argv[0]);
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0)
     if (errno != EINTR) throw std::system_error(errno, std::generic_category(), "waitpid");

@@ -14,8 +14,8 @@ void failJson(const std::string& path, const std::string& key, const std::string
   const auto tag = message.find("] ");
   throw config::ConfigError(
       path, "", 0,
-      "not valid JSON (" +
-          printable(tag == std::string::npos ? message : message.substr(tag + 2)) + ")");
+      "not valid JSON (" + printable(tag == std::string::npos ? message : message.substr(tag + 2)) +
+          ")");
 }
 
 nlohmann::ordered_json readStrictJson(const std::string& path) {

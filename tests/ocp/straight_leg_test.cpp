@@ -131,10 +131,8 @@ TEST_F(PassiveSlopeWalk, NeedsNoTorqueAndRepeatsItselfWithout) {
   const GaitProblem& p = s.solution.problem;
   ASSERT_TRUE(r.success) << r.status;
   double peak = 0;
-  for (int k = 0; k < p.ssp.layout.points(); ++k) {
-    const Eigen::VectorXd point = p.ssp.layout.point(r.x, k);
-    peak = std::max(peak, p.ssp.point.u.of(point).cwiseAbs().maxCoeff());
-  }
+  for (int k = 0; k < p.ssp.layout.points(); ++k)
+    peak = std::max(peak, p.ssp.point.u.of(p.ssp.layout.point(r.x, k)).cwiseAbs().maxCoeff());
   RecordProperty("cost", fmt::format("{:.3e}", r.cost));
   RecordProperty("peak_hip_torque_Nm", fmt::format("{:.3e}", peak));
   EXPECT_LT(r.cost, 1e-8);  // N^2 m^2 s; a level-ground step costs ~10^2 (compass_gait_walk)
