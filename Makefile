@@ -1,5 +1,7 @@
 # Two commands do everything on a fresh Debian 12 machine:
-#   make demo   install missing packages, configure, build, run the main job into results/
+#   make demo   install missing packages, configure, build the gaitopt tool only, run the quick
+#               part of the main job into results/ and print where its report page is
+#               (make demo-full: every solve, walk, sweep and library of the README, much longer)
 #   make test   same set-up, then the whole test suite (Release, then Debug+ASan/UBSan) via ctest,
 #               and one optimise under valgrind
 JOBS ?= $(shell nproc)
@@ -7,7 +9,7 @@ BUILD ?= build
 SAN_BUILD ?= build-sanitize
 CMAKE_GEN := $(shell command -v ninja >/dev/null 2>&1 && echo "-G Ninja")
 
-.PHONY: deps configure build test test-release test-sanitize valgrind demo bench format clean
+.PHONY: deps configure build test test-release test-sanitize valgrind demo demo-full bench format clean
 
 deps:
 	@bash scripts/install-deps.sh
@@ -39,8 +41,13 @@ valgrind: build
 
 test: test-release test-sanitize valgrind
 
-demo: build
+# The demo runs the tool only: tests are built by `make test`, benchmarks by `make bench`.
+demo: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target gaitopt_cli
 	@bash scripts/demo.sh $(BUILD)
+
+demo-full: build
+	@bash scripts/demo.sh $(BUILD) --full
 
 bench: build
 	@bash scripts/bench.sh $(BUILD)

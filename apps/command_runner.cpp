@@ -7,12 +7,13 @@
 #include <CLI/CLI.hpp>
 
 #include "config/config_error.hpp"
+#include "io/terminal_text.hpp"
 
 namespace gaitopt::apps {
 namespace {
 
 int report(const char* message, ExitCode code) {
-  fmt::print(stderr, "error: {}\n", message);
+  fmt::print(stderr, "error: {}\n", io::printable(message));
   return code;
 }
 

@@ -7,6 +7,7 @@
 #include "apps/command_runner.hpp"
 #include "apps/plotting.hpp"
 #include "config/config_error.hpp"
+#include "io/output_folder.hpp"
 
 namespace gaitopt::apps {
 namespace {
@@ -22,14 +23,15 @@ void requireResultFolder(const std::string& dir) {
 }  // namespace
 
 void runCompare(const CompareOptions& o) {
+  const io::OutputFolder out(o.out_dir, {o.a_dir, o.b_dir});
   requireResultFolder(o.a_dir);
   requireResultFolder(o.b_dir);
-  std::filesystem::create_directories(o.out_dir);
   // The report is the script's whole job: without matplotlib there is nothing to write.
-  if (!runPlotScript("compare_gaits.py",
-                     fmt::format("'{}' '{}' '{}'", o.a_dir, o.b_dir, o.out_dir)))
-    throw std::runtime_error("compare: scripts/plots/compare_gaits.py failed (see above)");
-  fmt::print("compare: wrote {}/comparison.md and the overlays\n", o.out_dir);
+  out.write([&](const std::string& dir) {
+    if (!runPlotScript("compare_gaits.py", {o.a_dir, o.b_dir, dir}))
+      throw std::runtime_error("compare: scripts/plots/compare_gaits.py failed (see above)");
+  });
+  fmt::print("compare: wrote {}/comparison.md and the overlays\n", out.path());
 }
 
 void registerCompareCommand(CLI::App& app) {

@@ -1,33 +1,20 @@
 #include "apps/gait_result.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
 #include "apps/plotting.hpp"
-#include "apps/result_folder.hpp"
-#include "dynamics/energy.hpp"
 #include "gaits/consistency.hpp"
 #include "gaits/gait_summary.hpp"
 #include "gaits/metrics.hpp"
 #include "gaits/trajectory_csv.hpp"
+#include "io/checked_write.hpp"
+#include "io/output_folder.hpp"
 
 namespace gaitopt::apps {
 namespace {
-
-/// Kinetic energy lost in the strike, from the solution's own impact variables [J].
-double impactLoss(const ocp::GaitProblem& p, const dynamics::Model& model,
-                  const Eigen::VectorXd& x) {
-  const int n = model.nLinks();
-  const Eigen::VectorXd strike = p.ssp.point(x, p.ssp.points() - 1);
-  const VecD theta = strike.head(n), dtheta = strike.segment(n, n);
-  const Vec2d base = x.segment<2>(p.impact_offset);
-  const VecD dtheta_plus = x.segment(p.impact_offset + 2, n);
-  return dynamics::kineticEnergy<double>(model, theta, dtheta) -
-         dynamics::kineticEnergy<double>(model, theta, dtheta_plus, base);
-}
 
 /// The worst friction ratio, or why there is none (a tip pulling on the ground).
 nlohmann::ordered_json frictionRatioJson(const gaits::Trajectory& traj) {
@@ -55,7 +42,7 @@ nlohmann::ordered_json violationJson(const ocp::LocatedViolation& v, const std::
   using Json = nlohmann::ordered_json;
   const bool on_grid = v.node >= 0;
   return {{name_key, w.name},
-          {"phase", v.phase},
+          {"phase", w.phase},
           {"node_kind", on_grid ? Json(v.node_kind) : Json()},
           {"node", on_grid ? Json(v.node) : Json()},
           {v.part, on_grid ? v.index : w.index},
@@ -93,7 +80,7 @@ void writeGaitFiles(const std::string& dir, const gaits::Trajectory& traj,
                     bool plots) {
   gaits::writeTrajectoryCsv(traj, model, dir + "/trajectory.csv");
   gaits::writeJsonFile(summary, dir + "/summary.json");
-  if (plots) runPlotScript("gait_plots.py", fmt::format("'{}'", dir));
+  if (plots) runPlotScript("gait_plots.py", {dir});
 }
 
 nlohmann::ordered_json writeGaitResult(const GaitResultOptions& o, const dynamics::Model& model,
@@ -111,7 +98,8 @@ nlohmann::ordered_json writeGaitResult(const GaitResultOptions& o, const dynamic
                                      r.callback_time_s, config.cost.primary()});
   summary["converged"] = r.success;
   summary["cost"] = r.cost;  // the solver's objective (the scheme's own quadrature)
-  if (problem.impact_offset >= 0) summary["impact_energy_loss_J"] = impactLoss(problem, model, r.x);
+  if (const auto loss = problem.touchdown.energyLoss(model, r.x))
+    summary["impact_energy_loss_J"] = *loss;
   summary["max_violation"] = r.max_violation;
   if (!failure.is_null()) summary.update(failure);
   // The constraints hold at the collocation points; the dense export shows how far they are
@@ -124,7 +112,7 @@ nlohmann::ordered_json writeGaitResult(const GaitResultOptions& o, const dynamic
   summary["nlp"] = {{"variables", problem.nlp.variables()},
                     {"constraints", problem.nlp.constraints()},
                     {"segments", solution.history.back().segments},
-                    {"scheme", ocp::toString(problem.ssp.scheme)}};
+                    {"scheme", ocp::toString(problem.ssp.layout.scheme)}};
   summary["mesh_history"] = meshHistory(solution.history);
   writeGaitFiles(dir, dense, model, summary, o.plots);
   return summary;
@@ -135,10 +123,10 @@ namespace {
 /// FAILED.txt, so that a person browsing the folders cannot mistake it for a gait. The folder
 /// is renamed into place only when complete, so a plain write suffices.
 void writeFailedNote(const std::string& path, const std::string& message) {
-  std::ofstream out(path);
-  out << "This folder holds a failed solve, not a gait: do not use it as a reference.\n"
-      << message << '\n';
-  if (!out) throw std::runtime_error("cannot write " + path);
+  io::writeFile(path,
+                "This folder holds a failed solve, not a gait: do not use it as a "
+                "reference.\n" +
+                    message + '\n');
 }
 
 }  // namespace
@@ -147,7 +135,7 @@ std::string writeFailedResult(const GaitResultOptions& o, const dynamics::Model&
                               const ocp::OcpConfig& config, const ocp::GaitSolution& solution,
                               const std::string& failed_dir) {
   const FailureReport report = failureReport(solution, failed_dir);
-  writeResultFolder(failed_dir, [&](const std::string& dir) {
+  io::OutputFolder(failed_dir, {o.config_path}).write([&](const std::string& dir) {
     writeGaitResult(o, model, config, solution, report.summary, dir);
     writeFailedNote(dir + "/FAILED.txt", report.message);
   });

@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include "io/checked_write.hpp"
+
 namespace gaitopt::apps {
 namespace {
 
@@ -128,16 +130,12 @@ nlohmann::ordered_json referenceJson(const gaits::ImpactMap& map) {
 }  // namespace
 
 void writeImpactMapCsv(const gaits::ImpactMap& map, const std::string& path) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << "step_length,mu_SL,knee_bias_deg,approach_angle_deg,approach_speed,hip_height,type,"
-           "P_lx,P_ly,P_rx,P_ry,xdot_b,ydot_b,P_Sx,P_Sy,mu_L,mu_R,mu_S,double_no_slip,"
-           "single_no_slip\n";
-    for (const auto& p : map.points) out << csvRow(p);
-    if (!out) throw std::runtime_error(fmt::format("cannot write {}", tmp));
-  }
-  std::filesystem::rename(tmp, path);
+  std::string text =
+      "step_length,mu_SL,knee_bias_deg,approach_angle_deg,approach_speed,hip_height,type,"
+      "P_lx,P_ly,P_rx,P_ry,xdot_b,ydot_b,P_Sx,P_Sy,mu_L,mu_R,mu_S,double_no_slip,"
+      "single_no_slip\n";
+  for (const auto& p : map.points) text += csvRow(p);
+  io::writeFileAtomically(path, text);
 }
 
 nlohmann::ordered_json impactMapSummary(const gaits::ImpactMap& map, const dynamics::Model& model) {

@@ -1,7 +1,6 @@
 #include "apps/interpolate_command.hpp"
 
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <memory>
 
@@ -10,10 +9,11 @@
 #include "apps/command_runner.hpp"
 #include "apps/gait_result.hpp"
 #include "apps/output_options.hpp"
-#include "apps/result_folder.hpp"
 #include "config/config_error.hpp"
 #include "gaits/gait_summary.hpp"
 #include "gaits/trajectory_csv.hpp"
+#include "io/output_folder.hpp"
+#include "io/strict_json.hpp"
 #include "library/interpolation.hpp"
 #include "library/point_problem.hpp"
 
@@ -35,10 +35,10 @@ struct LibraryFolder {
 
 LibraryFolder readLibraryFolder(const std::string& dir) {
   const std::string path = dir + "/library.json";
-  std::ifstream in(path);
-  if (!in) throw config::ConfigError(path, "", 0, "not a gait library folder (no library.json)");
-  const auto j = nlohmann::json::parse(in, nullptr, false);
-  if (j.is_discarded() || !j.contains("axes") || !j.contains("ocp"))
+  if (!std::filesystem::is_regular_file(path))
+    throw config::ConfigError(path, "", 0, "not a gait library folder (no library.json)");
+  const auto j = io::readStrictJson(path);
+  if (!j.is_object() || !j.contains("axes") || !j.contains("ocp"))
     throw config::ConfigError(path, "", 0, "not a library.json written by gaitopt library");
   std::array<std::vector<double>, 3> axes;
   for (int a = 0; a < 3; ++a)
@@ -49,6 +49,7 @@ LibraryFolder readLibraryFolder(const std::string& dir) {
 }
 
 void runInterpolate(InterpolateOptions o) {
+  const io::OutputFolder out(o.output.out_dir, {o.library_dir});
   const LibraryFolder lib = readLibraryFolder(o.library_dir);
   if (!o.has_slope) o.values[library::kSlope] = library::basePoint(lib.base)[library::kSlope];
   const dynamics::Model model = library::pointProblem(lib.base, o.values).model;
@@ -66,14 +67,13 @@ void runInterpolate(InterpolateOptions o) {
   auto& corners = summary["library_corners"] = nlohmann::ordered_json::array();
   for (const auto& [p, w] : library::cellWeights(lib.grid, o.values))
     corners.push_back({{"point", lib.grid.point(p).name}, {"weight", w}});
-  writeResultFolder(o.output.out_dir, [&](const std::string& dir) {
-    writeGaitFiles(dir, traj, model, summary, o.output.plots);
-  });
+  out.write(
+      [&](const std::string& dir) { writeGaitFiles(dir, traj, model, summary, o.output.plots); });
   fmt::print(
       "interpolate: {} corners; max dynamics residual {:.3g} N m, periodicity error "
       "{:.3g}; wrote {}/trajectory.csv\n",
       corners.size(), summary["max_defect"].get<double>(),
-      summary["periodicity_error"].get<double>(), o.output.out_dir);
+      summary["periodicity_error"].get<double>(), out.path());
 }
 
 }  // namespace
@@ -87,10 +87,10 @@ void registerInterpolateCommand(CLI::App& app) {
       ->option_text("DIR");
   cmd->add_option("--speed", o->values[library::kSpeed], "Walking speed [m/s]")
       ->required()
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1e-3, 20.0));
   cmd->add_option("--step-length", o->values[library::kStepLength], "Step length [m]")
       ->required()
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1e-3, 10.0));
   CLI::Option* slope =
       cmd->add_option("--slope", o->values[library::kSlope],
                       "Ground slope [rad], > 0 uphill (default: the library's base slope)")

@@ -11,9 +11,12 @@
 
 #include "apps/command_runner.hpp"
 #include "apps/library_point.hpp"
+#include "apps/option_checks.hpp"
 #include "apps/plotting.hpp"
 #include "config/config_error.hpp"
 #include "gaits/gait_summary.hpp"
+#include "io/output_folder.hpp"
+#include "io/settings_record.hpp"
 #include "parallel/mpi_executor.hpp"
 #include "parallel/parallel_for.hpp"
 #include "parallel/process_executor.hpp"
@@ -35,18 +38,7 @@ void claimFolder(const LibrarySetup& s) {
   for (int a = 0; a < 3; ++a) axes[library::kAxisNames[a]] = s.grid.axes()[a];
   const nlohmann::ordered_json claim = {
       {"name", s.config.name}, {"ocp", ocpPathFromFolder(s)}, {"axes", axes}};
-  const std::string path = s.out_dir + "/library.json";
-  if (std::filesystem::exists(path)) {
-    std::ifstream in(path);
-    const auto previous = nlohmann::ordered_json::parse(in, nullptr, false);
-    if (previous != claim)
-      throw CommandError(kExitInputError,
-                         fmt::format("{} holds another library (see {}); choose another --out "
-                                     "or remove the folder",
-                                     s.out_dir, path));
-    return;
-  }
-  gaits::writeJsonFile(claim, path);
+  io::claimSettings(s.out_dir + "/library.json", claim);
 }
 
 /// Points finished in earlier runs: solved ones whose folder is still there, and failed ones
@@ -136,13 +128,14 @@ void writeIndexJson(const LibrarySetup& setup, const LibraryIndex& index, const 
 
 void runScheduler(const LibraryOptions& o, const LibrarySetup& setup,
                   std::unique_ptr<parallel::Executor> executor) {
+  const io::ResumableFolder folder(setup.out_dir, {o.config_path, setup.config.ocp_path});
   std::filesystem::create_directories(setup.out_dir + "/points");
   claimFolder(setup);
   LibraryIndex index(setup.out_dir);
   const RunStats stats = solveAll(o, setup, index, *executor);
   executor.reset();  // stops the MPI ranks
   writeIndexJson(setup, index, stats);
-  runPlotScript("library_plots.py", fmt::format("'{}'", setup.out_dir));
+  runPlotScript("library_plots.py", {setup.out_dir});
   fmt::print(
       "library: {} points solved, {} failed in {:.1f} s ({:.3f} points/s on {} workers); "
       "index in {}/index.csv\n",
@@ -152,6 +145,10 @@ void runScheduler(const LibraryOptions& o, const LibrarySetup& setup,
 
 /// @throws config::ConfigError when two points of the grid would share a name.
 library::Grid makeGrid(const library::LibraryConfig& config, const std::string& path) {
+  double points = 1;
+  for (const auto& axis : config.axes) points *= static_cast<double>(axis.size());
+  // A point's grid entry, index row and schedule state: a few hundred bytes, rounded up.
+  requireGridFits(points, 512, path + ": grid");
   try {
     return library::Grid(config.axes);
   } catch (const std::invalid_argument& e) {
@@ -164,10 +161,14 @@ library::Grid makeGrid(const library::LibraryConfig& config, const std::string& 
 void runLibrary(const LibraryOptions& o) {
   library::LibraryConfig config = library::loadLibraryConfig(o.config_path);
   library::Grid grid = makeGrid(config, o.config_path);
-  const LibrarySetup setup{
-      std::move(config), std::move(grid), o.out_dir, {o.config_path, o.rate_hz, o.plots}};
+  const LibrarySetup setup{std::move(config),
+                           std::move(grid),
+                           io::normaliseOutPath(o.out_dir, "--out"),
+                           {o.config_path, o.rate_hz, o.plots}};
   const bool under_mpi = parallel::launchedByMpi();
-  const int jobs = o.jobs > 0 ? o.jobs : (under_mpi ? 1 : parallel::resolveJobs(0));
+  // No more worker processes than points.
+  const int jobs =
+      std::min(o.jobs > 0 ? o.jobs : (under_mpi ? 1 : parallel::resolveJobs(0)), setup.grid.size());
   // The workers are forked first, so they hold neither MPI's state nor its threads.
   auto local = std::make_unique<parallel::ProcessExecutor>(
       jobs,

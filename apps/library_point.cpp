@@ -5,10 +5,10 @@
 #include <filesystem>
 #include <optional>
 
-#include "apps/result_folder.hpp"
 #include "gaits/metrics.hpp"
 #include "gaits/retime.hpp"
 #include "gaits/trajectory_csv.hpp"
+#include "io/output_folder.hpp"
 #include "library/point_problem.hpp"
 #include "ocp/initial_guess.hpp"
 
@@ -79,11 +79,11 @@ void record(const LibrarySetup& setup, const library::PointProblem& pp, const At
     row.message = writeFailedResult(options, pp.model, pp.config, s, dir + ".failed");
     return;
   }
-  writeResultFolder(dir, [&](const std::string& staging) {
+  io::OutputFolder(dir, {}).write([&](const std::string& staging) {
     const auto summary = writeGaitResult(options, pp.model, pp.config, s, nullptr, staging);
     row.cost_of_transport = summary.at("cost_of_transport").get<double>();
   });
-  std::filesystem::remove_all(dir + ".failed");  // a retried point's old failure
+  io::removeIfOurs(dir + ".failed");  // a retried point's old failure
 }
 
 /// A row for the point with nothing known yet.

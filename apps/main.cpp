@@ -1,49 +1,17 @@
 /// @file main.cpp
 /// The `gaitopt` command-line tool. Each subcommand lives in its own <name>_command.cpp and is
-/// registered here; exit codes are listed in command_runner.hpp.
-#include <string>
-
+/// registered in cli_app.cpp; exit codes are listed in command_runner.hpp.
 #include <CLI/CLI.hpp>
 
+#include "apps/cli_app.hpp"
 #include "apps/command_runner.hpp"
-#include "apps/compare_command.hpp"
-#include "apps/impact_map_command.hpp"
-#include "apps/inspect_command.hpp"
-#include "apps/interpolate_command.hpp"
-#include "apps/library_command.hpp"
-#include "apps/optimize_command.hpp"
-#include "apps/poly_command.hpp"
-#include "apps/simulate_command.hpp"
-#include "apps/stability_command.hpp"
 
 namespace {
-
-std::string failureMessage(const CLI::App* app, const CLI::Error& e) {
-  return "error: " + std::string(e.what()) + "\nRun '" + app->get_name() +
-         " --help' for more information.\n";
-}
-
-void configure(CLI::App& app) {
-  app.name("gaitopt");
-  app.set_version_flag("--version", "gaitopt " GAITOPT_VERSION,
-                       "Print the gaitopt version and exit");
-  app.require_subcommand(1);
-  app.failure_message(failureMessage);
-  gaitopt::apps::registerInspectCommand(app);
-  gaitopt::apps::registerPolyCommand(app);
-  gaitopt::apps::registerOptimizeCommand(app);
-  gaitopt::apps::registerImpactMapCommand(app);
-  gaitopt::apps::registerSimulateCommand(app);
-  gaitopt::apps::registerStabilityCommand(app);
-  gaitopt::apps::registerCompareCommand(app);
-  gaitopt::apps::registerLibraryCommand(app);
-  gaitopt::apps::registerInterpolateCommand(app);
-}
 
 /// Parses the command line and runs the chosen subcommand (from its callback).
 int run(int argc, char** argv) {
   CLI::App app{"gaitopt: planar biped gait optimisation toolkit"};
-  configure(app);
+  gaitopt::apps::configureCli(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::RuntimeError& e) {

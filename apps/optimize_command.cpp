@@ -7,33 +7,41 @@
 
 #include "apps/command_runner.hpp"
 #include "apps/gait_result.hpp"
-#include "apps/result_folder.hpp"
+#include "apps/reference_folder.hpp"
+#include "config/config_error.hpp"
 #include "gaits/trajectory_csv.hpp"
+#include "io/output_folder.hpp"
 #include "ocp/gait_solve.hpp"
 #include "ocp/initial_guess.hpp"
 
 namespace gaitopt::apps {
 namespace {
 
-/// A previous result (warm start), or the config's polynomial gait.
+/// A previous result (warm start), or the config's initial guess (`path`: the config file).
 gaits::Trajectory initialGuess(const dynamics::Model& model, const ocp::OcpConfig& config,
-                               const std::string& warm_start) {
-  if (!warm_start.empty()) return gaits::readTrajectoryCsv(warm_start + "/trajectory.csv", model);
+                               const std::string& path, const std::string& warm_start) {
+  if (!warm_start.empty()) {
+    requireGaitOf(warm_start, model);
+    return gaits::readTrajectoryCsv(warm_start + "/trajectory.csv", model);
+  }
   try {
-    return ocp::polynomialGuess(model, config);
+    return ocp::initialGuess(model, config);
   } catch (const std::domain_error& e) {  // say which file holds the unrealisable gait
-    throw std::domain_error(fmt::format("{}: the initial-guess gait cannot be realised: {}",
-                                        config.guess_gait_path, e.what()));
+    throw std::domain_error(
+        fmt::format("{}: the initial-guess gait cannot be realised: {}",
+                    config.guess_gait_path.empty() ? path : config.guess_gait_path, e.what()));
+  } catch (const std::invalid_argument& e) {  // a straight-leg guess for a robot with knees
+    throw config::ConfigError(path, "initial_guess", 0, e.what());
   }
 }
 
 /// A failed solve goes to OUT.failed and never touches a previous good result in OUT.
 /// @throws CommandError with the exit code.
-[[noreturn]] void reportFailure(const OptimizeOptions& o, const dynamics::Model& model,
-                                const ocp::OcpConfig& config, const ocp::GaitSolution& solution) {
-  const std::string message =
-      writeFailedResult({o.config_path, o.output.rate_hz, o.output.plots}, model, config, solution,
-                        o.output.out_dir + ".failed");
+[[noreturn]] void reportFailure(const OptimizeOptions& o, const std::string& out_dir,
+                                const dynamics::Model& model, const ocp::OcpConfig& config,
+                                const ocp::GaitSolution& solution) {
+  const std::string message = writeFailedResult({o.config_path, o.output.rate_hz, o.output.plots},
+                                                model, config, solution, out_dir + ".failed");
   const bool infeasible = solution.result.status == "Infeasible_Problem_Detected";
   throw CommandError(infeasible ? kExitInfeasible : kExitNotConverged, message);
 }
@@ -41,6 +49,7 @@ gaits::Trajectory initialGuess(const dynamics::Model& model, const ocp::OcpConfi
 }  // namespace
 
 void runOptimize(const OptimizeOptions& o) {
+  const io::OutputFolder out(o.output.out_dir, {o.config_path, o.warm_start});
   ocp::OcpConfig config = ocp::loadOcpConfig(o.config_path);
   const dynamics::Model model = ocp::problemModel(config);  // the robot on the config's slope
   ocp::requireReachable(model, config, o.config_path);
@@ -48,7 +57,8 @@ void runOptimize(const OptimizeOptions& o) {
   config.solver.progress = !o.quiet;
   if (!o.warm_start.empty()) config.solver = ocp::warmStarted(config.solver);
   const ocp::GaitSolution solution = ocp::solveGait(
-      model, config, initialGuess(model, config, o.warm_start), [&](const ocp::MeshRound& m) {
+      model, config, initialGuess(model, config, o.config_path, o.warm_start),
+      [&](const ocp::MeshRound& m) {
         if (!o.quiet)
           fmt::print(
               "optimize: mesh {} segments, {} after {} iterations, cost {:.6g}, max "
@@ -60,14 +70,14 @@ void runOptimize(const OptimizeOptions& o) {
       "optimize: {} after {} iterations, cost {:.6g}, max violation {:.2e}, {:.3f} s "
       "({:.3f} s in our callbacks)\n",
       r.status, r.iterations, r.cost, r.max_violation, r.wall_time_s, r.callback_time_s);
-  if (!r.success) reportFailure(o, model, config, solution);
-  writeResultFolder(o.output.out_dir, [&](const std::string& dir) {
+  if (!r.success) reportFailure(o, out.path(), model, config, solution);
+  out.write([&](const std::string& dir) {
     writeGaitResult({o.config_path, o.output.rate_hz, o.output.plots}, model, config, solution,
                     nullptr, dir);
   });
   // A failure of an earlier run would sit next to this result and contradict it.
-  std::filesystem::remove_all(o.output.out_dir + ".failed");
-  fmt::print("optimize: wrote {}/trajectory.csv, summary.json and pictures\n", o.output.out_dir);
+  io::removeIfOurs(out.path() + ".failed");
+  fmt::print("optimize: wrote {}/trajectory.csv, summary.json and pictures\n", out.path());
 }
 
 void registerOptimizeCommand(CLI::App& app) {

@@ -3,8 +3,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <system_error>
 
 #include <fmt/format.h>
+
+#include "io/spawn.hpp"
 
 namespace gaitopt::apps {
 namespace {
@@ -17,20 +20,26 @@ std::string scriptDir() {
 
 }  // namespace
 
-bool runPlotScript(const std::string& script, const std::string& args) {
+bool runPlotScript(const std::string& script, const std::vector<std::string>& args) {
   std::fflush(stdout);  // keep our progress lines before the script's output
   const std::string python = "/usr/bin/python3";
-  if (!std::filesystem::exists(python) ||
-      std::system(fmt::format("{} -c 'import matplotlib' 2>/dev/null", python).c_str()) != 0) {
-    fmt::print(stderr,
-               "warning: no pictures: {} with matplotlib is missing "
-               "(apt-get install python3-matplotlib)\n",
-               python);
-    return false;
-  }
-  const std::string cmd = fmt::format("{} '{}/{}' {}", python, scriptDir(), script, args);
-  if (std::system(cmd.c_str()) != 0) {
-    fmt::print(stderr, "warning: plotting failed: {}\n", cmd);
+  std::vector<std::string> argv = {python, scriptDir() + "/" + script};
+  argv.insert(argv.end(), args.begin(), args.end());
+  try {
+    if (!std::filesystem::exists(python) ||
+        io::runProgram({python, "-c", "import matplotlib"}, true) != 0) {
+      fmt::print(stderr,
+                 "warning: no pictures: {} with matplotlib is missing "
+                 "(apt-get install python3-matplotlib)\n",
+                 python);
+      return false;
+    }
+    if (const int status = io::runProgram(argv); status != 0) {
+      fmt::print(stderr, "warning: plotting failed: {} exited {}\n", script, status);
+      return false;
+    }
+  } catch (const std::system_error& e) {  // no process could be started (a process limit)
+    fmt::print(stderr, "warning: no pictures: {}\n", e.what());
     return false;
   }
   return true;

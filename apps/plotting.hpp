@@ -1,13 +1,15 @@
 #pragma once
 /// @file plotting.hpp
 /// Pictures are drawn by scripts/plots/*.py with Debian's matplotlib. A missing plotting
-/// package is a warning, never a failed run.
+/// package is a warning, never a failed run. The script is started from an argument vector
+/// (io/spawn.hpp): no shell sees the folder names.
 #include <string>
+#include <vector>
 
 namespace gaitopt::apps {
 
-/// Runs `/usr/bin/python3 scripts/plots/<script> <args>`; prints a warning and returns false
+/// Runs `/usr/bin/python3 scripts/plots/<script> <args...>`; prints a warning and returns false
 /// when python3 or matplotlib is missing or the script fails.
-bool runPlotScript(const std::string& script, const std::string& args);
+bool runPlotScript(const std::string& script, const std::vector<std::string>& args);
 
 }  // namespace gaitopt::apps

@@ -8,12 +8,12 @@
 
 #include "apps/command_runner.hpp"
 #include "apps/gait_result.hpp"
-#include "apps/result_folder.hpp"
 #include "dynamics/model_variation.hpp"
 #include "dynamics/robot_config.hpp"
 #include "gaits/gait_summary.hpp"
 #include "gaits/hip_plan_search.hpp"
 #include "gaits/polynomial_gait.hpp"
+#include "io/output_folder.hpp"
 
 namespace gaitopt::apps {
 namespace {
@@ -55,6 +55,7 @@ gaits::HipPlanSearch designHipPlan(const dynamics::Model& model, const gaits::Ga
 
 void runPoly(const PolyOptions& options) {
   const auto start = std::chrono::steady_clock::now();
+  const io::OutputFolder out(options.output.out_dir, {options.robot_path, options.gait_path});
   const gaits::GaitParams params = gaits::loadGait(options.gait_path);
   // The gait's ground slope rotates gravity (dynamics/model.hpp).
   const dynamics::Model model =
@@ -76,7 +77,7 @@ void runPoly(const PolyOptions& options) {
 
   auto summary = gaits::gaitSummary(traj, model, {options.gait_path, "designed", 0, elapsed, 0});
   summary.update(gaitJson(params, search));
-  writeResultFolder(options.output.out_dir, [&](const std::string& dir) {
+  out.write([&](const std::string& dir) {
     writeGaitFiles(dir, traj, model, summary, options.output.plots);
   });
   fmt::print(
@@ -85,8 +86,8 @@ void runPoly(const PolyOptions& options) {
       summary["energy_J"].get<double>(), summary["cost_of_transport"].get<double>(),
       summary["min_normal_force"].get<double>(), summary["max_friction_ratio"].get<double>(),
       summary["min_zmp_margin"].get<double>());
-  fmt::print("poly: wrote {}/trajectory.csv ({} samples), summary.json and pictures\n",
-             options.output.out_dir, traj.knots().size());
+  fmt::print("poly: wrote {}/trajectory.csv ({} samples), summary.json and pictures\n", out.path(),
+             traj.knots().size());
 }
 
 void registerPolyCommand(CLI::App& app) {

@@ -16,6 +16,10 @@ struct ReferenceFolder {
   gaits::Trajectory step;
 };
 
+/// @throws config::ConfigError unless the result folder `dir` holds a usable gait of `model`:
+/// no FAILED.txt, not "converged": false, and summary.json's robot (when recorded) is model's.
+void requireGaitOf(const std::string& dir, const dynamics::Model& model);
+
 /// Reads DIR/trajectory.csv for the robot `robot_path`, or, when that is empty, for
 /// configs/robots/<summary.json's "robot">.yaml under the working directory. The model carries
 /// summary.json's "slope_rad" (0 when absent), so a simulation walks the reference's slope.

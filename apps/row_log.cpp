@@ -1,6 +1,7 @@
 #include "apps/row_log.hpp"
 
-#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -48,32 +49,43 @@ std::string joinRow(const Row& row) {
   return line;
 }
 
+/// The whole file ("" when it does not exist).
+std::string readAll(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 }  // namespace
 
-RowLog::RowLog(std::string path, Row header) : path_(std::move(path)), header_(std::move(header)) {
+RowLog::RowLog(std::string path, Row header)
+    : path_(std::move(path)), header_(std::move(header)), out_(path_) {
   const std::string header_line = joinRow(header_);
-  bool torn = false;
-  if (std::filesystem::exists(path_)) {
-    std::ifstream in(path_);
-    std::string line;
-    if (!in || !std::getline(in, line) || line != header_line)
-      throw config::ConfigError(path_, "", 1,
-                                fmt::format("not a file of this kind and version (expected "
-                                            "the header '{}'; remove it to start over)",
-                                            header_line));
-    while (std::getline(in, line)) {
-      torn = in.eof();  // a last line without its newline was cut by a kill
-      Row row = splitRow(line);
-      if (!torn && row.size() == header_.size()) rows_[row.front()] = std::move(row);
-    }
+  const std::string text = readAll(path_);
+  if (text.empty()) {
+    out_.append(header_line + '\n');
+    return;
   }
-  // Append only: finished rows are never rewritten, so no kill can lose them.
-  const bool fresh = !std::filesystem::exists(path_);
-  out_.open(path_, std::ios::app);
-  if (!out_) throw std::runtime_error(fmt::format("{}: cannot write", path_));
-  if (fresh) out_ << header_line << '\n';
-  if (torn) out_ << '\n';  // the torn fragment stays a line of its own, ignored on reading
-  out_.flush();
+  // A last line without its newline was cut by a kill or a full disk: it is dropped from the
+  // file, so its point is redone and no reader (the plot scripts) ever sees a short row.
+  const std::size_t complete = text.rfind('\n') + 1;  // 0 when no line is complete
+  if (complete < text.size()) out_.truncate(static_cast<long>(complete));
+  if (complete == 0) {  // not even the header was whole
+    out_.append(header_line + '\n');
+    return;
+  }
+  std::istringstream in(text.substr(0, complete));
+  std::string line;
+  if (!std::getline(in, line) || line != header_line)
+    throw config::ConfigError(path_, "", 1,
+                              fmt::format("not a file of this kind and version (expected "
+                                          "the header '{}'; remove it to start over)",
+                                          header_line));
+  while (std::getline(in, line)) {
+    Row row = splitRow(line);
+    if (row.size() == header_.size()) rows_[row.front()] = std::move(row);
+  }
 }
 
 void RowLog::append(const Row& row) {
@@ -81,8 +93,8 @@ void RowLog::append(const Row& row) {
     throw std::logic_error(fmt::format("{}: a row of {} fields, the header has {}", path_,
                                        row.size(), header_.size()));
   const std::lock_guard lock(mutex_);
+  out_.append(joinRow(row) + '\n');  // one write(2): on disk at once, resumable
   rows_[row.front()] = row;
-  out_ << joinRow(row) << std::endl;  // flushed: resumable
 }
 
 }  // namespace gaitopt::apps

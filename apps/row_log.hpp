@@ -3,12 +3,14 @@
 /// The on-disk record of a resumable run (stability sweeps, gait libraries): a CSV with one row
 /// per finished point, appended and flushed as soon as the point is done. A killed run keeps
 /// every finished row; a rerun reads them back (a torn last line is ignored, so its point is
-/// redone). Rows are keyed by their first field; a later row replaces an earlier one.
-#include <fstream>
+/// redone, and the torn bytes are cut from the file). Rows are keyed by their first field; a later
+/// row replaces an earlier one.
 #include <map>
 #include <mutex>
 #include <string>
 #include <vector>
+
+#include "io/checked_write.hpp"
 
 namespace gaitopt::apps {
 
@@ -17,13 +19,14 @@ using Row = std::vector<std::string>;
 class RowLog {
  public:
   /// Opens (creating with `header`, or reading the rows of) `path`.
-  /// @throws config::ConfigError when it has another header (bad input), std::runtime_error
+  /// @throws config::ConfigError when it has another header (bad input), io::WriteError
   ///         when it cannot be written.
   RowLog(std::string path, Row header);
 
   /// The finished rows so far, by their first field.
   const std::map<std::string, Row>& rows() const { return rows_; }
-  /// Appends and flushes a row of header().size() fields; thread-safe.
+  /// Appends a row of header().size() fields with one checked write; thread-safe.
+  /// @throws io::WriteError (a full disk): the row is then not counted as finished.
   void append(const Row& row);
   const std::string& path() const { return path_; }
 
@@ -31,7 +34,7 @@ class RowLog {
   std::string path_;
   Row header_;
   std::map<std::string, Row> rows_;
-  std::ofstream out_;
+  io::AppendFile out_;
   std::mutex mutex_;
 };
 

@@ -2,6 +2,9 @@
 
 #include <filesystem>
 
+#include <fmt/format.h>
+
+#include "config/config_error.hpp"
 #include "sim/ground_config.hpp"
 
 namespace gaitopt::apps {
@@ -15,7 +18,7 @@ void addScenarioOptions(CLI::App* cmd, ScenarioOptions& o) {
                   "Robot YAML (default: configs/robots/<summary robot>.yaml)")
       ->option_text("FILE");
   cmd->add_option("--controller", o.controller, "Tracking controller")
-      ->check(CLI::IsMember({"computed_torque", "sliding_mode"}))
+      ->check(CLI::IsMember({"computed_torque", "sliding_mode", "hzd"}))
       ->capture_default_str();
   cmd->add_option("--ground", o.ground,
                   "rigid, impedance, lcp (configs/grounds/NAME.yaml) or a ground YAML")
@@ -45,10 +48,19 @@ void addScenarioOptions(CLI::App* cmd, ScenarioOptions& o) {
       ->capture_default_str();
 }
 
+namespace {
+bool isBuiltinGround(const std::string& ground) {
+  return ground == "rigid" || ground == "impedance" || ground == "lcp";
+}
+}  // namespace
+
 std::string groundPath(const std::string& ground) {
-  for (const char* name : {"rigid", "impedance", "lcp"})
-    if (ground == name) return std::string(GAITOPT_SOURCE_DIR "/configs/grounds/") + name + ".yaml";
+  if (isBuiltinGround(ground)) return std::string(GAITOPT_SOURCE_DIR "/") + groundRecord(ground);
   return ground;
+}
+
+std::string groundRecord(const std::string& ground) {
+  return isBuiltinGround(ground) ? "configs/grounds/" + ground + ".yaml" : ground;
 }
 
 sim::Scenario makeScenario(const ScenarioOptions& o) {
@@ -64,12 +76,26 @@ sim::Scenario makeScenario(const ScenarioOptions& o) {
   return s;
 }
 
+std::vector<std::string> scenarioInputs(const ScenarioOptions& o) {
+  return {o.reference_dir, o.robot_path, groundPath(o.ground)};
+}
+
+void requireControllerFits(const ScenarioOptions& o, const dynamics::Model& model) {
+  if (model.joints().front().actuated) return;
+  throw config::ConfigError(
+      "--controller", o.controller, 0,
+      fmt::format("the {} controller imposes all {} joint accelerations through the joint "
+                  "torques, so it needs an actuated stance ankle; robot '{}' has a passive one "
+                  "(walking it needs an underactuated controller, which gaitopt does not have)",
+                  o.controller, model.nLinks(), model.name()));
+}
+
 nlohmann::ordered_json scenarioJson(const ScenarioOptions& o, const sim::Scenario& s) {
   return {{"reference", o.reference_dir},
           {"controller", s.controller},
           {"gain_scale", s.gain_scale},
           {"ground", sim::groundName(s.ground)},
-          {"ground_file", groundPath(o.ground)},
+          {"ground_file", groundRecord(o.ground)},
           {"uncertainty_case", o.uncertainty_case},
           {"uncertainty_on", o.uncertainty_on},
           {"parameter_errors",

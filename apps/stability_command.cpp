@@ -15,6 +15,8 @@
 #include "apps/sweep_file.hpp"
 #include "config/config_error.hpp"
 #include "gaits/gait_summary.hpp"
+#include "io/output_folder.hpp"
+#include "io/settings_record.hpp"
 
 namespace gaitopt::apps {
 namespace {
@@ -121,16 +123,37 @@ void printInterval(const std::string& name, const nlohmann::ordered_json& j) {
                  j[side]["failure"].get<std::string>());
 }
 
+/// What defines a sweep folder's rows: a rerun under other settings would mix two experiments.
+nlohmann::ordered_json sweepSettings(const StabilityOptions& o, const ReferenceFolder& ref,
+                                     const sim::Scenario& base) {
+  const ScenarioOptions& s = o.scenario;
+  return {{"robot", ref.model.name()},
+          {"robot_file_fnv1a", io::fileFingerprint(ref.robot_path)},
+          {"reference_trajectory_fnv1a", io::fileFingerprint(ref.dir + "/trajectory.csv")},
+          {"controller", s.controller},
+          {"gain_scale", s.gain_scale},
+          {"ground_file_fnv1a", io::fileFingerprint(groundPath(s.ground))},
+          {"uncertainty_case", s.uncertainty_case},
+          {"uncertainty_on", s.uncertainty_on},
+          {"friction", s.friction},
+          {"push_impulse_Ns", s.push},
+          {"steps", base.steps},
+          {"poincare", o.poincare}};
+}
+
 }  // namespace
 
 void runStability(const StabilityOptions& o) {
   const ReferenceFolder ref = loadReferenceFolder(o.scenario.reference_dir, o.scenario.robot_path);
+  requireControllerFits(o.scenario, ref.model);
   const sim::Reference reference(ref.step);
   sim::Scenario base = makeScenario(o.scenario);
   base.poincare = o.poincare;
-  std::filesystem::create_directories(o.out_dir);
+  const io::ResumableFolder folder(o.out_dir, scenarioInputs(o.scenario));
+  const std::string& out_dir = folder.path();
+  io::claimSettings(out_dir + "/settings.json", sweepSettings(o, ref, base));
   std::vector<Sweep> sweeps;
-  for (const auto& text : o.sweeps) sweeps.push_back(parseSweep(text, o.out_dir, base));
+  for (const auto& text : o.sweeps) sweeps.push_back(parseSweep(text, out_dir, base));
   std::vector<Point> todo;
   std::size_t done_before = 0;
   for (auto& s : sweeps)
@@ -140,7 +163,9 @@ void runStability(const StabilityOptions& o) {
       else
         todo.push_back({&s, v});
     }
-  const int jobs = parallel::resolveJobs(o.jobs);
+  // No more workers than points: a sweep of 2 points starts 2 threads, not one per core.
+  const int jobs = static_cast<int>(
+      std::min<std::size_t>(parallel::resolveJobs(o.jobs), std::max<std::size_t>(todo.size(), 1)));
   fmt::print("stability: {} points to walk ({} done before) with {} job(s)\n", todo.size(),
              done_before, jobs);
   std::fflush(stdout);
@@ -159,9 +184,9 @@ void runStability(const StabilityOptions& o) {
     summary["sweeps"][s.parameter->name] = walkingInterval(s, nominal);
     printInterval(s.parameter->name, summary["sweeps"][s.parameter->name]);
   }
-  gaits::writeJsonFile(summary, o.out_dir + "/summary.json");
-  if (o.plots) runPlotScript("stability_plots.py", fmt::format("'{}'", o.out_dir));
-  fmt::print("stability: wrote {}/summary.json and sweep_*.csv\n", o.out_dir);
+  gaits::writeJsonFile(summary, out_dir + "/summary.json");
+  if (o.plots) runPlotScript("stability_plots.py", {out_dir});
+  fmt::print("stability: wrote {}/summary.json and sweep_*.csv\n", out_dir);
 }
 
 void registerStabilityCommand(CLI::App& app) {

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <sstream>
 #include <string_view>
 #include <system_error>
 
@@ -13,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "config/config_error.hpp"
+#include "io/strict_json.hpp"
 
 namespace gaitopt::apps {
 namespace {
@@ -41,24 +43,15 @@ std::string describe(const json& value) {
   return fmt::format("{} {}", value.type_name(), text);
 }
 
-/// nlohmann messages start with "[json.exception.parse_error.101] "; keep what follows.
-std::string withoutExceptionTag(const std::string& message) {
-  const auto end = message.find("] ");
-  return end == std::string::npos ? message : message.substr(end + 2);
-}
-
 json parseFile(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw ConfigError(path, "", 0, "state file not found or not a regular file");
   std::ifstream in(path);
   if (!in) throw ConfigError(path, "", 0, "cannot open the state file");
-  try {
-    return json::parse(in);
-  } catch (const json::exception& e) {
-    throw ConfigError(path, "", 0,
-                      fmt::format("not valid JSON ({})", withoutExceptionTag(e.what())));
-  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return io::parseStrictJson<json>(text.str(), path);
 }
 
 void checkKeys(const std::string& path, const json& doc) {

@@ -44,15 +44,13 @@ SweepFile::SweepFile(std::string path) : log_(std::move(path), kHeader) {
 }
 
 void SweepFile::append(const SweepRow& row) {
-  {
-    const std::lock_guard lock(mutex_);
-    rows_[key(row.value)] = row;
-  }
   log_.append({key(row.value), std::to_string(row.steps_completed),
                std::to_string(row.steps_requested), row.fell ? "1" : "0", row.failure,
                number(row.max_tracking_error),
                row.max_multiplier < 0 ? std::string() : number(row.max_multiplier),
                number(row.mean_advance), number(row.wall_time_s)});
+  const std::lock_guard lock(mutex_);  // counted only once it is on disk
+  rows_[key(row.value)] = row;
 }
 
 }  // namespace gaitopt::apps

@@ -1,28 +1,29 @@
 #include "apps/walk_record.hpp"
 
 #include <cmath>
-#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
 #include "dynamics/kinematics.hpp"
+#include "io/checked_write.hpp"
 
 namespace gaitopt::apps {
 namespace {
 
-std::ofstream openCsv(const std::string& path) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error(fmt::format("{}: cannot write", path));
+/// The CSV is built in memory and written by one checked write (io/checked_write.hpp).
+std::ostringstream openCsv() {
+  std::ostringstream out;
   out.precision(10);
   return out;
 }
 
-void writeNames(std::ofstream& out, const char* prefix, int first, int count) {
+void writeNames(std::ostringstream& out, const char* prefix, int first, int count) {
   for (int i = 0; i < count; ++i) out << ',' << prefix << first + i;
 }
 
-void writeValues(std::ofstream& out, const VecD& v) {
+void writeValues(std::ostringstream& out, const VecD& v) {
   for (Eigen::Index i = 0; i < v.size(); ++i) out << ',' << v(i);
 }
 
@@ -59,7 +60,7 @@ void WalkRecorder::finish() {
 }
 
 void WalkRecorder::writeWalkCsv(const std::string& path) const {
-  std::ofstream out = openCsv(path);
+  std::ostringstream out = openCsv();
   const int n = plant_->nLinks();
   out << "t,step,phase,stance_x,stance_y";
   writeNames(out, "theta", 1, n);
@@ -75,28 +76,29 @@ void WalkRecorder::writeWalkCsv(const std::string& path) const {
     out << ',' << s.force_stance(0) << ',' << s.force_stance(1) << ',' << s.force_swing(0) << ','
         << s.force_swing(1) << ',' << hip(0) << ',' << hip(1) << '\n';
   }
+  io::writeFile(path, out.str());
 }
 
 void WalkRecorder::writeStickCsv(const std::string& path, double frame_interval) const {
-  std::ofstream out = openCsv(path);
-  out << "t,step,link,x0,y0,x1,y1\n";
+  std::ostringstream out = openCsv();
+  out << "t,step,link,x0,y0,x1,y1,phase\n";
   double next = -1;
   for (const auto& s : samples_) {
     if (s.t < next && &s != &samples_.back()) continue;
     next = s.t + frame_interval;
     const Vec2d base(s.stance_x, s.stance_y);
     for (int i = 0; i < plant_->nLinks(); ++i) {
-      const Vec2d p0 = base + dynamics::pointPosition<double>(plant_->jointWeights(i), s.theta);
-      const Vec2d u(std::sin(s.theta(i)), std::cos(s.theta(i)));  // conventions.hpp
-      const Vec2d p1 = p0 + plant_->link(i).length * u;
-      out << s.t << ',' << s.step + 1 << ',' << i + 1 << ',' << p0(0) << ',' << p0(1) << ','
-          << p1(0) << ',' << p1(1) << '\n';
+      const auto [p0, p1] = dynamics::linkEnds(*plant_, s.theta, i);
+      const Vec2d a = base + p0, b = base + p1;
+      out << s.t << ',' << s.step + 1 << ',' << i + 1 << ',' << a(0) << ',' << a(1) << ',' << b(0)
+          << ',' << b(1) << ',' << gaits::toString(s.phase) << '\n';
     }
   }
+  io::writeFile(path, out.str());
 }
 
 void writeStepsCsv(const sim::WalkResult& walk, const std::string& path) {
-  std::ofstream out = openCsv(path);
+  std::ostringstream out = openCsv();
   out << "step,ok,impact,ssp_duration,dsp_duration,advance,max_tracking_error,failure\n";
   for (std::size_t k = 0; k < walk.steps.size(); ++k) {
     const auto& s = walk.steps[k];
@@ -104,6 +106,7 @@ void writeStepsCsv(const sim::WalkResult& walk, const std::string& path) {
         << s.dsp_duration << ',' << s.advance << ',' << s.max_tracking_error << ','
         << csvField(s.failure) << '\n';
   }
+  io::writeFile(path, out.str());
 }
 
 }  // namespace gaitopt::apps

@@ -27,7 +27,7 @@ class WalkRecorder {
   /// walk.csv: t, step, phase, stance tip, angles and reference, torques and reference, ground
   /// forces, hip in the world frame.
   void writeWalkCsv(const std::string& path) const;
-  /// stick.csv: t, step, link, x0, y0, x1, y1 every `frame_interval` seconds [m].
+  /// stick.csv: t, step, link, x0, y0, x1, y1 [m], phase (SSP/DSP) every `frame_interval` seconds.
   void writeStickCsv(const std::string& path, double frame_interval) const;
 
  private:

@@ -1,9 +1,11 @@
 /// @file ocp_bench.cpp
-/// Solve times from the polynomial guess, exact derivatives versus Ipopt's limited-memory
+/// Solve times from the config's initial guess, exact derivatives versus Ipopt's limited-memory
 /// Hessian, with our Jacobian or with Ipopt's finite differences of the constraints: the
 /// default five-link problem (configs/ocp/mu2004_walk.yaml: SSP 30 + DSP 6 Hermite-Simpson
 /// segments, double impact) and the RABBIT benchmark of Kelly 2017
-/// (configs/ocp/rabbit_kelly2017.yaml) at 6, 15 and 25 segments. Each case is solved `repeats`
+/// (configs/ocp/rabbit_kelly2017.yaml) at 6, 15 and 25 segments, and the straight-leg robots
+/// from their straight-leg guess (configs/ocp/compass_gait_walk.yaml, three_link_walk.yaml and
+/// the passive slope walk compass_gait_passive.yaml, 25 segments each). Each case is solved `repeats`
 /// times; the table gives medians and the ratio of each median wall time to the exact-Hessian
 /// one of the same problem.
 /// Usage: ocp_bench [repeats]
@@ -14,7 +16,6 @@
 #include <fmt/format.h>
 
 #include "bench/ocp_bench_common.hpp"
-#include "dynamics/robot_config.hpp"
 #include "ocp/gait_problem.hpp"
 #include "ocp/initial_guess.hpp"
 #include "ocp/ipopt_adapter.hpp"
@@ -25,8 +26,8 @@ using namespace gaitopt;
 
 /// One table row per derivative mode for `config` with the SSP cut into `segments`.
 void benchmark(const std::string& label, ocp::OcpConfig config, int segments, int repeats) {
-  const auto model = dynamics::loadRobot(config.robot_path);
-  const gaits::Trajectory guess = ocp::polynomialGuess(model, config);
+  const auto model = ocp::problemModel(config);
+  const gaits::Trajectory guess = ocp::initialGuess(model, config);
   config.phases.front().segments = segments;
   double exact_wall = 0;
   for (const auto& [hessian, jacobian] : bench::kDerivativeModes) {
@@ -58,5 +59,9 @@ int main(int argc, char** argv) {
   benchmark("five-link SSP+DSP (mu2004_walk)", five_link, five_link.phases.front().segments,
             repeats);
   for (int segments : {6, 15, 25}) benchmark("RABBIT (Kelly 2017)", rabbit, segments, repeats);
+  for (const char* name : {"compass_gait_walk", "three_link_walk", "compass_gait_passive"}) {
+    const auto config = ocp::loadOcpConfig(dir + name + ".yaml");
+    benchmark(name, config, config.phases.front().segments, repeats);
+  }
   return 0;
 }

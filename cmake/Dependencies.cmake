@@ -22,3 +22,18 @@ if(GAITOPT_MPI)
     set(GAITOPT_MPI OFF)
   endif()
 endif()
+if(GAITOPT_PYTHON)
+  # Debian's interpreter, not a pyenv python3 earlier on PATH: the module must load in the python
+  # that has Debian's numpy and pytest.
+  if(NOT PYTHON_EXECUTABLE AND EXISTS /usr/bin/python3)
+    set(PYTHON_EXECUTABLE /usr/bin/python3)
+  endif()
+  find_package(pybind11 CONFIG)
+  if(pybind11_FOUND)
+    # The module links the static libraries: they must be position independent.
+    set(CMAKE_POSITION_INDEPENDENT_CODE ON)
+  else()
+    message(WARNING "pybind11 not found (apt-get install pybind11-dev python3-dev): no Python module")
+    set(GAITOPT_PYTHON OFF)
+  endif()
+endif()

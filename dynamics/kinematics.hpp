@@ -5,6 +5,7 @@
 /// hipWeights(), comWeights(i), totalComWeights()): position = sum_j w_j u_j with
 /// u_j = (sin theta_j, cos theta_j). Templated on the scalar type for automatic differentiation.
 #include <cmath>
+#include <utility>
 
 #include "dynamics/model.hpp"
 
@@ -88,6 +89,14 @@ Vec2<S> hip(const Model& model, const Vec<S>& theta) {
 template <class S>
 Vec2<S> centreOfMass(const Model& model, const Vec<S>& theta) {
   return pointPosition(model.totalComWeights(), theta);
+}
+
+/// Proximal joint and distal end of link i relative to B [m]: the link's segment of a stick
+/// figure (the distal end is the joint plus length * u_i, Mu 2.1).
+inline std::pair<Vec2d, Vec2d> linkEnds(const Model& model, const VecD& theta, int i) {
+  const Vec2d p0 = pointPosition<double>(model.jointWeights(i), theta);
+  const Vec2d u(std::sin(theta(i)), std::cos(theta(i)));  // conventions.hpp
+  return {p0, p0 + model.link(i).length * u};
 }
 
 }  // namespace gaitopt::dynamics

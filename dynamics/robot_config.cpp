@@ -14,9 +14,11 @@ Link readLink(const YamlReader& r) {
   r.allowOnly({"name", "mass", "inertia", "length", "com", "continues"});
   Link link;
   link.name = r.string("name");
-  link.mass = r.number("mass", config::positive("[kg]"));
-  link.inertia = r.number("inertia", config::positive("[kg m^2] (about the link CoM)"));
-  link.length = r.number("length", config::positive("[m]"));
+  // Plausible ranges (a gram to ten tonnes, a millimetre to 100 m): beyond them the dynamics
+  // overflow to NaN (mass 1e308) long before any result means anything.
+  link.mass = r.number("mass", config::inRange(1e-3, 1e4, "[kg]"));
+  link.inertia = r.number("inertia", config::inRange(1e-9, 1e6, "[kg m^2] (about the link CoM)"));
+  link.length = r.number("length", config::inRange(1e-3, 100.0, "[m]"));
   link.com = r.number("com", config::inRange(0.0, link.length, "[m] (within the link length)"));
   link.continues = r.boolean("continues");
   return link;

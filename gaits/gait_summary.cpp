@@ -6,6 +6,7 @@
 
 #include "gaits/consistency.hpp"
 #include "gaits/metrics.hpp"
+#include "io/checked_write.hpp"
 
 namespace gaitopt::gaits {
 namespace {
@@ -72,13 +73,7 @@ ordered_json gaitSummary(const Trajectory& traj, const dynamics::Model& model,
 }
 
 void writeJsonFile(const nlohmann::ordered_json& json, const std::string& path) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << json.dump(2) << '\n';
-    if (!out) throw std::runtime_error("cannot write " + tmp);
-  }
-  std::filesystem::rename(tmp, path);
+  io::writeFileAtomically(path, json.dump(2) + '\n');
 }
 
 }  // namespace gaitopt::gaits

@@ -17,6 +17,7 @@
 #include "dynamics/joint_coordinates.hpp"
 #include "dynamics/kinematics.hpp"
 #include "gaits/metrics.hpp"
+#include "io/checked_write.hpp"
 
 namespace gaitopt::gaits {
 namespace {
@@ -94,18 +95,7 @@ void appendRow(fmt::memory_buffer& buf, const Knot& knot, const dynamics::Model&
 
 /// Writes to path.tmp and renames, so a reader never sees a half-written file.
 void writeAtomically(const std::string& path, const fmt::memory_buffer& buf) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out.write(buf.data(), static_cast<std::streamsize>(buf.size()));
-    out.close();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(tmp, ignored);
-      throw std::runtime_error(fmt::format("cannot write trajectory file '{}'", tmp));
-    }
-  }
-  std::filesystem::rename(tmp, path);  // throws std::filesystem::filesystem_error
+  io::writeFileAtomically(path, std::string_view(buf.data(), buf.size()));
 }
 
 // ---------------------------------------------------------------------------------------------

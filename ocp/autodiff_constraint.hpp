@@ -3,6 +3,8 @@
 /// A constraint set g(y) on a few variables y = x[indices] (link constraints: impact,
 /// relabelling, boundary conditions), differentiated by autodiff.hpp.
 #include <algorithm>
+#include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -60,5 +62,21 @@ class AutoDiffConstraint : public ConstraintSet {
   Fn fn_;
   Eigen::VectorXd lower_, upper_;
 };
+
+/// `a` followed by `b`: the stacked variables of a link constraint.
+inline std::vector<int> concat(std::vector<int> a, const std::vector<int>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+/// Adds a link constraint lo <= fn(x[idx]) <= hi (rows rows, phase tag kLinkPhase); the functor
+/// is affine in all but the first `nonlinear` of its variables.
+template <class Fn>
+void addLink(Nlp& nlp, const std::string& name, int rows, std::vector<int> idx, int nonlinear,
+             Fn fn, double lo = 0.0, double hi = 0.0) {
+  nlp.addConstraint(std::make_unique<AutoDiffConstraint<Fn>>(
+      name, rows, std::move(idx), nonlinear, fn, Eigen::VectorXd::Constant(rows, lo),
+      Eigen::VectorXd::Constant(rows, hi)));
+}
 
 }  // namespace gaitopt::ocp

@@ -8,6 +8,7 @@
 
 #include "dynamics/floating_base.hpp"
 #include "dynamics/kinematics.hpp"
+#include "ocp/point_layout.hpp"
 
 namespace gaitopt::ocp {
 
@@ -32,27 +33,27 @@ struct StrikeVelocity {
   bool vertical_only = true;
   template <class S>
   dynamics::VecX<S> operator()(const dynamics::VecX<S>& y) const {
-    const int n = model->nLinks();
-    const Vec<S> theta = y.head(n), dtheta = y.tail(n);
-    const Vec2<S> v = dynamics::pointVelocity<S>(model->tipWeights(), theta, dtheta);
+    const PointLayout strike = PointLayout::biped(model->nLinks(), false, false);
+    const Vec2<S> v = dynamics::pointVelocity<S>(model->tipWeights(), Vec<S>(strike.q.of(y)),
+                                                 Vec<S>(strike.v.of(y)));
     if (vertical_only) return dynamics::VecX<S>::Constant(1, v(1));
     return v;
   }
 };
 
-/// y = (theta_end (n), dtheta- (n), qdot+ (n+2), P_E (2) [, P_B (2)]): impact residual.
+/// y = (strike state (theta_end, dtheta-), impact variables (ImpactLayout)): impact residual.
 struct RigidImpact {
   const dynamics::Model* model;
-  bool both_tips;
+  ImpactLayout impact;  ///< offset unused: the variables follow the strike state in y
   template <class S>
   dynamics::VecX<S> operator()(const dynamics::VecX<S>& y) const {
-    const int n = model->nLinks();
-    const Vec<S> theta = y.head(n), dtheta = y.segment(n, n);
-    const dynamics::VecX<S> qdot_plus = y.segment(2 * n, n + 2);
-    const Vec2<S> p_e = y.segment(3 * n + 2, 2);
-    const Vec2<S> p_b = both_tips ? Vec2<S>(y.segment(3 * n + 4, 2)) : Vec2<S>::Zero();
-    return dynamics::impactResidual<S>(*model, theta, dtheta, qdot_plus, p_e,
-                                       both_tips ? &p_b : nullptr);
+    const PointLayout strike = PointLayout::biped(model->nLinks(), false, false);
+    const dynamics::VecX<S> vars = y.tail(impact.size());
+    const Vec2<S> p_b =
+        impact.doubleImpact() ? Vec2<S>(impact.impulse_trailing.of(vars)) : Vec2<S>::Zero();
+    return dynamics::impactResidual<S>(*model, strike.q.of(y), strike.v.of(y),
+                                       impact.qdotPlus().of(vars), impact.impulse_leading.of(vars),
+                                       impact.doubleImpact() ? &p_b : nullptr);
   }
 };
 
@@ -64,14 +65,16 @@ struct Periodicity {
   const dynamics::Model* model;
   template <class S>
   dynamics::VecX<S> operator()(const dynamics::VecX<S>& y) const {
-    const int n = model->nLinks();
-    dynamics::VecX<S> g(2 * n);
+    const PointLayout state = PointLayout::biped(model->nLinks(), false, false);
+    const int n = state.n;
+    const dynamics::VecX<S> end = y.head(state.stateSize()), start = y.tail(state.stateSize());
+    dynamics::VecX<S> g(state.stateSize());
     for (int i = 0; i < n; ++i) {
       const int j = n - 1 - i;
       const bool torso = model->torso() && *model->torso() == i;
       const double turn = torso ? 0.0 : (i < n - model->legLinks() ? -1.0 : 1.0) * std::numbers::pi;
-      g(i) = y(2 * n + i) - (y(j) + turn);
-      g(n + i) = y(3 * n + i) - y(n + j);
+      g(state.q[i]) = start(state.q[i]) - (end(state.q[j]) + turn);
+      g(state.v[i]) = start(state.v[i]) - end(state.v[j]);
     }
     return g;
   }

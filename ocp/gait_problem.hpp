@@ -6,6 +6,8 @@
 /// pinned and the tip force as a variable (2.11), and relabelling (2.38) back to the start.
 /// The initial guess is the polynomial gait of Mu ch. 3 sampled on the mesh.
 #include <optional>
+#include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -14,15 +16,24 @@
 #include "ocp/collocation.hpp"
 #include "ocp/nlp.hpp"
 #include "ocp/ocp_config.hpp"
+#include "ocp/phase.hpp"
+#include "ocp/touchdown.hpp"
 
 namespace gaitopt::ocp {
 
 struct GaitProblem {
   Nlp nlp;
-  PhaseLayout ssp;
-  std::optional<PhaseLayout> dsp;
-  int impact_offset = -1;  ///< qdot+ (n + 2), P_E (2) [, P_B (2)]; -1 when impactless
+  Phase ssp;
+  std::optional<Phase> dsp;
+  Touchdown touchdown;
   double step_length = 0;
+
+  /// The phases in time order (SSP, then the DSP if any).
+  std::vector<const Phase*> phases() const {
+    std::vector<const Phase*> all{&ssp};
+    if (dsp) all.push_back(&*dsp);
+    return all;
+  }
 };
 
 /// @throws std::invalid_argument when the guess does not fit the robot.

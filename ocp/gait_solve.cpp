@@ -10,16 +10,9 @@
 namespace gaitopt::ocp {
 namespace {
 
-/// The layouts of the problem, in config order.
-std::vector<const PhaseLayout*> phasesOf(const GaitProblem& p) {
-  std::vector<const PhaseLayout*> phases{&p.ssp};
-  if (p.dsp) phases.push_back(&*p.dsp);
-  return phases;
-}
-
 MeshRound roundOf(const GaitProblem& p, const SolveResult& r, const std::vector<double>& errors) {
   MeshRound round{{}, r.status, r.iterations, r.cost, 0, r.wall_time_s};
-  for (const PhaseLayout* l : phasesOf(p)) round.segments.push_back(l->segments);
+  for (const Phase* phase : p.phases()) round.segments.push_back(phase->layout.segments);
   for (double e : errors) round.max_segment_error = std::max(round.max_segment_error, e);
   return round;
 }
@@ -28,9 +21,9 @@ MeshRound roundOf(const GaitProblem& p, const SolveResult& r, const std::vector<
 bool refine(OcpConfig& config, const GaitProblem& p, const SolveResult& r,
             const std::vector<Eigen::VectorXd>& errors) {
   bool changed = false;
-  const auto phases = phasesOf(p);
+  const auto phases = p.phases();
   for (size_t i = 0; i < phases.size(); ++i) {
-    const PhaseLayout& l = *phases[i];
+    const PhaseLayout& l = phases[i]->layout;
     PhaseConfig& phase = config.phases[i];
     phase.mesh = refinedMesh(l, errors[i], config.refinement.tolerance);
     changed = changed || static_cast<int>(phase.mesh.size()) - 1 != l.segments;
@@ -40,19 +33,10 @@ bool refine(OcpConfig& config, const GaitProblem& p, const SolveResult& r,
   return changed;
 }
 
-/// The phase of a set or block from its name: the gait problem prefixes per-phase names with
-/// "ssp_" or "dsp_"; everything else links the phases.
-std::string phaseOf(const std::string& name) {
-  for (const char* phase : {"ssp", "dsp"})
-    if (name.rfind(std::string(phase) + "_", 0) == 0) return phase;
-  return "link";
-}
-
 }  // namespace
 
 LocatedViolation worstConstraint(const GaitProblem& problem, const Eigen::VectorXd& x) {
-  LocatedViolation v{problem.nlp.worstConstraint(x), "", "", -1, "row", -1};
-  v.phase = phaseOf(v.violation.name);
+  LocatedViolation v{problem.nlp.worstConstraint(x), "", -1, "row", -1};
   for (const auto& set : problem.nlp.constraintSets()) {
     if (set->name() != v.violation.name) continue;
     const NodeOfRow node = set->nodeOf(v.violation.index);
@@ -64,13 +48,13 @@ LocatedViolation worstConstraint(const GaitProblem& problem, const Eigen::Vector
 }
 
 LocatedViolation worstBound(const GaitProblem& problem, const Eigen::VectorXd& x) {
-  LocatedViolation v{problem.nlp.worstBound(x), "", "", -1, "element", -1};
-  v.phase = phaseOf(v.violation.name);
+  LocatedViolation v{problem.nlp.worstBound(x), "", -1, "element", -1};
   const auto& blocks = problem.nlp.variableBlocks();
   const auto block = std::find_if(blocks.begin(), blocks.end(), [&](const VariableBlock& b) {
     return b.name == v.violation.name;
   });
-  for (const PhaseLayout* l : phasesOf(problem)) {
+  for (const Phase* phase : problem.phases()) {
+    const PhaseLayout* l = &phase->layout;
     if (block == blocks.end() || block->offset != l->offset) continue;  // not a phase's points
     v.node_kind = "point";
     v.node = v.violation.index / l->pointSize();
@@ -83,8 +67,8 @@ std::string describe(const LocatedViolation& v) {
   const Violation& w = v.violation;
   if (w.name.empty()) return "none";
   const std::string where =
-      v.node < 0 ? fmt::format("{}, {} {}", v.phase, v.part, w.index)
-                 : fmt::format("{}, {} {}, {} {}", v.phase, v.node_kind, v.node, v.part, v.index);
+      v.node < 0 ? fmt::format("{}, {} {}", w.phase, v.part, w.index)
+                 : fmt::format("{}, {} {}, {} {}", w.phase, v.node_kind, v.node, v.part, v.index);
   return fmt::format("{} ({}): {:.4g} outside [{:.4g}, {:.4g}] by {:.3g}", w.name, where, w.value,
                      w.lower, w.upper, w.amount);
 }
@@ -103,9 +87,9 @@ GaitSolution solveGait(const dynamics::Model& model, OcpConfig config,
     iterations += s.result.iterations;
     std::vector<Eigen::VectorXd> errors;
     std::vector<double> all;
-    const auto phases = phasesOf(s.problem);
-    for (size_t i = 0; i < phases.size(); ++i) {  // phase 0 is the SSP, phase 1 the DSP
-      errors.push_back(segmentErrors(*phases[i], BipedDynamics(model, i == 1), s.result.x));
+    for (const Phase* phase : s.problem.phases()) {
+      errors.push_back(
+          segmentErrors(phase->layout, BipedDynamics(model, phase->point), s.result.x));
       all.insert(all.end(), errors.back().begin(), errors.back().end());
     }
     s.history.push_back(roundOf(s.problem, s.result, all));

@@ -30,8 +30,8 @@ struct GaitSolution {
 
 /// A constraint row or variable bound of the gait problem, located on its time grid.
 struct LocatedViolation {
-  Violation violation;    ///< set or block name, index within it, amount, value and bounds
-  std::string phase;      ///< "ssp", "dsp", or "link" (touchdown, impact, periodicity, ...)
+  Violation violation;    ///< set or block name, its phase ("ssp", "dsp", or "link" for the
+                          ///< touchdown, impact, periodicity, ...), index, amount, bounds
   std::string node_kind;  ///< "point" (collocation point), "segment", or "" (not on the grid)
   int node = -1;
   std::string part;  ///< what `index` counts: "row" (of a constraint) or "element" (of a point)

@@ -10,9 +10,10 @@ using Row = Eigen::Matrix<double, 1, 5>;  // coefficients of (F_Bx, F_By, F_Ex, 
 
 }  // namespace
 
-GroundContact::GroundContact(const dynamics::Model& model, bool dsp, bool zmp, double step_length,
-                             double mu)
-    : model_(&model), dsp_(dsp), n_(model.nLinks()) {
+GroundContact::GroundContact(const dynamics::Model& model, const PointLayout& point, bool zmp,
+                             double step_length, double mu)
+    : model_(&model), point_(point) {
+  const bool dsp = point.hasContactForce();
   std::vector<Row> rows{Row(0, 1, 0, 0, 0), Row(-1, mu, 0, 0, 0), Row(1, mu, 0, 0, 0)};
   if (dsp) {
     rows.push_back(Row(0, 0, 0, 1, 0));
@@ -31,12 +32,11 @@ GroundContact::GroundContact(const dynamics::Model& model, bool dsp, bool zmp, d
 }
 
 Eigen::Matrix<double, 5, 1> GroundContact::contactQuantities(const Eigen::VectorXd& v) const {
-  const int n = n_;
-  const Vec2d f_e = dsp_ ? Vec2d(v.segment<2>(4 * n)) : Vec2d::Zero();
-  const Vec2d f_b =
-      dynamics::stanceForce<double>(*model_, v.head(n), v.segment(n, n), v.segment(2 * n, n), f_e);
+  const PointLayout& l = point_;
+  const Vec2d f_e = l.hasContactForce() ? Vec2d(l.lambda.of(v)) : Vec2d::Zero();
+  const Vec2d f_b = dynamics::stanceForce<double>(*model_, l.q.of(v), l.v.of(v), l.a.of(v), f_e);
   Eigen::Matrix<double, 5, 1> s;
-  s << f_b, f_e, v(3 * n);
+  s << f_b, f_e, v(l.u[0]);
   return s;
 }
 
@@ -45,28 +45,30 @@ void GroundContact::evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorX
 }
 
 void GroundContact::jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const {
-  const int n = n_;
-  // ds/dv: F_B through m a_com(theta, dtheta, ddtheta) and -F_E; F_E and tau0 directly.
+  const PointLayout& l = point_;
+  // ds/dv: F_B through m a_com(theta, dtheta, ddtheta) and -F_E; F_E and tau0 directly. The
+  // acceleration's Jacobian spans the motion (q, v, a).
   Eigen::MatrixXd ds = Eigen::MatrixXd::Zero(5, v.size());
-  ds.topLeftCorner(2, 3 * n) = model_->totalMass() * dynamics::pointAccelerationJacobian(
-                                                         model_->totalComWeights(), v.head(n),
-                                                         v.segment(n, n), v.segment(2 * n, n));
-  if (dsp_) {
-    ds.block(0, 4 * n, 2, 2) = -Eigen::Matrix2d::Identity();
-    ds.block(2, 4 * n, 2, 2) = Eigen::Matrix2d::Identity();
+  ds.block(0, l.motion().start, 2, l.motion().size) =
+      model_->totalMass() * dynamics::pointAccelerationJacobian(model_->totalComWeights(),
+                                                                l.q.of(v), l.v.of(v), l.a.of(v));
+  if (l.hasContactForce()) {
+    ds.block(0, l.lambda.start, 2, 2) = -Eigen::Matrix2d::Identity();
+    ds.block(2, l.lambda.start, 2, 2) = Eigen::Matrix2d::Identity();
   }
-  ds(4, 3 * n) = 1;
+  ds(4, l.u[0]) = 1;
   jac = rows_ * ds;
 }
 
 void GroundContact::hessian(const Eigen::VectorXd& v, const Eigen::VectorXd& w,
                             Eigen::Ref<Eigen::MatrixXd> hess) const {
-  const int n = n_;
+  const PointLayout& l = point_;
   hess.setZero();
   // Only F_B is nonlinear: weight of a_com = m * (rows^T w) restricted to F_B.
   const Eigen::Vector2d c = model_->totalMass() * (rows_.transpose() * w).head<2>();
-  hess.topLeftCorner(3 * n, 3 * n) = dynamics::pointAccelerationHessian(
-      model_->totalComWeights(), v.head(n), v.segment(n, n), v.segment(2 * n, n), c);
+  const Slice m = l.motion();
+  hess.block(m.start, m.start, m.size, m.size) = dynamics::pointAccelerationHessian(
+      model_->totalComWeights(), l.q.of(v), l.v.of(v), l.a.of(v), c);
 }
 
 }  // namespace gaitopt::ocp

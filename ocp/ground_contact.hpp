@@ -1,7 +1,7 @@
 #pragma once
 /// @file ground_contact.hpp
-/// Contact conditions at a collocation point v = [theta, dtheta, ddtheta, tau (, lambda)]
-/// (DESIGN.md sec. 6); every row is >= 0 when its condition holds:
+/// Contact conditions at a collocation point v (point_layout.hpp) (DESIGN.md sec. 6); every row is
+/// >= 0 when its condition holds:
 ///   F_By, mu F_By - F_Bx, mu F_By + F_Bx                 (unilateral, Coulomb friction at B)
 ///   F_Ey, mu F_Ey - F_Ex, mu F_Ey + F_Ex                 (the same at E, DSP only)
 ///   M + heel Fy, hi Fy - M                                (ZMP in [-heel, hi], if enabled)
@@ -12,28 +12,30 @@
 /// derivatives are those of a_com (point_acceleration_derivatives.hpp), exact and cheap.
 #include "dynamics/model.hpp"
 #include "ocp/point_function.hpp"
+#include "ocp/point_layout.hpp"
 
 namespace gaitopt::ocp {
 
 class GroundContact : public PointFunction {
  public:
+  /// `point`: the point's layout; with a contact force (double support) both tips carry cones.
   /// `mu`: the friction coefficient the cones use (the robot's, less any margin).
-  GroundContact(const dynamics::Model& model, bool dsp, bool zmp, double step_length, double mu);
+  GroundContact(const dynamics::Model& model, const PointLayout& point, bool zmp,
+                double step_length, double mu);
   int rows() const override { return static_cast<int>(rows_.rows()); }
   void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override;
   void jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const override;
   void hessian(const Eigen::VectorXd& v, const Eigen::VectorXd& w,
                Eigen::Ref<Eigen::MatrixXd> hess) const override;
   Eigen::VectorXd lowerBounds() const override { return Eigen::VectorXd::Zero(rows()); }
-  Eigen::VectorXd upperBounds() const override { return Eigen::VectorXd::Constant(rows(), 1e20); }
+  Eigen::VectorXd upperBounds() const override { return Eigen::VectorXd::Constant(rows(), kInf); }
 
  private:
   /// s = (F_Bx, F_By, F_Ex, F_Ey, tau0) at the point.
   Eigen::Matrix<double, 5, 1> contactQuantities(const Eigen::VectorXd& v) const;
 
   const dynamics::Model* model_;
-  bool dsp_;
-  int n_;
+  PointLayout point_;
   Eigen::Matrix<double, Eigen::Dynamic, 5> rows_;  // g = rows_ * s
 };
 

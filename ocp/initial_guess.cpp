@@ -1,11 +1,17 @@
 #include "ocp/initial_guess.hpp"
 
 #include "gaits/hip_plan_search.hpp"
+#include "ocp/straight_leg_guess.hpp"
 
 namespace gaitopt::ocp {
 
 gaits::Trajectory polynomialGuess(const dynamics::Model& model, const OcpConfig& config) {
   return polynomialGuess(model, gaits::loadGait(config.guess_gait_path));
+}
+
+gaits::Trajectory initialGuess(const dynamics::Model& model, const OcpConfig& config) {
+  if (config.guess_gait_path.empty()) return straightLegGuess(model, config);
+  return polynomialGuess(model, config);
 }
 
 gaits::Trajectory polynomialGuess(const dynamics::Model& model, const gaits::GaitParams& params) {

@@ -11,8 +11,6 @@
 namespace gaitopt::ocp {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
 Eigen::VectorXd append(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   Eigen::VectorXd out(a.size() + b.size());
   out << a, b;
@@ -26,7 +24,8 @@ std::pair<int, double> farthestOutside(const Eigen::VectorXd& value, const Eigen
   std::pair<int, double> worst{-1, 0.0};
   for (Eigen::Index i = 0; i < value.size(); ++i) {
     const double v = value(i);
-    const double d = std::isnan(v) ? kInf : std::max({0.0, lower(i) - v, v - upper(i)});
+    const double d = std::isnan(v) ? std::numeric_limits<double>::infinity()
+                                   : std::max({0.0, lower(i) - v, v - upper(i)});
     if (d > worst.second) worst = {static_cast<int>(i), d};
   }
   return worst;
@@ -60,11 +59,12 @@ void SparsityPattern::accumulate(const Triplets& entries, double* values) const 
 }
 
 VariableBlock Nlp::addVariables(const std::string& name, int size, const Eigen::VectorXd& lower,
-                                const Eigen::VectorXd& upper, const Eigen::VectorXd& initial) {
+                                const Eigen::VectorXd& upper, const Eigen::VectorXd& initial,
+                                const std::string& phase) {
   if (lower.size() != size || upper.size() != size || initial.size() != size)
     throw std::invalid_argument(
         fmt::format("variable block '{}': bounds and guess need {} entries", name, size));
-  const VariableBlock block{name, variables(), size};
+  const VariableBlock block{name, variables(), size, phase};
   x0_ = append(x0_, initial);
   xl_ = append(xl_, lower);
   xu_ = append(xu_, upper);
@@ -72,8 +72,9 @@ VariableBlock Nlp::addVariables(const std::string& name, int size, const Eigen::
   return block;
 }
 
-void Nlp::addConstraint(std::unique_ptr<ConstraintSet> set) {
+void Nlp::addConstraint(std::unique_ptr<ConstraintSet> set, const std::string& phase) {
   sets_.push_back(std::move(set));
+  set_phases_.push_back(phase);
 }
 void Nlp::addCost(std::unique_ptr<CostTerm> term) {
   costs_.push_back(std::move(term));
@@ -149,10 +150,11 @@ Violation Nlp::worstConstraint(const Eigen::VectorXd& x) const {
   const auto [row, amount] = farthestOutside(g, lower, upper);
   if (row < 0) return {};
   int first = 0;
-  for (const auto& s : sets_) {
-    if (row < first + s->rows())
-      return {s->name(), row - first, amount, g(row), lower(row), upper(row)};
-    first += s->rows();
+  for (size_t i = 0; i < sets_.size(); ++i) {
+    const ConstraintSet& s = *sets_[i];
+    if (row < first + s.rows())
+      return {s.name(), set_phases_[i], row - first, amount, g(row), lower(row), upper(row)};
+    first += s.rows();
   }
   throw std::logic_error("constraint row beyond the last set");
 }
@@ -161,7 +163,7 @@ Violation Nlp::worstBound(const Eigen::VectorXd& x) const {
   const auto [i, amount] = farthestOutside(x, xl_, xu_);
   if (i < 0) return {};
   for (const auto& b : blocks_)
-    if (i < b.offset + b.size) return {b.name, i - b.offset, amount, x(i), xl_(i), xu_(i)};
+    if (i < b.offset + b.size) return {b.name, b.phase, i - b.offset, amount, x(i), xl_(i), xu_(i)};
   throw std::logic_error("variable beyond the last block");
 }
 

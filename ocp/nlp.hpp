@@ -19,11 +19,18 @@ namespace gaitopt::ocp {
 
 using Triplets = std::vector<Eigen::Triplet<double>>;
 
+/// Infinity for bounds: Ipopt reads any bound beyond 1e19 as none (nlp_upper_bound_inf).
+inline constexpr double kInf = 1e20;
+
+/// The phase tag of sets and blocks that belong to no single phase (they link phases).
+inline constexpr const char* kLinkPhase = "link";
+
 /// A contiguous range of the decision vector.
 struct VariableBlock {
   std::string name;
   int offset = 0;
   int size = 0;
+  std::string phase = kLinkPhase;  ///< the phase the block belongs to (Nlp::addVariables)
 };
 
 /// Where a row of a constraint set sits on the time grid, for reports of failed solves.
@@ -61,6 +68,7 @@ class ConstraintSet {
 /// The worst bound violation of a point among constraint rows or variables.
 struct Violation {
   std::string name;   ///< the constraint set or variable block ("" when nothing is violated)
+  std::string phase;  ///< its phase tag (Nlp::addConstraint, Nlp::addVariables)
   int index = -1;     ///< row within the set, or element within the block
   double amount = 0;  ///< distance outside [lower, upper] (0 when within)
   double value = 0, lower = 0, upper = 0;
@@ -101,10 +109,16 @@ class SparsityPattern {
 
 class Nlp {
  public:
-  /// Adds a block of `size` variables; returns it (offset into the decision vector).
+  /// Adds a block of `size` variables of phase `phase`; returns it (offset into the decision
+  /// vector).
   VariableBlock addVariables(const std::string& name, int size, const Eigen::VectorXd& lower,
-                             const Eigen::VectorXd& upper, const Eigen::VectorXd& initial);
-  void addConstraint(std::unique_ptr<ConstraintSet> set);
+                             const Eigen::VectorXd& upper, const Eigen::VectorXd& initial,
+                             const std::string& phase = kLinkPhase);
+  /// Adds a constraint set of phase `phase`, so that reports locate its rows without parsing
+  /// names.
+  void addConstraint(std::unique_ptr<ConstraintSet> set, const std::string& phase = kLinkPhase);
+  /// The phase tag of constraint set i (in the order added).
+  const std::string& constraintPhase(size_t i) const { return set_phases_[i]; }
   void addCost(std::unique_ptr<CostTerm> term);
 
   int variables() const { return static_cast<int>(x0_.size()); }
@@ -116,6 +130,7 @@ class Nlp {
   Eigen::VectorXd constraintUpper() const;
   const std::vector<std::unique_ptr<ConstraintSet>>& constraintSets() const { return sets_; }
   const std::vector<VariableBlock>& variableBlocks() const { return blocks_; }
+  const std::vector<std::unique_ptr<CostTerm>>& costTerms() const { return costs_; }
 
   /// The constraint row of `x` farthest outside its bounds (the first on ties).
   Violation worstConstraint(const Eigen::VectorXd& x) const;
@@ -135,6 +150,7 @@ class Nlp {
   Eigen::VectorXd x0_, xl_, xu_;
   std::vector<VariableBlock> blocks_;
   std::vector<std::unique_ptr<ConstraintSet>> sets_;
+  std::vector<std::string> set_phases_;  // parallel to sets_
   std::vector<std::unique_ptr<CostTerm>> costs_;
 };
 

@@ -129,7 +129,8 @@ OcpConfig loadOcpConfig(const std::string& path) {
   c.name = root.string("name");
   root.stringOr("description", "");
   c.robot_path = relativeTo(path, root.string("robot"));
-  c.guess_gait_path = relativeTo(path, root.string("initial_guess"));
+  const std::string guess = root.string("initial_guess");
+  if (guess != kStraightLegGuess) c.guess_gait_path = relativeTo(path, guess);
   c.step_length = root.number("step_length", config::inRange(0.01, 5.0, "[m]"));
   c.slope = root.numberOr(
       "slope", 0.0, config::angleInRange(-dynamics::kMaxConfigSlope, dynamics::kMaxConfigSlope));
@@ -137,6 +138,8 @@ OcpConfig loadOcpConfig(const std::string& path) {
   if (c.phases.front().name != "SSP" || c.phases.size() > 2 ||
       (c.phases.size() == 2 && c.phases.back().name != "DSP"))
     root.fail("phases", "expected [SSP] or [SSP, DSP]");
+  if (c.guess_gait_path.empty() && c.phases.size() == 2)
+    root.fail("phases", "the straight-leg guess builds steps without a DSP: expected [SSP]");
   c.step_duration = root.numberOr("step_duration", 0.0, config::inRange(0.02, 20.0, "[s]"));
   if (c.step_duration > 0) checkStepDuration(root, c);
   c.scheme = schemeFromString(root.choice("scheme", {"trapezoidal", "hermite_simpson"}));
@@ -154,6 +157,13 @@ OcpConfig loadOcpConfig(const std::string& path) {
   if (root.has("constraints")) readConstraints(root.map("constraints"), c);
   if (root.has("solver")) readSolver(root.map("solver"), c.solver);
   return c;
+}
+
+double frictionBound(const dynamics::Model& model, const OcpConfig& config) {
+  const double mu = model.friction() - config.friction_margin;
+  if (!(mu > 0))
+    throw std::invalid_argument("friction_margin must be below the robot's friction coefficient");
+  return mu;
 }
 
 dynamics::Model problemModel(const OcpConfig& config) {

@@ -46,11 +46,16 @@ struct MeshRefinement {
 /// stay; leads into a DSP), or impactless (zero swing-tip velocity at touchdown, Mu ch. 3).
 enum class ImpactModel { kSingle, kDouble, kImpactless };
 
+/// The `initial_guess` value that asks for the straight-leg guess instead of a gait file.
+inline constexpr const char* kStraightLegGuess = "straight_leg";
+
 struct OcpConfig {
   std::string name;
   std::string robot_path;
-  std::string guess_gait_path;  ///< polynomial gait used as the initial guess
-  double step_length = 0;       ///< tips apart at touchdown [m]
+  /// Polynomial gait file used as the initial guess; empty for `initial_guess: straight_leg`
+  /// (straight_leg_guess.hpp, robots with one link per leg).
+  std::string guess_gait_path;
+  double step_length = 0;  ///< tips apart at touchdown [m]
   /// Ground inclination gamma [rad], > 0 uphill (dynamics/model.hpp); problemModel() applies it.
   /// The guess gait file's own `slope` is ignored: the guess is built on problemModel().
   double slope = 0;
@@ -83,6 +88,10 @@ OcpConfig loadOcpConfig(const std::string& path);
 /// dynamics::withSlope(loadRobot(config.robot_path), config.slope).
 /// @throws config::ConfigError for a bad robot file.
 dynamics::Model problemModel(const OcpConfig& config);
+
+/// The friction coefficient of the optimiser's cones: the robot's, less the configured margin.
+/// @throws std::invalid_argument when the margin leaves no cone.
+double frictionBound(const dynamics::Model& model, const OcpConfig& config);
 
 /// A step the two legs cannot span, even stretched, is bad input, not a question for Ipopt
 /// (which would spend its iteration limit on it). @throws std::domain_error naming `path` and

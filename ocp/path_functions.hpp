@@ -1,9 +1,10 @@
 #pragma once
 /// @file path_functions.hpp
 /// Running costs and kinematic path constraints of the gait, as point functions of a collocation
-/// point v = [theta, dtheta, ddtheta, tau] (see biped_dynamics.hpp).
+/// point v laid out by PointLayout (point_layout.hpp).
 #include "dynamics/model.hpp"
 #include "ocp/clearance_profile.hpp"
+#include "ocp/phase.hpp"
 #include "ocp/point_function.hpp"
 
 namespace gaitopt::ocp {
@@ -11,7 +12,8 @@ namespace gaitopt::ocp {
 /// L = weight * sum_j tau_j^2 (Kelly 2017's cost; a small weight regularises abs_work) [N^2 m^2].
 class TorqueSquared : public PointFunction {
  public:
-  explicit TorqueSquared(int n_links, double weight = 1.0) : n_(n_links), weight_(weight) {}
+  explicit TorqueSquared(const PointLayout& point, double weight = 1.0)
+      : point_(point), weight_(weight) {}
   int rows() const override { return 1; }
   void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override;
   void jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const override;
@@ -19,25 +21,24 @@ class TorqueSquared : public PointFunction {
                Eigen::Ref<Eigen::MatrixXd> hess) const override;
 
  private:
-  int n_;
+  PointLayout point_;
   double weight_;
 };
 
 /// Absolute mechanical work made smooth with slack variables (DESIGN.md sec. 6): each joint's
 /// power tau_j dq_j = s+_j - s-_j with s+, s- >= 0 (WorkSplit), and the running cost
-/// L = weight sum_j (s+_j + s-_j), which equals weight sum_j |tau_j dq_j| at the optimum. The
-/// slacks sit at `slack_offset` in the point: s+ (n) then s- (n).
+/// L = weight sum_j (s+_j + s-_j), which equals weight sum_j |tau_j dq_j| at the optimum.
 class AbsoluteWork : public PointFunction {
  public:
-  AbsoluteWork(int n_links, int slack_offset, double weight = 1.0)
-      : n_(n_links), offset_(slack_offset), weight_(weight) {}
+  AbsoluteWork(const PointLayout& point, double weight = 1.0) : point_(point), weight_(weight) {}
   int rows() const override { return 1; }
   void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override {
-    f(0) = weight_ * v.segment(offset_, 2 * n_).sum();
+    f(0) = weight_ * (point_.work_plus.of(v).sum() + point_.work_minus.of(v).sum());
   }
   void jacobian(const Eigen::VectorXd&, Eigen::Ref<Eigen::MatrixXd> jac) const override {
     jac.setZero();
-    jac.block(0, offset_, 1, 2 * n_).setConstant(weight_);
+    point_.work_plus.of(jac.row(0)).setConstant(weight_);
+    point_.work_minus.of(jac.row(0)).setConstant(weight_);
   }
   void hessian(const Eigen::VectorXd&, const Eigen::VectorXd&,
                Eigen::Ref<Eigen::MatrixXd> hess) const override {
@@ -45,7 +46,7 @@ class AbsoluteWork : public PointFunction {
   }
 
  private:
-  int n_, offset_;
+  PointLayout point_;
   double weight_;
 };
 
@@ -53,22 +54,22 @@ class AbsoluteWork : public PointFunction {
 /// positive and negative parts.
 class WorkSplit : public PointFunction {
  public:
-  WorkSplit(int n_links, int slack_offset) : n_(n_links), offset_(slack_offset) {}
-  int rows() const override { return n_; }
+  explicit WorkSplit(const PointLayout& point) : point_(point) {}
+  int rows() const override { return point_.n; }
   void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override;
   void jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const override;
   void hessian(const Eigen::VectorXd& v, const Eigen::VectorXd& w,
                Eigen::Ref<Eigen::MatrixXd> hess) const override;
 
  private:
-  int n_, offset_;
+  PointLayout point_;
 };
 
 /// Knees never hyperextend: stance knee q1 = theta_1 - theta_2 >= 0 and swing knee
 /// q_{n-1} = theta_{n-1} - theta_n <= 0 (knee forward in both legs, conventions.hpp).
 class KneeDirection : public PointFunction {
  public:
-  explicit KneeDirection(int n_links) : n_(n_links) {}
+  explicit KneeDirection(const PointLayout& point) : point_(point) {}
   int rows() const override { return 2; }
   void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override;
   void jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const override;
@@ -80,24 +81,26 @@ class KneeDirection : public PointFunction {
   Eigen::VectorXd upperBounds() const override;
 
  private:
-  int n_;
+  PointLayout point_;
 };
 
 /// Swing-tip height above the ground, y_E = sum_j a_j l_j cos(theta_j) (Mu 2.1) [m]; never
 /// below it.
 class SwingHeight : public PointFunction {
  public:
-  explicit SwingHeight(const dynamics::Model& model) : model_(&model) {}
+  SwingHeight(const dynamics::Model& model, const PointLayout& point)
+      : model_(&model), point_(point) {}
   int rows() const override { return 1; }
   void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override;
   void jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const override;
   void hessian(const Eigen::VectorXd& v, const Eigen::VectorXd& w,
                Eigen::Ref<Eigen::MatrixXd> hess) const override;
   Eigen::VectorXd lowerBounds() const override { return Eigen::VectorXd::Zero(1); }
-  Eigen::VectorXd upperBounds() const override { return Eigen::VectorXd::Constant(1, 1e20); }
+  Eigen::VectorXd upperBounds() const override { return Eigen::VectorXd::Constant(1, kInf); }
 
  private:
   const dynamics::Model* model_;
+  PointLayout point_;
 };
 
 /// y_E(v_p) >= h(s_p) at every point p of the single support, s_p = t_p / T its phase fraction
@@ -105,8 +108,7 @@ class SwingHeight : public PointFunction {
 /// even when T is free: the rows and their derivatives are those of SwingHeight.
 class SwingClearance : public PathConstraint {
  public:
-  SwingClearance(const dynamics::Model& model, const PhaseLayout& layout,
-                 const ClearanceProfile& profile);
+  SwingClearance(const dynamics::Model& model, const Phase& phase, const ClearanceProfile& profile);
   Eigen::VectorXd lowerBounds() const override { return lower_; }
 
  private:

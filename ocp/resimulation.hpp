@@ -25,10 +25,11 @@ struct StateError {
 /// The SSP's torques as the collocation scheme interpolates them between its points
 /// (collocation_interpolation.hpp: linear for trapezoidal, quadratic for Hermite-Simpson).
 inline std::function<VecD(double)> sspTorque(const GaitProblem& problem, const Eigen::VectorXd& x) {
-  const PhaseLayout& l = problem.ssp;
-  const int first_u = l.u(0, 0) - l.pointOffset(0), nu = l.nu;
-  return [&l, &x, first_u, nu](double t) -> VecD {
-    return interpolatePoint(l, x, t).segment(first_u, nu);
+  const PhaseLayout& l = problem.ssp.layout;
+  const Slice u = problem.ssp.point.u;
+  return [&l, &x, u](double t) -> VecD {
+    const Eigen::VectorXd point = interpolatePoint(l, x, t);
+    return u.of(point);
   };
 }
 
@@ -44,7 +45,7 @@ inline ChainState simulateSegment(const GaitProblem& problem, const dynamics::Mo
                                   const Eigen::VectorXd& x,
                                   const std::function<VecD(double)>& torque, int seg,
                                   const ChainState& start, double tolerance) {
-  const PhaseLayout& l = problem.ssp;
+  const PhaseLayout& l = problem.ssp.layout;
   const int per = l.pointsPerSegment();
   const double total = l.durationAt(x);
   const double t0 = l.time(per * seg, total), h = l.time(per * (seg + 1), total) - t0;
@@ -59,10 +60,10 @@ inline ChainState simulateSegment(const GaitProblem& problem, const dynamics::Mo
 }
 
 /// The state of SSP point p of the solution `x`.
-inline ChainState sspPointState(const GaitProblem& problem, int n, const Eigen::VectorXd& x,
-                                int p) {
-  const Eigen::VectorXd v = problem.ssp.point(x, p);
-  return {v.head(n), v.segment(n, n)};
+inline ChainState sspPointState(const GaitProblem& problem, const Eigen::VectorXd& x, int p) {
+  const Eigen::VectorXd v = problem.ssp.layout.point(x, p);
+  const PointLayout& l = problem.ssp.point;
+  return {l.q.of(v), l.v.of(v)};
 }
 
 inline StateError difference(const ChainState& a, const ChainState& b) {
@@ -75,13 +76,12 @@ inline StateError difference(const ChainState& a, const ChainState& b) {
 /// single support, so only meaningful where that amplification is moderate (RABBIT: yes).
 inline StateError sspEndStateError(const GaitProblem& problem, const dynamics::Model& model,
                                    const Eigen::VectorXd& x, double tolerance = 1e-12) {
-  const int n = model.nLinks();
   const auto torque = sspTorque(problem, x);
-  ChainState state = sspPointState(problem, n, x, 0);
-  for (int seg = 0; seg < problem.ssp.segments; ++seg) {
+  ChainState state = sspPointState(problem, x, 0);
+  for (int seg = 0; seg < problem.ssp.layout.segments; ++seg) {
     state = simulateSegment(problem, model, x, torque, seg, state, tolerance);
   }
-  return difference(state, sspPointState(problem, n, x, problem.ssp.points() - 1));
+  return difference(state, sspPointState(problem, x, problem.ssp.layout.points() - 1));
 }
 
 /// Re-simulates every SSP segment from the solution's state at its start and compares with the
@@ -89,13 +89,13 @@ inline StateError sspEndStateError(const GaitProblem& problem, const dynamics::M
 /// open-loop amplification that swamps sspEndStateError on unstable gaits (five-link robot).
 inline StateError sspSegmentError(const GaitProblem& problem, const dynamics::Model& model,
                                   const Eigen::VectorXd& x, double tolerance = 1e-12) {
-  const int n = model.nLinks(), per = problem.ssp.pointsPerSegment();
+  const int per = problem.ssp.layout.pointsPerSegment();
   const auto torque = sspTorque(problem, x);
   StateError worst;
-  for (int seg = 0; seg < problem.ssp.segments; ++seg) {
+  for (int seg = 0; seg < problem.ssp.layout.segments; ++seg) {
     const ChainState end = simulateSegment(problem, model, x, torque, seg,
-                                           sspPointState(problem, n, x, per * seg), tolerance);
-    const StateError e = difference(end, sspPointState(problem, n, x, per * (seg + 1)));
+                                           sspPointState(problem, x, per * seg), tolerance);
+    const StateError e = difference(end, sspPointState(problem, x, per * (seg + 1)));
     worst = {std::max(worst.angle, e.angle), std::max(worst.rate, e.rate)};
   }
   return worst;

@@ -7,6 +7,7 @@
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -48,7 +49,17 @@ void parallelFor(std::size_t count, int jobs, const std::function<void(std::size
   if (chunk < 1) throw std::invalid_argument("parallelFor: chunk must be >= 1");
   Queue queue(count, chunk);
   std::vector<std::thread> workers;
-  for (int j = 0; j < jobs; ++j) workers.emplace_back([&] { queue.work(task); });
+  try {
+    for (int j = 0; j < jobs; ++j) workers.emplace_back([&] { queue.work(task); });
+  } catch (const std::system_error& e) {
+    // A process or thread limit: stop the started workers (never destroy a joinable thread,
+    // which would std::terminate) and say what failed.
+    queue.next = count;
+    for (auto& w : workers) w.join();
+    throw std::runtime_error("cannot start worker thread " + std::to_string(workers.size() + 1) +
+                             " of " + std::to_string(jobs) + " (" + e.what() +
+                             "): run with fewer --jobs");
+  }
   while (progress && queue.done < count && queue.next < count) {
     progress(queue.done, count);
     std::this_thread::sleep_for(std::chrono::milliseconds(100));

@@ -1,8 +1,14 @@
 #!/usr/bin/env bash
 # The main job of `make demo`: runs gaitopt into results/ and says where everything is.
-# Usage: scripts/demo.sh BUILD_DIR
+# The quick part (a minute: the robots, the polynomial and the optimal five-link gait, one
+# closed-loop walk, their report pages) always runs; --full (`make demo-full`) adds the RABBIT
+# and cost-of-transport solves, the comparisons, every walk and stability sweep, and the gait
+# libraries (tens of minutes).
+# Usage: scripts/demo.sh BUILD_DIR [--full]
 set -euo pipefail
 build=${1:-build}
+full=${2:-}
+[[ -z "$full" || "$full" == --full ]] || { echo "usage: $0 BUILD_DIR [--full]" >&2; exit 2; }
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"  # relative paths in every output (summary.json echoes the config path)
 bin="$build/apps/gaitopt"
@@ -34,33 +40,50 @@ echo "== gaitopt poly: Mu (2004) ch. 3 polynomial gait of the five-link robot"
 
 echo "== gaitopt optimize: the default five-link problem from the polynomial gait"
 "$bin" optimize --config configs/ocp/mu2004_walk.yaml --out results/opt_mu2004 --quiet
-echo "== gaitopt optimize: the RABBIT benchmark of Kelly (2017)"
-"$bin" optimize --config configs/ocp/rabbit_kelly2017.yaml --out results/opt_rabbit --quiet
+echo "== gaitopt simulate: 20 steps of the optimal gait under computed torque"
+"$bin" simulate --reference results/opt_mu2004 --controller computed_torque --steps 20 --rate 50 \
+  --out results/walk_opt_mu2004_computed_torque --quiet
 
-echo "== gaitopt optimize: least cost of transport, free single/double support split"
-"$bin" optimize --config configs/ocp/mu2004_walk_cot.yaml --out results/opt_cot_mu2004 --quiet
+echo "== gaitopt report: one page per result (animated robot, summary, charts)"
+for dir in results/poly_mu2004 results/opt_mu2004 results/walk_opt_mu2004_computed_torque; do
+  "$bin" report "$dir"
+done
 
-echo "== polynomial (A) versus torque-squared optimal (B) gait of the five-link robot"
-/usr/bin/python3 scripts/plots/compare_gaits.py results/poly_mu2004 results/opt_mu2004 \
-  results/poly_vs_opt_mu2004.md
-echo "== polynomial (A) versus least-cost-of-transport (B) gait of the five-link robot"
-/usr/bin/python3 scripts/plots/compare_gaits.py results/poly_mu2004 results/opt_cot_mu2004 \
-  results/poly_vs_cot_mu2004.md
+if [[ "$full" == --full ]]; then
+  echo "== gaitopt optimize: the RABBIT benchmark of Kelly (2017)"
+  "$bin" optimize --config configs/ocp/rabbit_kelly2017.yaml --out results/opt_rabbit --quiet
 
-echo "== gaitopt compare: polynomial versus optimal gait, table and overlaid plots"
-"$bin" compare results/poly_mu2004 results/opt_mu2004 --out results/compare_poly_opt_mu2004
+  echo "== gaitopt optimize: least cost of transport, free single/double support split"
+  "$bin" optimize --config configs/ocp/mu2004_walk_cot.yaml --out results/opt_cot_mu2004 --quiet
 
-bash scripts/closed_loop_demo.sh "$build"
+  echo "== polynomial (A) versus torque-squared optimal (B) gait of the five-link robot"
+  /usr/bin/python3 scripts/plots/compare_gaits.py results/poly_mu2004 results/opt_mu2004 \
+    results/poly_vs_opt_mu2004.md
+  echo "== polynomial (A) versus least-cost-of-transport (B) gait of the five-link robot"
+  /usr/bin/python3 scripts/plots/compare_gaits.py results/poly_mu2004 results/opt_cot_mu2004 \
+    results/poly_vs_cot_mu2004.md
 
-# Gait libraries resume: points already in results/library_*/index.csv are not solved again.
-echo "== gaitopt library: 5 speeds x 5 step lengths of the default problem"
-"$bin" library --config configs/library/mu2004_speed_step.yaml --out results/library_mu2004 --quiet
-echo "== gaitopt library: least cost of transport from 0.4 to 1.4 m/s (the speed sweep)"
-"$bin" library --config configs/library/mu2004_cot_speed.yaml \
-  --out results/library_cot_speed_mu2004 --quiet
-echo "== gaitopt library: slopes from -0.1 to 0.1 rad x 3 speeds"
-"$bin" library --config configs/library/mu2004_slope.yaml --out results/library_slope_mu2004 --quiet
+  echo "== gaitopt compare: polynomial versus optimal gait, table and overlaid plots"
+  "$bin" compare results/poly_mu2004 results/opt_mu2004 --out results/compare_poly_opt_mu2004
 
+  bash scripts/closed_loop_demo.sh "$build"
+
+  # Gait libraries resume: points already in results/library_*/index.csv are not solved again.
+  echo "== gaitopt library: 5 speeds x 5 step lengths of the default problem"
+  "$bin" library --config configs/library/mu2004_speed_step.yaml --out results/library_mu2004 --quiet
+  echo "== gaitopt library: least cost of transport from 0.4 to 1.4 m/s (the speed sweep)"
+  "$bin" library --config configs/library/mu2004_cot_speed.yaml \
+    --out results/library_cot_speed_mu2004 --quiet
+  echo "== gaitopt library: slopes from -0.1 to 0.1 rad x 3 speeds"
+  "$bin" library --config configs/library/mu2004_slope.yaml --out results/library_slope_mu2004 --quiet
+  echo "== gaitopt report: the pages of the libraries, walks and sweeps"
+  for dir in results/library_*/ results/walk_*/ results/stability_*/; do
+    "$bin" report "${dir%/}" --no-gif
+  done
+fi
+
+echo
+echo "Report page: $root/results/walk_opt_mu2004_computed_torque/report.html (open it in a browser)"
 echo "Results are in $root/results/:"
 echo "  inspect/*.json          robot models and dynamics at a posture"
 echo "  convention.png          angle convention"
@@ -72,3 +95,5 @@ echo "  compare_poly_opt_mu2004/  comparison.md and overlaid angles, torques, fo
 echo "  walk_*/                 closed-loop walks: summary.json, steps.csv, walk_overview.png"
 echo "  stability_*/            sweeps: sweep_*.csv, summary.json, stability.png"
 echo "  ground_bench.md, ground_speed_accuracy.png  speed against accuracy of the grounds"
+echo "  */report.html           one self-contained page per result; walk_*/walk.gif"
+[[ "$full" == --full ]] || echo "(make demo-full adds RABBIT, the comparisons, every walk and sweep, the libraries)"

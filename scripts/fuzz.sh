@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Fuzzes the input parsers with libFuzzer, ASan and UBSan: robot, gait and OCP YAML, trajectory
-# CSV and state JSON (fuzz/). Builds build-fuzz with clang, runs each target for SECONDS (one at a
+# CSV, state JSON and the command-line options (fuzz/). Builds build-fuzz with clang, runs each target for SECONDS (one at a
 # time), keeps each target's corpus in build-fuzz/corpus/ (it grows from run to run, seeded from
 # configs/ and fuzz/seeds/) and writes every crash, sanitizer report, stray exception, hang
 # (> 10 s) or leak to build-fuzz/findings/. Prints one row per target and exits 1 on a finding.
@@ -13,11 +13,12 @@ cd "$(dirname "$0")/.."
 build="build-fuzz"
 hang_seconds=10
 
-targets=(robot_yaml gait_yaml ocp_yaml trajectory_csv state_json)
+targets=(robot_yaml gait_yaml ocp_yaml trajectory_csv state_json cli_options)
 declare -A seeds=([robot_yaml]=configs/robots [gait_yaml]=configs/gaits [ocp_yaml]=configs/ocp
-  [trajectory_csv]=fuzz/seeds/trajectory_csv [state_json]=configs/states)
+  [trajectory_csv]=fuzz/seeds/trajectory_csv [state_json]=configs/states
+  [cli_options]=fuzz/seeds/cli_options)
 declare -A dicts=([robot_yaml]=yaml [gait_yaml]=yaml [ocp_yaml]=yaml [trajectory_csv]=csv
-  [state_json]=json)
+  [state_json]=json [cli_options]=cli)
 
 bash scripts/install-deps.sh --fuzz
 # -O1 without NDEBUG: assertions (ours and Eigen's) stay on.

@@ -12,7 +12,9 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   libboost-dev
-  python3 python3-matplotlib python3-numpy
+  python3 python3-matplotlib python3-numpy python3-pil
+  python3-dev pybind11-dev python3-pytest
+  chromium
   valgrind
   openmpi-bin libopenmpi-dev
 )

@@ -84,7 +84,7 @@ ContactStep compliantContactStep(const dynamics::Model& plant, const CompliantGr
   return out;
 }
 
-WalkResult walkCompliant(const dynamics::Model& plant, const TrackingController& controller,
+WalkResult walkCompliant(const dynamics::Model& plant, const Controller& controller,
                          const Reference& ref, const CompliantGround& ground, const WalkPlan& plan,
                          const WalkLog& log, const VecD& theta0, const VecD& dtheta0) {
   validateImpedanceGround(withPlantFriction(plant, ground));

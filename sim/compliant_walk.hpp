@@ -26,7 +26,7 @@ ContactStep compliantContactStep(const dynamics::Model& plant, const CompliantGr
 
 /// The walk of free_base_walk.hpp on this ground (impact = "compliant").
 /// @throws std::invalid_argument when the ground parameters are out of range.
-WalkResult walkCompliant(const dynamics::Model& plant, const TrackingController& controller,
+WalkResult walkCompliant(const dynamics::Model& plant, const Controller& controller,
                          const Reference& ref, const CompliantGround& ground, const WalkPlan& plan,
                          const WalkLog& log = {}, const VecD& theta0 = {},
                          const VecD& dtheta0 = {});

@@ -40,7 +40,7 @@ struct StepRun {
 /// Everything a step needs that does not change during the walk.
 struct Walker {
   const dynamics::Model& plant;
-  const TrackingController& controller;
+  const Controller& controller;
   const Reference& ref;
   const FreeBaseGround& ground;
   const WalkLog& log;
@@ -188,7 +188,7 @@ FreeBaseState freeBaseStart(const dynamics::Model& plant, const VecD& theta, con
   return s;
 }
 
-WalkResult walkFreeBase(const dynamics::Model& plant, const TrackingController& controller,
+WalkResult walkFreeBase(const dynamics::Model& plant, const Controller& controller,
                         const Reference& ref, const FreeBaseGround& ground, const WalkPlan& plan,
                         const WalkLog& log, const VecD& theta0, const VecD& dtheta0) {
   if (!(std::isfinite(ground.time_step) && ground.time_step > 0))

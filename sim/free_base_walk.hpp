@@ -84,7 +84,7 @@ FreeBaseState freeBaseStart(const dynamics::Model& plant, const VecD& theta, con
 /// Up to plan.steps steps (with the push where it acts) from the reference's start, or
 /// (theta0, dtheta0) when given; fills the same WalkResult as simulateWalk (impact = ground.name).
 /// @throws std::invalid_argument when ground.time_step is not positive and finite.
-WalkResult walkFreeBase(const dynamics::Model& plant, const TrackingController& controller,
+WalkResult walkFreeBase(const dynamics::Model& plant, const Controller& controller,
                         const Reference& ref, const FreeBaseGround& ground, const WalkPlan& plan,
                         const WalkLog& log = {}, const VecD& theta0 = {}, const VecD& dtheta0 = {});
 

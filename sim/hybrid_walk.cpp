@@ -29,7 +29,7 @@ Eigen::VectorXd join(const VecD& theta, const VecD& dtheta) {
 
 /// The closed loop in one phase: controller torques, plant accelerations and contact forces.
 struct ClosedLoop {
-  ClosedLoop(const dynamics::Model& plant_, const TrackingController& controller_,
+  ClosedLoop(const dynamics::Model& plant_, const Controller& controller_,
              const Reference& ref_, Phase phase_, const std::optional<Push>& push_ = {},
              int step_ = 0)
       : plant(plant_),
@@ -40,7 +40,7 @@ struct ClosedLoop {
         step(step_) {}
 
   const dynamics::Model& plant;
-  const TrackingController& controller;
+  const Controller& controller;
   const Reference& ref;
   Phase phase;
   std::optional<Push> push;  ///< acts in single support only
@@ -215,7 +215,7 @@ std::string chooseImpact(const dynamics::Model& plant, const VecD& theta, VecD& 
 
 }  // namespace
 
-StepResult simulateStep(const dynamics::Model& plant, const TrackingController& controller,
+StepResult simulateStep(const dynamics::Model& plant, const Controller& controller,
                         const Reference& ref, const VecD& theta0, const VecD& dtheta0,
                         const EventIntegratorOptions& o, const WalkLog& log, double t0,
                         int step_index, double stance_x, const std::optional<Push>& push) {
@@ -294,7 +294,7 @@ WalkTotals completedTotals(const WalkResult& walk) {
   return totals;
 }
 
-WalkResult simulateWalk(const dynamics::Model& plant, const TrackingController& controller,
+WalkResult simulateWalk(const dynamics::Model& plant, const Controller& controller,
                         const Reference& ref, const WalkOptions& options, const WalkLog& log,
                         const VecD& theta0, const VecD& dtheta0) {
   WalkResult w;

@@ -55,7 +55,7 @@ struct StepResult {
 };
 
 /// Simulates one step of `plant` under `controller` from the SSP start (theta0, dtheta0).
-StepResult simulateStep(const dynamics::Model& plant, const TrackingController& controller,
+StepResult simulateStep(const dynamics::Model& plant, const Controller& controller,
                         const Reference& ref, const VecD& theta0, const VecD& dtheta0,
                         const EventIntegratorOptions& options, const WalkLog& log = {},
                         double t0 = 0, int step_index = 0, double stance_x = 0,
@@ -80,7 +80,7 @@ struct WalkTotals {
 WalkTotals completedTotals(const WalkResult& walk);
 
 /// Up to options.steps steps from the reference's start, or (theta0, dtheta0) when given.
-WalkResult simulateWalk(const dynamics::Model& plant, const TrackingController& controller,
+WalkResult simulateWalk(const dynamics::Model& plant, const Controller& controller,
                         const Reference& ref, const WalkOptions& options, const WalkLog& log = {},
                         const VecD& theta0 = {}, const VecD& dtheta0 = {});
 

@@ -58,7 +58,7 @@ ContactStep lcpGroundStep(const dynamics::Model& plant, const LcpGround& ground,
   return out;
 }
 
-WalkResult walkLcp(const dynamics::Model& plant, const TrackingController& controller,
+WalkResult walkLcp(const dynamics::Model& plant, const Controller& controller,
                    const Reference& ref, const LcpGround& ground, const WalkPlan& plan,
                    const WalkLog& log, const VecD& theta0, const VecD& dtheta0) {
   const FreeBaseGround free_base{"lcp", ground.time_step,

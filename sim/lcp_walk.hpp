@@ -22,7 +22,7 @@ ContactStep lcpGroundStep(const dynamics::Model& plant, const LcpGround& ground,
                           const FreeBaseState& s, const TorqueFeedback& torque);
 
 /// The walk of free_base_walk.hpp on this ground (impact = "lcp").
-WalkResult walkLcp(const dynamics::Model& plant, const TrackingController& controller,
+WalkResult walkLcp(const dynamics::Model& plant, const Controller& controller,
                    const Reference& ref, const LcpGround& ground, const WalkPlan& plan,
                    const WalkLog& log = {}, const VecD& theta0 = {}, const VecD& dtheta0 = {});
 

@@ -8,7 +8,7 @@ namespace gaitopt::sim {
 namespace {
 
 /// P(x), or throws std::runtime_error with the failure.
-Eigen::VectorXd returnMap(const dynamics::Model& plant, const TrackingController& controller,
+Eigen::VectorXd returnMap(const dynamics::Model& plant, const Controller& controller,
                           const Reference& ref, const Eigen::VectorXd& x,
                           const EventIntegratorOptions& o) {
   const int n = plant.nLinks();
@@ -21,7 +21,7 @@ Eigen::VectorXd returnMap(const dynamics::Model& plant, const TrackingController
 
 }  // namespace
 
-PoincareAnalysis analysePoincare(const dynamics::Model& plant, const TrackingController& controller,
+PoincareAnalysis analysePoincare(const dynamics::Model& plant, const Controller& controller,
                                  const Reference& ref, const PoincareOptions& o) {
   PoincareAnalysis a;
   const int n = plant.nLinks();

@@ -30,7 +30,7 @@ struct PoincareAnalysis {
   double max_multiplier = 0;  ///< largest |eigenvalue|
 };
 
-PoincareAnalysis analysePoincare(const dynamics::Model& plant, const TrackingController& controller,
+PoincareAnalysis analysePoincare(const dynamics::Model& plant, const Controller& controller,
                                  const Reference& ref, const PoincareOptions& options = {});
 
 }  // namespace gaitopt::sim

@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "sim/hzd_controller.hpp"
 #include "sim/walk.hpp"
 
 namespace gaitopt::sim {
@@ -45,20 +46,43 @@ dynamics::Model scenarioControllerModel(const dynamics::Model& nominal, const Sc
   return s.errors_on_controller ? dynamics::perturbedModel(nominal, s.parameter_errors) : nominal;
 }
 
+namespace {
+
+/// HZD's restricted map on the controller's constraints: analytic, and measured on the plant.
+void analyseHzd(const dynamics::Model& plant, const dynamics::Model& model,
+                const HzdController& hzd, const Reference& ref, const Scenario& s,
+                ScenarioResult& r) {
+  r.hzd_map = restrictedMap(model, hzd.constraints());
+  const auto* rigid = std::get_if<RigidGround>(&s.ground);
+  if (s.poincare && rigid && r.hzd_map->zeta_minus > 0)
+    r.hzd_measured =
+        measureRestrictedMap(plant, hzd, ref, hzd.constraints(),
+                             r.hzd_map->multiplier * r.hzd_map->zeta_minus, rigid->integrator);
+}
+
+}  // namespace
+
 ScenarioResult runScenario(const dynamics::Model& nominal, const Reference& ref, const Scenario& s,
                            const WalkLog& log) {
   const auto start = std::chrono::steady_clock::now();
   const dynamics::Model plant = scenarioPlant(nominal, s);
-  const TrackingController controller(
-      scenarioControllerModel(nominal, s),
-      makeTrackingLaw(s.controller, scaledGains(s.gains, s.gain_scale)));
+  const dynamics::Model model = scenarioControllerModel(nominal, s);
+  const TrackingGains gains = scaledGains(s.gains, s.gain_scale);
   ScenarioResult r;
-  r.walk = walk(plant, controller, ref, s.ground, WalkPlan{s.steps, s.push}, log);
+  std::unique_ptr<Controller> controller;
+  if (s.controller == "hzd") {
+    auto hzd = makeHzdController(model, ref, makeTrackingLaw("computed_torque", gains));
+    analyseHzd(plant, model, *hzd, ref, s, r);
+    controller = std::move(hzd);
+  } else {
+    controller = std::make_unique<TrackingController>(model, makeTrackingLaw(s.controller, gains));
+  }
+  r.walk = walk(plant, *controller, ref, s.ground, WalkPlan{s.steps, s.push}, log);
   if (s.poincare) {
     if (const auto* rigid = std::get_if<RigidGround>(&s.ground)) {
       PoincareOptions options;
       options.integrator = rigid->integrator;
-      r.poincare = analysePoincare(plant, controller, ref, options);
+      r.poincare = analysePoincare(plant, *controller, ref, options);
     }
   }
   r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -10,6 +10,7 @@
 #include "dynamics/model_variation.hpp"
 #include "sim/ground_model.hpp"
 #include "sim/hybrid_walk.hpp"
+#include "sim/hzd_poincare.hpp"
 #include "sim/poincare.hpp"
 #include "sim/push.hpp"
 #include "sim/tracking_law.hpp"
@@ -17,7 +18,7 @@
 namespace gaitopt::sim {
 
 struct Scenario {
-  std::string controller = "computed_torque";  ///< see makeTrackingLaw
+  std::string controller = "computed_torque";  ///< see makeTrackingLaw, or "hzd" (PD gains)
   TrackingGains gains;
   double gain_scale = 1;  ///< bandwidth factor s: kp, K by s^2; kd, lambda by s
   dynamics::ParameterErrors parameter_errors;  ///< the plant's parameters are (1 + E) the nominal
@@ -34,6 +35,9 @@ struct Scenario {
 struct ScenarioResult {
   WalkResult walk;
   std::optional<PoincareAnalysis> poincare;  ///< when asked for and the ground is rigid
+  /// HZD only: the restricted map of the zero dynamics, analytic and (with poincare) measured.
+  std::optional<RestrictedMap> hzd_map;
+  std::optional<MeasuredRestrictedMap> hzd_measured;
   double wall_time_s = 0;
 };
 

@@ -15,7 +15,7 @@ TrackingController::TrackingController(dynamics::Model nominal,
                                        std::shared_ptr<const TrackingLaw> law)
     : model_(std::move(nominal)), law_(std::move(law)) {
   if (!model_.joints().front().actuated)
-    throw std::invalid_argument("computed-torque tracking needs an actuated stance ankle");
+    throw std::invalid_argument("tracking control of every joint needs an actuated stance ankle");
 }
 
 VecD TrackingController::sspAcceleration(const VecD& theta, const VecD& dtheta,

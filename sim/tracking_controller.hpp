@@ -13,11 +13,12 @@
 
 #include "dynamics/model.hpp"
 #include "gaits/trajectory.hpp"
+#include "sim/controller.hpp"
 #include "sim/tracking_law.hpp"
 
 namespace gaitopt::sim {
 
-class TrackingController {
+class TrackingController : public Controller {
  public:
   /// @throws std::invalid_argument when the stance ankle is unactuated (computed torque needs
   ///         full actuation in single support).
@@ -25,7 +26,7 @@ class TrackingController {
 
   /// Joint torques at the measured state (theta, dtheta) for reference knot `ref`.
   VecD torque(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
-              const gaits::Knot& ref) const;
+              const gaits::Knot& ref) const override;
   /// The same before clipping to the torque limits.
   VecD unclippedTorque(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
                        const gaits::Knot& ref) const;

@@ -18,7 +18,7 @@ std::string groundName(const GroundModel& ground) {
       ground);
 }
 
-WalkResult walk(const dynamics::Model& plant, const TrackingController& controller,
+WalkResult walk(const dynamics::Model& plant, const Controller& controller,
                 const Reference& ref, const GroundModel& ground, const WalkPlan& plan,
                 const WalkLog& log, const VecD& theta0, const VecD& dtheta0) {
   return std::visit(

@@ -11,7 +11,7 @@ namespace gaitopt::sim {
 /// Up to plan.steps steps of `plant` under `controller` on `ground`, from the reference's start or
 /// (theta0, dtheta0) when given.
 /// @throws std::invalid_argument when the ground's parameters are out of range.
-WalkResult walk(const dynamics::Model& plant, const TrackingController& controller,
+WalkResult walk(const dynamics::Model& plant, const Controller& controller,
                 const Reference& ref, const GroundModel& ground, const WalkPlan& plan,
                 const WalkLog& log = {}, const VecD& theta0 = {}, const VecD& dtheta0 = {});
 

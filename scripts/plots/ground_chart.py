@@ -9,6 +9,7 @@ path); right, the difference of the walk's end time (the timing). A time step wh
 Prints the picture's path, then a markdown table of the rows.
 """
 import os
+import sys
 
 import matplotlib
 
@@ -73,7 +74,7 @@ def main(path):
     out = os.path.join(os.path.dirname(os.path.abspath(path)), "ground_speed_accuracy.png")
     fig.tight_layout()
     fig.savefig(out, dpi=DPI)
-    print(out)
+    print(f"wrote {os.path.basename(out)}", file=sys.stderr)
     print(table(rows))
 
 

@@ -41,10 +41,10 @@ expect "degrees" 2 "degrees.yaml:18: key 'torso_angle': expected an angle in \[-
 # Zero or negative physical quantities.
 edit "$ROBOT" mass0.yaml '/torso/s/mass: 14.79/mass: 0/'
 poly --robot "$TMP/mass0.yaml" --gait "$GAIT"
-expect "zero mass" 2 "mass0.yaml:17: key 'links\[2\]\.mass': expected a positive number \[kg\], got 0"
+expect "zero mass" 2 "mass0.yaml:17: key 'links\[2\]\.mass': expected a number in \[0.001, 10000\] \[kg\], got 0"
 edit "$ROBOT" length.yaml '/swing_shank/s/length: 0.332/length: -0.332/'
 poly --robot "$TMP/length.yaml" --gait "$GAIT"
-expect "negative length" 2 "length.yaml:19: key 'links\[4\]\.length': expected a positive number \[m\], got -0.332"
+expect "negative length" 2 "length.yaml:19: key 'links\[4\]\.length': expected a number in \[0.001, 100\] \[m\], got -0.332"
 
 # An unknown key (a typo) in a robot and in an OCP config.
 edit "$ROBOT" typo.yaml 's/^friction:/frcition:/'

@@ -220,9 +220,29 @@ expect_error "(f) no impact map" impact_map.py "$TMP/empty" "$TMP/empty/impact_m
 printf 'mu_SL,type\n0.2,single\n' >"$TMP/empty/impact_map.csv"
 expect_error "(f) impact map column" impact_map.py "$TMP/empty" "$TMP/empty/impact_map.csv: missing column 'knee_bias_deg'"
 # Usage text and exit 1 without a folder argument.
-for script in gait_plots.py impact_map.py walk_plots.py stability_plots.py; do
+for script in gait_plots.py impact_map.py walk_plots.py stability_plots.py hzd_plots.py; do
   "$PY" "$PLOTS/$script" >/dev/null 2>"$TMP/err"
   [[ $? -eq 1 ]] && grep -q "^Usage: $script RESULT_DIR" "$TMP/err" || fail "(f) $script usage"
 done
+
+# (g) hzd_plots.py: the made-up walk with an "hzd" block draws hzd.png; without the block, or
+# with a non-numeric multiplier, "error: <summary>: ..." naming the key.
+make_walk "$TMP/hzd" 2 0
+"$PY" - "$TMP/hzd/summary.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+d["hzd"] = {"phase_weights": [0.5, 0.5, 0, 0, 0], "phase_plus": -0.3, "phase_minus": 0.35,
+            "restricted_multiplier": 0.55, "v_zero_minus": -330.0,
+            "zeta_minus_fixed_point": 733.3}
+json.dump(d, open(sys.argv[1], "w"))
+PY
+plot hzd_plots.py "$TMP/hzd"
+[[ $RC -eq 0 ]] || fail "(g) hzd_plots.py exited $RC: $(cat "$TMP/err")"
+grep -qx "$TMP/hzd/hzd.png" "$TMP/out" && [[ -s "$TMP/hzd/hzd.png" ]] || fail "(g) hzd.png"
+"$PY" -c "import json,sys; d=json.load(open(sys.argv[1])); d['hzd']['restricted_multiplier']='x'; \
+json.dump(d, open(sys.argv[1], 'w'))" "$TMP/hzd/summary.json"
+expect_error "(g) bad multiplier" hzd_plots.py "$TMP/hzd" \
+  "$TMP/hzd/summary.json: key 'hzd.restricted_multiplier': expected a number"
+expect_error "(g) no hzd block" hzd_plots.py "$TMP/walk" "$TMP/walk/summary.json: missing key 'hzd'"
 
 echo "plots_test: all checks passed"

@@ -73,5 +73,6 @@ bad "unknown controller" "controller" --reference "$REF" --controller pid
 sed 's/^stiffness: .*/stiffness: -1/' configs/grounds/impedance.yaml >"$TMP/ground.yaml"
 bad "bad ground" "stiffness" --reference "$REF" --ground "$TMP/ground.yaml"
 bad "case 4" "uncertainty-case" --reference "$REF" --uncertainty-case 4
+bad "hzd with a DSP" "controller hzd.*double support" --reference "$REF" --controller hzd
 [[ $(wc -l <"$TMP/rigid/steps.csv") -eq 3 ]] || fail "(d) a failed run touched the old result"
 echo "simulate CLI: all checks passed"

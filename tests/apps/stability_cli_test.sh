@@ -40,6 +40,7 @@ strip() { cut -d, -f1-8 "$1" | sort; }
 head -n 3 "$TMP/a/sweep_friction.csv" >"$TMP/c.csv"
 printf '0.5,2,2,0,"",0.0013' >>"$TMP/c.csv"
 mkdir -p "$TMP/c" && mv "$TMP/c.csv" "$TMP/c/sweep_friction.csv"
+cp "$TMP/a/.gaitopt-result" "$TMP/a/settings.json" "$TMP/c/"  # a killed run leaves them too
 run stability "${ARGS[@]}" --sweep friction=0.2:0.5:4 --out "$TMP/c"
 [[ $RC -eq 0 ]] || fail "(c) stability exited $RC: $(cat "$TMP/err")"
 grep -q "2 points to walk (2 done before)" "$TMP/out" || fail "(c) no resume: $(cat "$TMP/out")"

@@ -59,13 +59,22 @@ TEST_F(BadRobotFile, MissingKey) {
 TEST_F(BadRobotFile, NegativeMassNamesLinkAndExpectation) {
   const std::string msg = errorOf(write("mass: 5.28", "mass: -5.28"));
   EXPECT_NE(msg.find("key 'links[1].mass'"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("expected a positive number [kg], got -5.28"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("expected a number in [0.001, 10000] [kg], got -5.28"), std::string::npos)
+      << msg;
   EXPECT_TRUE(std::regex_search(msg, std::regex(R"(\.yaml:\d+: )"))) << "line number: " << msg;
 }
 
 TEST_F(BadRobotFile, ZeroLength) {
   const std::string msg = errorOf(write("length: 0.486", "length: 0"));
-  EXPECT_NE(msg.find("key 'links[2].length': expected a positive number [m], got 0"),
+  EXPECT_NE(msg.find("key 'links[2].length': expected a number in [0.001, 100] [m], got 0"),
+            std::string::npos)
+      << msg;
+}
+
+// mass 1e308 overflowed the mass matrix to NaN with exit 0 (issue 19): refused, range named.
+TEST_F(BadRobotFile, AbsurdMassNamesThePlausibleRange) {
+  const std::string msg = errorOf(write("mass: 5.28", "mass: 1e308"));
+  EXPECT_NE(msg.find("key 'links[1].mass': expected a number in [0.001, 10000] [kg], got 1e+308"),
             std::string::npos)
       << msg;
 }

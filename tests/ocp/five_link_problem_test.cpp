@@ -54,7 +54,7 @@ TEST(FiveLinkProblem, FreeDurationsUnequalMeshAndCostOfTransportHaveExactDerivat
   c.cost = CostWeights{.torque_squared = 1e-3, .cost_of_transport = 1.0};
   const auto model = dynamics::loadRobot(c.robot_path);
   const GaitProblem p = buildGaitProblem(model, c, polynomialGuess(model, c));
-  ASSERT_TRUE(p.ssp.freeDuration() && p.dsp->freeDuration());
+  ASSERT_TRUE(p.ssp.layout.freeDuration() && p.dsp->layout.freeDuration());
   const test::DerivativeErrors e = test::compareWithCentralDifferences(p.nlp, 0.02);
   EXPECT_LT(e.jacobian, 1e-6);
   EXPECT_LT(e.hessian, 1e-6);
@@ -140,7 +140,7 @@ TEST_F(FiveLinkSolution, SwingTipStaysAboveTheClearanceProfileBetweenTheNodes) {
   const ClearanceProfile& h = config_->clearance;
   ASSERT_TRUE(h.enabled && h.peak > 0);
   const gaits::Trajectory dense = reconstructDense(*problem_, *model_, result_->x, 1000.0);
-  const double t_ssp = problem_->ssp.durationAt(result_->x);
+  const double t_ssp = problem_->ssp.layout.durationAt(result_->x);
   double below_profile = 0, lowest_inside = 1;
   for (const auto& k : dense.knots()) {
     if (k.phase != gaits::Phase::kSsp) continue;
@@ -179,8 +179,8 @@ TEST_F(FiveLinkSolution, SegmentwiseResimulationThroughTheHybridModelReproducesT
   // loop: this robot's single support is unstable (errors grow ~3.5x every 0.04 s, measured),
   // so any local error would swamp the comparison; the segment-wise error is the collocation's.
   const auto& knots = traj_->knots();
-  const PhaseLayout& ssp = problem_->ssp;
-  const PhaseLayout& dsp = *problem_->dsp;
+  const PhaseLayout& ssp = problem_->ssp.layout;
+  const PhaseLayout& dsp = problem_->dsp->layout;
   auto segmentError = [&](size_t first, const PhaseLayout& l, bool in_dsp) {
     double err = 0;
     for (int seg = 0; seg < l.segments; ++seg) {
@@ -189,11 +189,12 @@ TEST_F(FiveLinkSolution, SegmentwiseResimulationThroughTheHybridModelReproducesT
       const auto& start = ref[static_cast<size_t>(2 * seg)];
       const auto& end = ref[static_cast<size_t>(2 * seg + 2)];
       const double t0 = l.time(2 * seg), h = l.time(2 * seg + 2) - t0;
-      const int n = model_->nLinks();
+      const Slice u = problem_->ssp.point.u;  // the same in both phases
       test::simulateChain(
           *model_, in_dsp, start.theta, start.dtheta,
           [&](double t) -> VecD {
-            return interpolatePoint(l, result_->x, t0 + t).segment(3 * n, n);
+            const Eigen::VectorXd point = interpolatePoint(l, result_->x, t0 + t);
+            return u.of(point);
           },
           {0.0, h}, 1e-11,
           [&](double t, const VecD& theta, const VecD&) {

@@ -91,10 +91,11 @@ TEST_F(RabbitSolution, ClosedFormImpactAndRelabelReturnToTheStart) {
 
 TEST_F(RabbitSolution, ForwardSimulationOfTheOptimalTorquesReproducesTheStates) {
   const auto traj = reconstruct(*problem_, *model_, result_->x);
-  const PhaseLayout& l = problem_->ssp;
-  const int n = model_->nLinks();
+  const PhaseLayout& l = problem_->ssp.layout;
+  const Slice u = problem_->ssp.point.u;
   auto torque = [&](double t) -> VecD {
-    return interpolatePoint(l, result_->x, t).segment(3 * n, n);
+    const Eigen::VectorXd point = interpolatePoint(l, result_->x, t);
+    return u.of(point);
   };
   std::vector<double> times;
   for (const auto& k : traj.knots()) times.push_back(k.t);

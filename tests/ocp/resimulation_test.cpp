@@ -91,7 +91,7 @@ TEST_F(RabbitResimulation, MeasuresAgainstTheSolutionsStrikeState) {
   // point and uses the torques only) must show up as an end error of about 0.05 rad.
   Solved s = solve(Scheme::kHermiteSimpson, 16);
   const double before = sspEndStateError(s.problem, *model_, s.x).angle;
-  const PhaseLayout& l = s.problem.ssp;
+  const PhaseLayout& l = s.problem.ssp.layout;
   const int last = l.points() - 1;
   for (int i = 0; i < model_->nLinks(); ++i) s.x(l.x(last, i)) += 0.05;
   const double after = sspEndStateError(s.problem, *model_, s.x).angle;

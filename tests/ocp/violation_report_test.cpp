@@ -34,14 +34,14 @@ dynamics::Model* RabbitViolations::model_ = nullptr;
 GaitProblem* RabbitViolations::problem_ = nullptr;
 
 TEST_F(RabbitViolations, AVariableBeyondItsBoundIsNamedByBlockPointAndElement) {
-  const PhaseLayout& l = problem_->ssp;
+  const PhaseLayout& l = problem_->ssp.layout;
   Eigen::VectorXd x = problem_->nlp.initialGuess();
   const int point = 5, element = 2;  // theta3 (torso) at point 5
   const int i = l.pointOffset(point) + element;
   x(i) = problem_->nlp.upperBounds()(i) + 1e4;  // beyond any violation of the guess
   const LocatedViolation v = worstBound(*problem_, x);
   EXPECT_EQ(v.violation.name, "ssp_points");
-  EXPECT_EQ(v.phase, "ssp");
+  EXPECT_EQ(v.violation.phase, "ssp");
   EXPECT_EQ(v.node_kind, "point");
   EXPECT_EQ(v.node, point);
   EXPECT_EQ(v.part, "element");
@@ -51,14 +51,14 @@ TEST_F(RabbitViolations, AVariableBeyondItsBoundIsNamedByBlockPointAndElement) {
 }
 
 TEST_F(RabbitViolations, AConstraintRowIsNamedBySetPhaseNodeAndRow) {
-  const PhaseLayout& l = problem_->ssp;
+  const PhaseLayout& l = problem_->ssp.layout;
   Eigen::VectorXd x = problem_->nlp.initialGuess();
   // A huge stance-shank acceleration at point 6 breaks the dynamics there (D a, D ~ 1 kg m^2)
   // far more than the defects of the segments around it (h T a / 6 ~ 0.03 a).
   x(l.xdot(6, l.nq)) += 1e6;
   const LocatedViolation v = worstConstraint(*problem_, x);
   EXPECT_EQ(v.violation.name, "ssp_dynamics");
-  EXPECT_EQ(v.phase, "ssp");
+  EXPECT_EQ(v.violation.phase, "ssp");
   EXPECT_EQ(v.node_kind, "point");
   EXPECT_EQ(v.node, 6);
   EXPECT_EQ(v.part, "row");
@@ -67,7 +67,7 @@ TEST_F(RabbitViolations, AConstraintRowIsNamedBySetPhaseNodeAndRow) {
 }
 
 TEST_F(RabbitViolations, ADefectIsNamedBySegment) {
-  const PhaseLayout& l = problem_->ssp;
+  const PhaseLayout& l = problem_->ssp.layout;
   Eigen::VectorXd x = problem_->nlp.initialGuess();
   // Moving the angle of link 1 by 1e3 rad at the midpoint of segment 2 (point 5) moves the
   // Hermite defect of that segment by as much; the dynamics see it through sines and cosines

@@ -1,0 +1,35 @@
+# `cmake --install BUILD --prefix P`: the gaitopt tool, the libraries, their headers under
+# include/gaitopt/, and a CMake package (lib/cmake/gaitopt) so another project can
+#   find_package(gaitopt 0.1 REQUIRED)
+#   target_link_libraries(app PRIVATE gaitopt::sim gaitopt::ocp)
+# (examples/controller/ is such a project; tests/package/ builds it against an installed tree).
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(GAITOPT_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/gaitopt)
+set(gaitopt_libraries config io dynamics gaits ocp sim library parallel)
+
+foreach(name IN LISTS gaitopt_libraries)
+  set_target_properties(gaitopt_${name} PROPERTIES EXPORT_NAME ${name})
+  install(DIRECTORY ${name}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/gaitopt/${name}
+          FILES_MATCHING PATTERN "*.hpp")
+endforeach()
+# The warning flags target is linked privately by every library: the static libraries' exported
+# link interface names it, so it is exported too (it carries no compile flags to consumers).
+set_target_properties(gaitopt_options PROPERTIES EXPORT_NAME options)
+list(TRANSFORM gaitopt_libraries PREPEND gaitopt_ OUTPUT_VARIABLE gaitopt_targets)
+install(TARGETS ${gaitopt_targets} gaitopt_options EXPORT gaitoptTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/gaitopt)
+install(TARGETS gaitopt_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(EXPORT gaitoptTargets NAMESPACE gaitopt:: DESTINATION ${GAITOPT_INSTALL_CMAKEDIR})
+
+configure_package_config_file(cmake/gaitoptConfig.cmake.in
+  ${CMAKE_CURRENT_BINARY_DIR}/gaitoptConfig.cmake
+  INSTALL_DESTINATION ${GAITOPT_INSTALL_CMAKEDIR})
+write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/gaitoptConfigVersion.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES ${CMAKE_CURRENT_BINARY_DIR}/gaitoptConfig.cmake
+              ${CMAKE_CURRENT_BINARY_DIR}/gaitoptConfigVersion.cmake
+        DESTINATION ${GAITOPT_INSTALL_CMAKEDIR})

@@ -1,0 +1,22 @@
+#pragma once
+/// @file settings_record.hpp
+/// What defines the rows of a resumable folder (a stability sweep's reference, controller,
+/// steps, ...; a library's grid and problem), recorded in the folder by the first run, so a
+/// rerun under other settings is refused instead of mixing rows of two experiments.
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace gaitopt::io {
+
+/// Writes `settings` to `path` when it does not exist; otherwise compares them with the
+/// recorded ones. @throws config::ConfigError (exit 2) naming every key that differs, with
+/// both values; WriteError when it cannot be written.
+void claimSettings(const std::string& path, const nlohmann::ordered_json& settings);
+
+/// A fingerprint of a file's bytes (64-bit FNV-1a, 16 hex digits), so a settings record names
+/// an input by content, not by a path that differs between machines. @throws
+/// config::ConfigError when it cannot be read.
+std::string fileFingerprint(const std::string& path);
+
+}  // namespace gaitopt::io

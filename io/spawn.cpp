@@ -1,0 +1,47 @@
+#include "io/spawn.hpp"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <cerrno>
+#include <system_error>
+
+extern char** environ;
+
+namespace gaitopt::io {
+namespace {
+
+/// posix_spawn's file actions, released on every path out.
+struct FileActions {
+  posix_spawn_file_actions_t actions{};
+  FileActions() { posix_spawn_file_actions_init(&actions); }
+  ~FileActions() { posix_spawn_file_actions_destroy(&actions); }
+  FileActions(const FileActions&) = delete;
+  FileActions& operator=(const FileActions&) = delete;
+};
+
+}  // namespace
+
+int runProgram(const std::vector<std::string>& argv, bool quiet) {
+  if (argv.empty()) throw std::invalid_argument("runProgram: empty argument vector");
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  FileActions fa;
+  if (quiet) {
+    posix_spawn_file_actions_addopen(&fa.actions, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_adddup2(&fa.actions, 1, 2);
+  }
+  pid_t pid = 0;
+  const int error = ::posix_spawn(&pid, args[0], &fa.actions, nullptr, args.data(), environ);
+  if (error != 0)
+    throw std::system_error(error, std::generic_category(), "cannot start " + argv[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) throw std::system_error(errno, std::generic_category(), "waitpid");
+  if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
+  return WEXITSTATUS(status);
+}
+
+}  // namespace gaitopt::io

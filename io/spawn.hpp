@@ -1,0 +1,15 @@
+#pragma once
+/// @file spawn.hpp
+/// External programs (the plot scripts) started from an argument vector with posix_spawn: no
+/// shell ever sees a path, so a quote or "$(...)" in a folder name is just part of the name.
+#include <string>
+#include <vector>
+
+namespace gaitopt::io {
+
+/// Runs argv[0] (an absolute path) with `argv` and waits for it. Returns its exit status, or
+/// 128 + N when signal N ended it. `quiet` sends its stdout and stderr to /dev/null.
+/// @throws std::system_error when it cannot be started (missing program, process limit).
+int runProgram(const std::vector<std::string>& argv, bool quiet = false);
+
+}  // namespace gaitopt::io

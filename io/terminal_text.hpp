@@ -1,0 +1,13 @@
+#pragma once
+/// @file terminal_text.hpp
+/// Text from files (a CSV header, a JSON key) shown on a terminal: control bytes (ESC sequences
+/// could move the cursor, retitle the window or hide the rest of a message) become \xNN.
+#include <string>
+#include <string_view>
+
+namespace gaitopt::io {
+
+/// `text` with every C0 control byte but newline and tab, and DEL, written as \xNN.
+std::string printable(std::string_view text);
+
+}  // namespace gaitopt::io

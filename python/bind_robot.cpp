@@ -1,0 +1,113 @@
+/// @file bind_robot.cpp
+/// gaitopt.Robot: the single-support dynamics D(theta) ddtheta + H(theta, dtheta) + G(theta) = tau
+/// (Mu 2.35 to 2.38) and the energies (Mu 2.3, 2.4) of a robot YAML, with numpy arrays.
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include "dynamics/energy.hpp"
+#include "dynamics/kinematics.hpp"
+#include "dynamics/model_variation.hpp"
+#include "dynamics/robot_config.hpp"
+#include "dynamics/ssp_dynamics.hpp"
+#include "python/bindings.hpp"
+
+namespace py = pybind11;
+
+namespace gaitopt::python {
+namespace {
+
+using dynamics::Model;
+using gaitopt::VecD;
+
+/// Angles and rates of the robot's size, or InputError (a numpy array of another length would
+/// otherwise index out of bounds).
+const VecD& sized(const Model& model, const VecD& v, const char* name) {
+  if (v.size() != model.nLinks())
+    throw std::invalid_argument(std::string(name) + ": expected " + std::to_string(model.nLinks()) +
+                                " values (one per link), got " + std::to_string(v.size()));
+  return v;
+}
+
+}  // namespace
+
+void bindRobot(py::module_& m) {
+  py::class_<Model>(m, "Robot", "A planar biped loaded from a robot YAML (configs/robots/).")
+      .def(py::init(&dynamics::loadRobot), py::arg("path"),
+           "Loads and checks a robot file; InputError names the file and key of a bad value.")
+      .def_property_readonly("name", &Model::name)
+      .def_property_readonly("n_links", &Model::nLinks)
+      .def_property_readonly("total_mass", &Model::totalMass, "[kg]")
+      .def_property_readonly("gravity", &Model::gravity, "|g| [m/s^2]")
+      .def_property_readonly("slope", &Model::slope, "ground inclination [rad], > 0 uphill")
+      .def_property_readonly("link_names",
+                             [](const Model& r) {
+                               std::vector<std::string> names;
+                               for (const auto& l : r.links()) names.push_back(l.name);
+                               return names;
+                             })
+      .def_property_readonly("link_lengths",
+                             [](const Model& r) {
+                               VecD l(r.nLinks());
+                               for (int i = 0; i < r.nLinks(); ++i) l(i) = r.link(i).length;
+                               return l;
+                             })
+      .def("with_slope", &dynamics::withSlope, py::arg("slope"),
+           "The same robot on a slope [rad] (gravity rotated).")
+      .def(
+          "mass_matrix",
+          [](const Model& r, const VecD& theta) {
+            return dynamics::massMatrix<double>(r, sized(r, theta, "theta"));
+          },
+          py::arg("theta"), "D(theta), n x n (Mu 2.36)")
+      .def(
+          "coriolis",
+          [](const Model& r, const VecD& theta, const VecD& dtheta) {
+            return dynamics::coriolis<double>(r, sized(r, theta, "theta"),
+                                              sized(r, dtheta, "dtheta"));
+          },
+          py::arg("theta"), py::arg("dtheta"), "H(theta, dtheta) (Mu 2.37)")
+      .def(
+          "gravity_vector",
+          [](const Model& r, const VecD& theta) {
+            return dynamics::gravityVector<double>(r, sized(r, theta, "theta"));
+          },
+          py::arg("theta"), "G(theta) (Mu 2.38)")
+      .def(
+          "kinetic_energy",
+          [](const Model& r, const VecD& theta, const VecD& dtheta) {
+            return dynamics::kineticEnergy<double>(r, sized(r, theta, "theta"),
+                                                   sized(r, dtheta, "dtheta"));
+          },
+          py::arg("theta"), py::arg("dtheta"), "K with the stance tip pinned [J] (Mu 2.4)")
+      .def(
+          "potential_energy",
+          [](const Model& r, const VecD& theta) {
+            return dynamics::potentialEnergy<double>(r, sized(r, theta, "theta"));
+          },
+          py::arg("theta"), "P with the stance tip at the origin [J] (Mu 2.3)")
+      .def(
+          "forward_dynamics",
+          [](const Model& r, const VecD& theta, const VecD& dtheta, const VecD& tau) {
+            return dynamics::sspForwardDynamics(r, sized(r, theta, "theta"),
+                                                sized(r, dtheta, "dtheta"), sized(r, tau, "tau"));
+          },
+          py::arg("theta"), py::arg("dtheta"), py::arg("tau"),
+          "ddtheta of single support under joint torques tau (q-space, tau0 the stance ankle)")
+      .def(
+          "inverse_dynamics",
+          [](const Model& r, const VecD& theta, const VecD& dtheta, const VecD& ddtheta) {
+            return dynamics::sspInverseDynamics(r, sized(r, theta, "theta"),
+                                                sized(r, dtheta, "dtheta"),
+                                                sized(r, ddtheta, "ddtheta"));
+          },
+          py::arg("theta"), py::arg("dtheta"), py::arg("ddtheta"),
+          "joint torques of single support (Mu 2.43)")
+      .def(
+          "swing_tip",
+          [](const Model& r, const VecD& theta) {
+            return dynamics::swingTip<double>(r, sized(r, theta, "theta"));
+          },
+          py::arg("theta"), "swing tip E relative to the stance tip B [m] (Mu 2.1)");
+}
+
+}  // namespace gaitopt::python

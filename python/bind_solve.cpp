@@ -1,0 +1,54 @@
+/// @file bind_solve.cpp
+/// gaitopt.optimize: an OCP config (configs/ocp/) solved as `gaitopt optimize` solves it, from the
+/// config's polynomial gait; the solution as a dict with the trajectory.
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include "ocp/gait_problem.hpp"
+#include "ocp/gait_solve.hpp"
+#include "ocp/initial_guess.hpp"
+#include "ocp/ocp_config.hpp"
+#include "python/bindings.hpp"
+
+namespace py = pybind11;
+
+namespace gaitopt::python {
+namespace {
+
+py::dict optimize(const std::string& config_path, double rate_hz) {
+  ocp::OcpConfig config = ocp::loadOcpConfig(config_path);
+  const dynamics::Model model = ocp::problemModel(config);
+  ocp::requireReachable(model, config, config_path);
+  config.solver.progress = false;
+  const ocp::GaitSolution solution = [&] {
+    py::gil_scoped_release release;  // Ipopt runs without the interpreter
+    return ocp::solveGait(model, config, ocp::polynomialGuess(model, config));
+  }();
+  const ocp::SolveResult& r = solution.result;
+  if (!r.success)
+    throw SolveFailed(
+        config_path + ": " + r.status + " after " + std::to_string(r.iterations) + " iterations",
+        r.status == "Infeasible_Problem_Detected");
+  py::dict out;
+  out["status"] = r.status;
+  out["iterations"] = r.iterations;
+  out["cost"] = r.cost;
+  out["max_violation"] = r.max_violation;
+  out["wall_time_s"] = r.wall_time_s;
+  out["robot"] = model;
+  out["knots"] = ocp::reconstruct(solution.problem, model, r.x);
+  out["trajectory"] = ocp::reconstructDense(solution.problem, model, r.x, rate_hz);
+  return out;
+}
+
+}  // namespace
+
+void bindSolve(py::module_& m) {
+  m.def("optimize", &optimize, py::arg("config_path"), py::arg("rate_hz") = 1000.0,
+        "Solves an OCP config with Ipopt as `gaitopt optimize` does. Returns a dict: status, "
+        "iterations, cost, max_violation, wall_time_s, robot (on the config's slope), knots "
+        "(one per collocation point) and trajectory (sampled at rate_hz, as trajectory.csv). "
+        "InputError for a bad config, InfeasibleError or NotConvergedError for a failed solve.");
+}
+
+}  // namespace gaitopt::python

@@ -1,0 +1,104 @@
+/// @file bind_trajectory.cpp
+/// gaitopt.Trajectory (gaits/trajectory.hpp) with its knots as numpy arrays, the polynomial gait
+/// of Mu ch. 3 (design_poly) and trajectory.csv (read_trajectory, write_trajectory).
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include "dynamics/model_variation.hpp"
+#include "gaits/gait_params.hpp"
+#include "gaits/hip_plan_search.hpp"
+#include "gaits/polynomial_gait.hpp"
+#include "gaits/trajectory_csv.hpp"
+#include "python/bindings.hpp"
+
+namespace py = pybind11;
+
+namespace gaitopt::python {
+namespace {
+
+using gaits::Knot;
+using gaits::Trajectory;
+
+/// One knot field of every knot as rows of a matrix (N x size).
+template <class Field>
+Eigen::MatrixXd stacked(const Trajectory& traj, Field field) {
+  const auto& knots = traj.knots();
+  const Eigen::Index cols = knots.empty() ? 0 : field(knots.front()).size();
+  Eigen::MatrixXd out(static_cast<Eigen::Index>(knots.size()), cols);
+  for (std::size_t k = 0; k < knots.size(); ++k)
+    out.row(static_cast<Eigen::Index>(k)) = field(knots[k]).transpose();
+  return out;
+}
+
+template <class Field>
+void addMatrix(py::class_<Trajectory>& c, const char* name, Field field, const char* doc) {
+  c.def_property_readonly(
+      name, [field](const Trajectory& t) { return stacked(t, field); }, doc);
+}
+
+/// The polynomial gait of a gait YAML for `robot` on the gait's slope (as `gaitopt poly`).
+Trajectory designPoly(const dynamics::Model& robot, const std::string& gait_path, double rate_hz) {
+  const gaits::GaitParams params = gaits::loadGait(gait_path);
+  const dynamics::Model model = dynamics::withSlope(robot, params.slope);
+  const gaits::HipPlanSearch search = gaits::searchHipPlan(model, params);
+  return gaits::buildTrajectory(gaits::PolynomialGait(model, params, search.plan), model, rate_hz);
+}
+
+}  // namespace
+
+void bindTrajectory(py::module_& m) {
+  py::class_<Trajectory> c(m, "Trajectory",
+                           "One step sampled on a time grid; a phase switch is two knots at "
+                           "the same time (the last SSP knot, the first DSP knot).");
+  c.def_property_readonly("robot", &Trajectory::robot)
+      .def_property_readonly("step_length", &Trajectory::stepLength, "[m]")
+      .def_property_readonly("duration", &Trajectory::duration, "[s]")
+      .def_property_readonly("n_links", &Trajectory::nLinks)
+      .def_property_readonly("phase_durations",
+                             [](const Trajectory& t) {
+                               std::vector<std::pair<std::string, double>> out;
+                               for (const auto& [phase, d] : t.phaseDurations())
+                                 out.emplace_back(gaits::toString(phase), d);
+                               return out;
+                             })
+      .def_property_readonly("t",
+                             [](const Trajectory& t) {
+                               Eigen::VectorXd out(static_cast<Eigen::Index>(t.knots().size()));
+                               for (std::size_t k = 0; k < t.knots().size(); ++k)
+                                 out(static_cast<Eigen::Index>(k)) = t.knots()[k].t;
+                               return out;
+                             })
+      .def_property_readonly("phase",
+                             [](const Trajectory& t) {
+                               std::vector<std::string> out;
+                               for (const Knot& k : t.knots()) out.emplace_back(toString(k.phase));
+                               return out;
+                             })
+      .def("resample", &Trajectory::resample, py::arg("rate_hz"))
+      .def("__len__", [](const Trajectory& t) { return t.knots().size(); });
+  addMatrix(
+      c, "theta", [](const Knot& k) { return k.theta; }, "absolute angles [rad], N x n");
+  addMatrix(
+      c, "dtheta", [](const Knot& k) { return k.dtheta; }, "[rad/s], N x n");
+  addMatrix(
+      c, "ddtheta", [](const Knot& k) { return k.ddtheta; }, "[rad/s^2], N x n");
+  addMatrix(
+      c, "tau", [](const Knot& k) { return k.tau; }, "joint torques [N m], N x n");
+  addMatrix(
+      c, "force_stance", [](const Knot& k) { return Eigen::VectorXd(k.force_stance); },
+      "ground force on the stance tip [N], N x 2");
+  addMatrix(
+      c, "force_swing", [](const Knot& k) { return Eigen::VectorXd(k.force_swing); },
+      "ground force on the swing tip [N] (zero in SSP), N x 2");
+
+  m.def("design_poly", &designPoly, py::arg("robot"), py::arg("gait_path"),
+        py::arg("rate_hz") = 1000.0,
+        "The polynomial gait of Mu (2004) ch. 3 for a gait YAML (configs/gaits/); "
+        "InfeasibleError when the robot cannot realise it.");
+  m.def("read_trajectory", &gaits::readTrajectoryCsv, py::arg("path"), py::arg("robot"),
+        "Reads a trajectory.csv for the robot.");
+  m.def("write_trajectory", &gaits::writeTrajectoryCsv, py::arg("trajectory"), py::arg("robot"),
+        py::arg("path"), "Writes trajectory.csv (DESIGN.md sec. 5).");
+}
+
+}  // namespace gaitopt::python

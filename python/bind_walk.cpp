@@ -1,0 +1,81 @@
+/// @file bind_walk.cpp
+/// gaitopt.simulate: a closed-loop walk of a reference gait (sim/scenario.hpp), every logged
+/// sample as numpy arrays and one entry per step.
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include "python/bindings.hpp"
+#include "sim/scenario.hpp"
+
+namespace py = pybind11;
+
+namespace gaitopt::python {
+namespace {
+
+py::dict samplesDict(const std::vector<sim::WalkSample>& samples, int n) {
+  const auto rows = static_cast<Eigen::Index>(samples.size());
+  Eigen::VectorXd t(rows), stance_x(rows);
+  Eigen::VectorXi step(rows);
+  Eigen::MatrixXd theta(rows, n), theta_ref(rows, n), tau(rows, n);
+  std::vector<std::string> phase;
+  for (Eigen::Index k = 0; k < rows; ++k) {
+    const sim::WalkSample& s = samples[static_cast<std::size_t>(k)];
+    t(k) = s.t;
+    step(k) = s.step + 1;
+    stance_x(k) = s.stance_x;
+    theta.row(k) = s.theta.transpose();
+    theta_ref.row(k) = s.theta_ref.transpose();
+    tau.row(k) = s.tau.transpose();
+    phase.emplace_back(gaits::toString(s.phase));
+  }
+  py::dict out;
+  out["t"] = t;
+  out["step"] = step;
+  out["phase"] = phase;
+  out["stance_x"] = stance_x;
+  out["theta"] = theta;
+  out["theta_ref"] = theta_ref;
+  out["tau"] = tau;
+  return out;
+}
+
+py::dict simulate(const dynamics::Model& robot, const gaits::Trajectory& reference, int steps,
+                  const std::string& controller, double gain_scale) {
+  if (steps < 1) throw std::invalid_argument("steps: expected at least 1");
+  sim::Scenario scenario;
+  scenario.steps = steps;
+  scenario.controller = controller;
+  scenario.gain_scale = gain_scale;
+  std::vector<sim::WalkSample> samples;
+  const sim::ScenarioResult result = [&] {
+    py::gil_scoped_release release;
+    return sim::runScenario(robot, sim::Reference(reference), scenario,
+                            [&](const sim::WalkSample& s) { samples.push_back(s); });
+  }();
+  py::list step_list;
+  for (const sim::StepResult& s : result.walk.steps)
+    step_list.append(py::dict(
+        py::arg("ok") = s.ok, py::arg("failure") = s.failure, py::arg("impact") = s.impact,
+        py::arg("ssp_duration") = s.ssp_duration, py::arg("dsp_duration") = s.dsp_duration,
+        py::arg("advance") = s.advance, py::arg("max_tracking_error") = s.max_tracking_error));
+  py::dict out = samplesDict(samples, robot.nLinks());
+  out["steps_completed"] = result.walk.steps_completed;
+  out["fell"] = result.walk.fell;
+  out["failure"] = result.walk.failure;
+  out["max_tracking_error"] = result.walk.max_tracking_error;
+  out["steps"] = step_list;
+  return out;
+}
+
+}  // namespace
+
+void bindWalk(py::module_& m) {
+  m.def("simulate", &simulate, py::arg("robot"), py::arg("reference"), py::arg("steps") = 5,
+        py::arg("controller") = "computed_torque", py::arg("gain_scale") = 1.0,
+        "Walks `reference` (a Trajectory of `robot`) on rigid ground under a tracking controller "
+        "(computed_torque or sliding_mode), as `gaitopt simulate`. Returns a dict: t, step, "
+        "phase, stance_x, theta, theta_ref, tau (every logged sample), steps (one dict per "
+        "step), steps_completed, fell, failure, max_tracking_error.");
+}
+
+}  // namespace gaitopt::python

@@ -1,0 +1,72 @@
+#!/usr/bin/python3
+"""Draws walk.gif, the first steps of a `gaitopt simulate` walk as an animated stick figure, for
+the README (the report page of `gaitopt report` animates the whole walk).
+
+Usage: walk_gif.py RESULT_DIR
+Reads RESULT_DIR/stick.csv (walk_plots.read_stick) and writes RESULT_DIR/walk.gif with Pillow,
+one GIF frame per stick.csv frame at its real-time spacing, the ground and the axes fixed so the
+robot is seen to walk across. A missing or malformed file ends the script with exit code 1.
+"""
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from matplotlib import animation  # noqa: E402
+
+import plot_io  # noqa: E402
+import walk_plots  # noqa: E402
+
+STEPS = 6  # shown: enough to see the gait repeat, small enough for a README (about 1 MB)
+DPI = 80
+COLORS = ["tab:blue", "tab:green", "tab:red", "tab:orange", "tab:purple", "tab:brown"]
+
+
+def first_steps(frames, steps):
+    return [f for f in frames if f[1] <= steps]
+
+
+def draw(frames, path):
+    starts = np.concatenate([f[2] for f in frames] + [f[3] for f in frames])
+    x_min, y_min = starts.min(axis=0)
+    x_max, y_max = starts.max(axis=0)
+    fig, ax = plt.subplots(figsize=(8, 2.8))
+    ax.set_aspect("equal")
+    ax.set_xlim(x_min - 0.1, x_max + 0.1)
+    ax.set_ylim(min(y_min, 0) - 0.05, y_max + 0.08)
+    ax.axhline(0, color="0.3", lw=1.5)
+    ax.set_xlabel("x [m]")
+    ax.set_yticks([])
+    lines = [ax.plot([], [], lw=4, solid_capstyle="round", color=COLORS[k % len(COLORS)])[0]
+             for k in range(len(frames[0][2]))]
+    label = ax.text(0.01, 0.92, "", transform=ax.transAxes, fontsize=10)
+    fig.tight_layout()
+
+    def update(i):
+        t, step, p0, p1 = frames[i]
+        for k, line in enumerate(lines):
+            line.set_data([p0[k, 0], p1[k, 0]], [p0[k, 1], p1[k, 1]])
+        label.set_text(f"step {step}   t = {t:.2f} s")
+        return lines + [label]
+
+    dt = np.diff([f[0] for f in frames])
+    interval_ms = 1000 * float(np.median(dt[dt > 0])) if np.any(dt > 0) else 50
+    anim = animation.FuncAnimation(fig, update, frames=len(frames), interval=interval_ms,
+                                   blit=True)
+    anim.save(path, writer=animation.PillowWriter(fps=1000 / interval_ms), dpi=DPI)
+    plt.close(fig)
+
+
+def main(result_dir):
+    stick = os.path.join(result_dir, "stick.csv")
+    n = int(plot_io.read_csv(stick, "stick diagram", ["link"])["link"].max())
+    frames = first_steps(walk_plots.read_stick(stick, n), STEPS)
+    path = os.path.join(result_dir, "walk.gif")
+    draw(frames, path)
+    print(path)
+
+
+if __name__ == "__main__":
+    plot_io.run_main(main, __doc__)

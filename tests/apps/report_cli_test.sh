@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# End-to-end checks of `gaitopt report`: the page of a gait and of a walk (self-contained: no
+# http(s) reference, every chart inlined), walk.gif, a non-result folder exits 2; the walk page
+# in headless Chromium (report_browser_check.py: renders, no console error, the robot moves).
+# Usage: report_cli_test.sh <path to gaitopt binary> <repo root>
+set -u
+[[ $# -eq 2 ]] || { echo "usage: $0 <gaitopt binary> <repo root>" >&2; exit 1; }
+GAITOPT=$1
+ROOT=$2
+# shellcheck source=tests/apps/cli_test_lib.sh
+source "$(dirname "$0")/cli_test_lib.sh"
+cd "$ROOT" || fail "no repo root $ROOT"
+
+# (a) a gait folder: the page animates the step and inlines overview.png.
+run poly --robot configs/robots/mu2004_five_link.yaml --gait configs/gaits/mu2004.yaml \
+  --out "$TMP/poly"
+[[ $RC -eq 0 ]] || fail "(a) poly exited $RC: $(cat "$TMP/err")"
+run report "$TMP/poly"
+[[ $RC -eq 0 ]] || fail "(a) report exited $RC: $(cat "$TMP/err")"
+page="$TMP/poly/report.html"
+[[ -s "$page" ]] || fail "(a) no report.html"
+grep -qE '(src|href)="https?:' "$page" && fail "(a) the page loads something from the network"
+"$PY" - "$page" "$TMP/poly" <<'PY' || fail "(a) page content"
+import base64, json, pathlib, re, sys
+page, folder = pathlib.Path(sys.argv[1]).read_text(), pathlib.Path(sys.argv[2])
+data = json.loads(re.search(r"const DATA = (.*?);\n", page).group(1))
+assert data["kind"] == "gait", data["kind"]
+f = data["frames"]
+assert f["phase"][0] == "SSP" and f["phase"][-1] == "DSP", f["phase"][::10]
+assert abs(f["t"][-1] - f["t"][0] - 0.7) < 1e-3, f["t"][-1]  # the gait's 0.6 s SSP + 0.1 s DSP
+# Every frame's links form a chain from the stance tip at the origin (B), 5 links of Mu Table 2.1.
+for links in f["links"]:
+    assert len(links) == 5 and abs(links[0][0]) < 1e-4 and abs(links[0][1]) < 1e-4, links[0]
+    assert abs(links[1][0] - links[0][2]) < 2e-4 and abs(links[1][1] - links[0][3]) < 2e-4
+# Charts inlined byte for byte.
+png = {c["name"]: c["src"] for c in data["charts"]}
+want = base64.b64encode((folder / "overview.png").read_bytes()).decode()
+assert png["overview.png"] == "data:image/png;base64," + want
+PY
+
+# (b) a walk folder: the page, walk.gif with one frame per stick.csv frame of the first steps.
+run simulate --reference "$TMP/poly" --steps 3 --no-poincare --no-plots --out "$TMP/walk"
+[[ $RC -eq 0 ]] || fail "(b) simulate exited $RC: $(cat "$TMP/err")"
+run report "$TMP/walk"
+[[ $RC -eq 0 ]] || fail "(b) report exited $RC: $(cat "$TMP/err")"
+[[ -s "$TMP/walk/report.html" && -s "$TMP/walk/walk.gif" ]] || fail "(b) report.html or walk.gif"
+"$PY" - "$TMP/walk" <<'PY' || fail "(b) walk.gif"
+import sys
+from PIL import Image
+import numpy as np
+rows = np.genfromtxt(sys.argv[1] + "/stick.csv", delimiter=",", names=True, dtype=None,
+                     encoding="ascii")
+frames = len(set(rows["t"]))  # every frame of the 3 steps (the GIF shows up to 6)
+gif = Image.open(sys.argv[1] + "/walk.gif")
+assert gif.n_frames >= frames - 1, (gif.n_frames, frames)
+PY
+
+# (c) not a result folder: exit 2 naming it; no page written.
+mkdir -p "$TMP/empty"
+run report "$TMP/empty"
+[[ $RC -eq 2 ]] || fail "(c) exit $RC for a folder without results"
+grep -q "$TMP/empty" "$TMP/err" || fail "(c) message does not name the folder: $(cat "$TMP/err")"
+[[ -e "$TMP/empty/report.html" ]] && fail "(c) a page was written"
+
+# (d) the walk page in a browser: renders, no console error, the robot walks between 0.1 and 0.5 s.
+command -v chromium >/dev/null || fail "(d) chromium missing (scripts/install-deps.sh installs it)"
+"$PY" "$(dirname "$0")/report_browser_check.py" "$TMP/walk/report.html" "$TMP" 0.1 0.5 ||
+  fail "(d) browser check"
+echo "report_cli_test: all checks passed"

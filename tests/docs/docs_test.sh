@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# The README and docs/ pages against results/: they match (scripts/docs.py check), and a number
+# changed by hand in the README, or a result regenerated without rendering, makes the check fail.
+# Usage: docs_test.sh SOURCE_DIR
+set -euo pipefail
+src="$1"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+docs="/usr/bin/python3 $src/scripts/docs.py"
+
+$docs check --root "$src"
+
+cp -r "$src/docs" "$src/results" "$src/README.md" "$tmp/"
+$docs check --root "$tmp"
+
+# A hand edit: the first digit of the README's first table row that holds one.
+line="$(grep -n '^|.*[0-9]' "$tmp/README.md" | head -1 | cut -d: -f1)"
+[ -n "$line" ] || { echo "FAIL: README has no table with a number"; exit 1; }
+sed -i "${line}s/\([0-9]\)/\1\1/" "$tmp/README.md"
+if $docs check --root "$tmp" 2>"$tmp/err"; then
+  echo "FAIL: a number changed by hand in README.md line $line passed the check"; exit 1
+fi
+grep -q "README.md:$line differs" "$tmp/err" || { cat "$tmp/err"; echo "FAIL: not named"; exit 1; }
+
+# A result regenerated without rendering: the cost of the optimal gait changes.
+cp "$src/README.md" "$tmp/README.md"
+/usr/bin/python3 - "$tmp/results/opt_mu2004/summary.json" <<'PY'
+import json, sys
+p = sys.argv[1]; d = json.load(open(p)); d["cost"] *= 1.5; json.dump(d, open(p, "w"))
+PY
+if $docs check --root "$tmp" 2>/dev/null; then
+  echo "FAIL: a changed result passed the check"; exit 1
+fi
+echo "docs: check passes on the tree and fails on a hand edit and on a stale result"

@@ -1,0 +1,104 @@
+// The safe output folder of DESIGN 7a: what may be replaced, inputs, paths, locks, leftovers.
+#include "io/output_folder.hpp"
+
+#include <stdexcept>
+
+#include "config/config_error.hpp"
+#include "io/checked_write.hpp"
+#include "io_test_dir.hpp"
+
+namespace gaitopt::io::test {
+namespace {
+
+namespace fs = std::filesystem;
+using OutputFolderTest = IoTest;
+
+void fillWith(const std::string& dir, const std::string& text) {
+  writeFile(dir + "/result.txt", text);
+}
+
+TEST_F(OutputFolderTest, NewFolderIsWrittenWithMarkerAndNoLeftovers) {
+  const OutputFolder out(path("res"), {});
+  out.write([](const std::string& d) { fillWith(d, "one"); });
+  EXPECT_EQ(slurp(path("res/result.txt")), "one");
+  EXPECT_TRUE(fs::exists(path("res") + "/" + kMarker));
+  int entries = 0;
+  for (const auto& e : fs::directory_iterator(dir_)) entries += e.path().filename() != "res";
+  EXPECT_EQ(entries, 1) << "only OUT.lock while the folder is held";
+}
+
+TEST_F(OutputFolderTest, OwnResultIsReplacedButForeignFolderAndFileAreRefused) {
+  OutputFolder(path("res"), {}).write([](const std::string& d) { fillWith(d, "one"); });
+  OutputFolder(path("res"), {}).write([](const std::string& d) { fillWith(d, "two"); });
+  EXPECT_EQ(slurp(path("res/result.txt")), "two");
+  fs::create_directories(path("mine"));
+  put(path("mine/thesis.tex"), "precious");
+  EXPECT_THROW(OutputFolder(path("mine"), {}), config::ConfigError);
+  EXPECT_EQ(slurp(path("mine/thesis.tex")), "precious");
+  put(path("file"), "data");
+  EXPECT_THROW(OutputFolder(path("file"), {}), config::ConfigError);
+  EXPECT_EQ(slurp(path("file")), "data");
+}
+
+TEST_F(OutputFolderTest, InputsOfTheCommandAreRefusedByRealPath) {
+  put(path("config.yaml"), "x");
+  fs::create_directories(path("ref"));
+  EXPECT_THROW(OutputFolder(path("config.yaml"), {path("config.yaml")}), config::ConfigError);
+  // Another spelling of the same folder, and a folder holding an input.
+  EXPECT_THROW(OutputFolder(path("ref/../ref/"), {path("ref")}), config::ConfigError);
+  fs::create_symlink(path("ref"), path("link"));
+  EXPECT_THROW(OutputFolder(path("ref"), {path("link")}), config::ConfigError);
+  EXPECT_THROW(OutputFolder(dir_.string(), {path("config.yaml")}), config::ConfigError);
+}
+
+TEST_F(OutputFolderTest, PathsWithoutAFolderNameAreRefusedAndTrailingSlashNormalised) {
+  for (const char* bad : {"", ".", "./", "..", "/", "a/.."})
+    EXPECT_THROW(normaliseOutPath(bad, "--out"), config::ConfigError) << bad;
+  EXPECT_EQ(normaliseOutPath("results/run1/", "--out"), "results/run1");
+  EXPECT_EQ(normaliseOutPath("results//run1///", "--out"), "results/run1");
+}
+
+TEST_F(OutputFolderTest, SecondWriterIsRefusedWhileTheFirstHoldsTheLock) {
+  const OutputFolder first(path("res"), {});
+  EXPECT_THROW(OutputFolder(path("res"), {}), config::ConfigError);
+}
+
+TEST_F(OutputFolderTest, FailedFillKeepsThePreviousResult) {
+  OutputFolder(path("res"), {}).write([](const std::string& d) { fillWith(d, "good"); });
+  EXPECT_THROW(OutputFolder(path("res"), {}).write([](const std::string& d) {
+    fillWith(d, "half");
+    throw std::runtime_error("disk full");
+  }),
+               std::runtime_error);
+  EXPECT_EQ(slurp(path("res/result.txt")), "good");
+}
+
+TEST_F(OutputFolderTest, LeftoversOfDeadRunsAreCleanedAndAnOrphanedOldResultRestored) {
+  // pid 2^22 + 1 is above the kernel's pid_max: no process can have it.
+  const std::string dead = "4194305";
+  fs::create_directories(path("res.tmp-" + dead));
+  fs::create_directories(path("res.old-" + dead));
+  put(path("res.old-" + dead + "/result.txt"), "previous");
+  put(path("res.old-" + dead + "/") + kMarker, "");
+  fs::create_directories(path("res.tmp-1x"));  // not ours: not a pid
+  const OutputFolder out(path("res"), {});
+  EXPECT_EQ(slurp(path("res/result.txt")), "previous");
+  EXPECT_FALSE(fs::exists(path("res.tmp-" + dead)));
+  EXPECT_FALSE(fs::exists(path("res.old-" + dead)));
+  EXPECT_TRUE(fs::exists(path("res.tmp-1x")));
+}
+
+TEST_F(OutputFolderTest, ResumableFolderKeepsItsFilesAndRefusesForeignOnes) {
+  {
+    const ResumableFolder f(path("sweep"), {});
+    put(path("sweep/rows.csv"), "a\n");
+  }
+  const ResumableFolder again(path("sweep"), {});
+  EXPECT_EQ(slurp(path("sweep/rows.csv")), "a\n");
+  fs::create_directories(path("home"));
+  put(path("home/notes"), "x");
+  EXPECT_THROW(ResumableFolder(path("home"), {}), config::ConfigError);
+}
+
+}  // namespace
+}  // namespace gaitopt::io::test

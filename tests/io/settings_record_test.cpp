@@ -1,0 +1,57 @@
+// Settings records of resumable folders, strict JSON and terminal-safe text.
+#include "io/settings_record.hpp"
+
+#include "config/config_error.hpp"
+#include "io/strict_json.hpp"
+#include "io/terminal_text.hpp"
+#include "io_test_dir.hpp"
+
+namespace gaitopt::io::test {
+namespace {
+
+using SettingsTest = IoTest;
+
+TEST_F(SettingsTest, SameSettingsResumeOtherSettingsAreRefusedNamingTheDifference) {
+  const nlohmann::ordered_json a = {{"controller", "computed_torque"}, {"steps", 10}};
+  claimSettings(path("s.json"), a);
+  EXPECT_NO_THROW(claimSettings(path("s.json"), a));
+  try {
+    claimSettings(path("s.json"), {{"controller", "sliding_mode"}, {"steps", 10}});
+    FAIL();
+  } catch (const config::ConfigError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(e.key(), "controller");
+    EXPECT_NE(what.find("controller: folder \"computed_torque\", this run \"sliding_mode\""),
+              std::string::npos)
+        << what;
+    EXPECT_EQ(what.find("steps:"), std::string::npos) << what;
+  }
+}
+
+TEST_F(SettingsTest, FingerprintFollowsContentNotName) {
+  put(path("a"), "1,2,3\n");
+  put(path("b"), "1,2,3\n");
+  put(path("c"), "1,2,4\n");
+  EXPECT_EQ(fileFingerprint(path("a")), fileFingerprint(path("b")));
+  EXPECT_NE(fileFingerprint(path("a")), fileFingerprint(path("c")));
+  put(path("empty"), "");
+  EXPECT_EQ(fileFingerprint(path("empty")), "cbf29ce484222325");  // the FNV-1a offset basis
+}
+
+TEST(StrictJson, DuplicateKeyIsRefusedAtAnyDepthButNotAcrossObjects) {
+  EXPECT_THROW(parseStrictJson<nlohmann::json>(R"({"theta": [1], "theta": [2]})", "s.json"),
+               config::ConfigError);
+  EXPECT_THROW(parseStrictJson<nlohmann::json>(R"({"a": {"b": 1, "b": 1}})", "s.json"),
+               config::ConfigError);
+  EXPECT_NO_THROW(parseStrictJson<nlohmann::json>(R"({"a": {"b": 1}, "c": {"b": 2}})", "s.json"));
+  EXPECT_NO_THROW(parseStrictJson<nlohmann::json>(R"([{"b": 1}, {"b": 2}])", "s.json"));
+}
+
+TEST(TerminalText, ControlBytesAreEscapedPrintableTextKept) {
+  EXPECT_EQ(printable("t\x1b[2Jx\x07"), "t\\x1b[2Jx\\x07");
+  EXPECT_EQ(printable("line\n\tok \xc2\xb0"), "line\n\tok \xc2\xb0");
+  EXPECT_EQ(printable("\x7f"), "\\x7f");
+}
+
+}  // namespace
+}  // namespace gaitopt::io::test

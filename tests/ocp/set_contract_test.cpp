@@ -1,0 +1,167 @@
+// One contract over every constraint set and cost term of the shipped gait problems
+// (configs/ocp/*.yaml, on a coarse mesh: the sets are the same code whatever the segments):
+// outputs fully written, derivatives against the set's own central differences, the same
+// sparsity at three random points (tests/support/set_contract.hpp). Each set is its own test,
+// named config_set, so a failure names the set. A last test shows that the contract catches one
+// perturbed Jacobian entry.
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "dynamics/model.hpp"
+#include "ocp/gait_problem.hpp"
+#include "ocp/initial_guess.hpp"
+#include "support/set_contract.hpp"
+
+namespace gaitopt::ocp {
+namespace {
+
+/// A shipped config's problem; the model outlives the sets that point to it.
+struct Shipped {
+  OcpConfig config;
+  dynamics::Model model;
+  GaitProblem problem;
+};
+
+constexpr int kSegments = 3;  // per phase
+
+const std::map<std::string, std::unique_ptr<Shipped>>& shippedProblems() {
+  static const auto problems = [] {
+    std::map<std::string, std::unique_ptr<Shipped>> all;
+    const std::filesystem::path dir = std::filesystem::path(GAITOPT_SOURCE_DIR) / "configs/ocp";
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+      if (entry.path().extension() != ".yaml") continue;
+      OcpConfig config = loadOcpConfig(entry.path().string());
+      for (auto& phase : config.phases) {
+        phase.segments = kSegments;
+        phase.mesh.clear();
+      }
+      const dynamics::Model model = problemModel(config);
+      auto s = std::make_unique<Shipped>(Shipped{config, model, {}});
+      s->problem = buildGaitProblem(s->model, s->config, polynomialGuess(s->model, s->config));
+      all.emplace(entry.path().stem().string(), std::move(s));
+    }
+    return all;
+  }();
+  return problems;
+}
+
+struct SetCase {
+  std::string config;
+  bool cost = false;  ///< a cost term, else a constraint set
+  size_t index = 0;
+  std::string name;
+};
+
+std::vector<SetCase> allSets() {
+  std::vector<SetCase> cases;
+  for (const auto& [config, s] : shippedProblems()) {
+    const Nlp& nlp = s->problem.nlp;
+    for (size_t i = 0; i < nlp.constraintSets().size(); ++i)
+      cases.push_back({config, false, i, nlp.constraintSets()[i]->name()});
+    for (size_t i = 0; i < nlp.costTerms().size(); ++i)
+      cases.push_back({config, true, i, nlp.costTerms()[i]->name()});
+  }
+  return cases;
+}
+
+/// Random point i: the guess moved by up to 0.05 in every variable (angles, rates, torques,
+/// forces alike: a generic point near the solutions the solver visits).
+Eigen::VectorXd randomPoint(const Nlp& nlp, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-0.05, 0.05);
+  Eigen::VectorXd x = nlp.initialGuess();
+  for (auto& v : x) v += u(rng);
+  return x;
+}
+
+Eigen::VectorXd randomMultipliers(int rows, unsigned seed) {
+  std::mt19937 rng(seed + 100);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Eigen::VectorXd lambda(rows);
+  for (auto& v : lambda) v = u(rng);
+  return lambda;
+}
+
+std::string joined(const std::vector<std::string>& broken) {
+  std::string out;
+  for (const auto& b : broken) out += "\n  " + b;
+  return out;
+}
+
+class SetContract : public ::testing::TestWithParam<SetCase> {};
+
+TEST_P(SetContract, WritesEveryOutputHasExactDerivativesAndAFixedSparsity) {
+  const SetCase& c = GetParam();
+  const Nlp& nlp = shippedProblems().at(c.config)->problem.nlp;
+  test::RecordedPattern pattern;
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    const Eigen::VectorXd x = randomPoint(nlp, seed);
+    const auto broken =
+        c.cost ? test::checkCostTerm(*nlp.costTerms()[c.index], x, 0.7, pattern)
+               : test::checkConstraintSet(
+                     *nlp.constraintSets()[c.index], x,
+                     randomMultipliers(nlp.constraintSets()[c.index]->rows(), seed), pattern);
+    EXPECT_TRUE(broken.empty()) << c.config << ": " << (c.cost ? "cost " : "constraint set ")
+                                << c.name << " at random point " << seed << joined(broken);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(ShippedProblems, SetContract, ::testing::ValuesIn(allSets()),
+                         [](const ::testing::TestParamInfo<SetCase>& info) {
+                           return info.param.config + "_" + info.param.name;
+                         });
+
+/// A set whose Jacobian has one entry off by `delta`: what a slip in a hand-written derivative
+/// looks like.
+class PerturbedJacobian : public ConstraintSet {
+ public:
+  PerturbedJacobian(const ConstraintSet& set, size_t entry, double delta)
+      : ConstraintSet(set.name(), set.rows()), set_(&set), entry_(entry), delta_(delta) {}
+  Eigen::VectorXd lowerBounds() const override { return set_->lowerBounds(); }
+  Eigen::VectorXd upperBounds() const override { return set_->upperBounds(); }
+  void values(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> g) const override {
+    set_->values(x, g);
+  }
+  void jacobian(const Eigen::VectorXd& x, Triplets& out) const override {
+    const size_t first = out.size();
+    set_->jacobian(x, out);
+    auto& e = out[first + entry_];
+    e = {e.row(), e.col(), e.value() + delta_};
+  }
+  void hessian(const Eigen::VectorXd& x, const Eigen::VectorXd& lambda,
+               Triplets& out) const override {
+    set_->hessian(x, lambda, out);
+  }
+
+ private:
+  const ConstraintSet* set_;
+  size_t entry_;
+  double delta_;
+};
+
+TEST(SetContractSelfTest, OnePerturbedJacobianEntryBreaksTheContract) {
+  const Nlp& nlp = shippedProblems().at("mu2004_walk")->problem.nlp;
+  const auto& sets = nlp.constraintSets();
+  const auto dynamics = std::find_if(sets.begin(), sets.end(),
+                                     [](const auto& s) { return s->name() == "ssp_dynamics"; });
+  ASSERT_NE(dynamics, sets.end());
+  const Eigen::VectorXd x = randomPoint(nlp, 1);
+  const Eigen::VectorXd lambda = randomMultipliers((*dynamics)->rows(), 1);
+  test::RecordedPattern intact, perturbed;
+  EXPECT_TRUE(test::checkConstraintSet(**dynamics, x, lambda, intact).empty());
+  // Entry 7 of the sequence off by 1e-3 (the residual's entries are O(1-100)).
+  const auto broken =
+      test::checkConstraintSet(PerturbedJacobian(**dynamics, 7, 1e-3), x, lambda, perturbed);
+  ASSERT_EQ(broken.size(), 1u) << joined(broken);
+  EXPECT_NE(broken.front().find("Jacobian"), std::string::npos) << broken.front();
+  std::cout << "perturbed ssp_dynamics:" << joined(broken) << '\n';
+}
+
+}  // namespace
+}  // namespace gaitopt::ocp

@@ -1,0 +1,81 @@
+"""Gaits from Python: the polynomial gait's boundary conditions (Mu ch. 3), an OCP solve whose
+cost equals the CLI's on the same config, a closed-loop walk that stays on its reference, and
+the CLI's exit codes as exception types."""
+import json
+import subprocess
+
+import numpy as np
+import pytest
+
+import gaitopt
+from conftest import ROOT
+
+RABBIT_OCP = str(ROOT / "configs/ocp/rabbit_kelly2017.yaml")
+
+
+def test_poly_gait_boundary_conditions(robot, poly_gait):
+    g = poly_gait
+    assert g.step_length == pytest.approx(0.35)  # configs/gaits/mu2004.yaml
+    assert g.duration == pytest.approx(0.7)
+    assert [p for p, _ in g.phase_durations] == ["SSP", "DSP"]
+    theta = g.theta
+    assert theta.shape == (len(g), 5) and g.t.shape == (len(g),)
+    # The swing tip leaves the ground at the start and lands one step length ahead at touchdown
+    # (the last SSP knot), on level ground.
+    touchdown = g.phase.index("DSP") - 1
+    np.testing.assert_allclose(robot.swing_tip(theta[0]), [-0.35, 0.0], atol=1e-9)
+    np.testing.assert_allclose(robot.swing_tip(theta[touchdown]), [0.35, 0.0], atol=1e-9)
+    # Periodic after relabelling: the end posture is the start posture with the legs swapped
+    # (links 1,2 <-> 5,4, torso kept).
+    np.testing.assert_allclose(theta[-1], theta[0][[4, 3, 2, 1, 0]], atol=1e-6)
+    # The torques are the inverse dynamics of the motion in single support.
+    k = 5
+    np.testing.assert_allclose(
+        robot.inverse_dynamics(theta[k], g.dtheta[k], g.ddtheta[k]), g.tau[k], atol=1e-6)
+
+
+def test_optimize_cost_equals_the_cli(cli, tmp_path):
+    py = gaitopt.optimize(RABBIT_OCP)
+    assert py["status"] == "Solve_Succeeded" and py["max_violation"] < 1e-6
+    out = tmp_path / "rabbit"
+    subprocess.run([cli, "optimize", "--config", RABBIT_OCP, "--out", str(out), "--quiet",
+                    "--no-plots"], check=True, cwd=ROOT, capture_output=True)
+    summary = json.loads((out / "summary.json").read_text())
+    assert py["cost"] == pytest.approx(summary["cost"], rel=1e-9)
+    assert py["iterations"] == summary["iterations"]
+    traj = py["trajectory"]
+    assert traj.duration == pytest.approx(summary["duration"])
+    assert traj.step_length == pytest.approx(summary["step_length"])
+
+
+def test_walk_stays_on_the_reference(robot, poly_gait):
+    w = gaitopt.simulate(robot, poly_gait, steps=3)
+    assert w["steps_completed"] == 3 and not w["fell"], w["failure"]
+    assert w["max_tracking_error"] < 2e-3  # as the CLI's simulate test: 1.3e-3 rad
+    for s in w["steps"]:
+        assert s["advance"] == pytest.approx(0.35, abs=1e-3)
+    err = np.abs(w["theta"] - w["theta_ref"]).max()
+    assert err == pytest.approx(w["max_tracking_error"], rel=1e-6, abs=1e-9)
+    assert w["t"].shape[0] == w["theta"].shape[0] and np.all(np.diff(w["t"]) >= 0)
+
+
+def test_errors_carry_the_cli_exit_codes(robot, tmp_path):
+    with pytest.raises(gaitopt.InputError) as info:
+        gaitopt.optimize(str(tmp_path / "missing.yaml"))
+    assert info.value.exit_code == 2
+    with pytest.raises(gaitopt.InputError, match="steps"):
+        gaitopt.simulate(robot, gaitopt.design_poly(robot, str(ROOT / "configs/gaits/mu2004.yaml")),
+                         steps=0)
+    with pytest.raises(gaitopt.InputError):
+        gaitopt.simulate(robot, gaitopt.design_poly(robot, str(ROOT / "configs/gaits/mu2004.yaml")),
+                         controller="pid")
+    # A step longer than the legs reach is valid input describing something impossible: exit 3.
+    long_step = tmp_path / "long.yaml"
+    text = (ROOT / "configs/gaits/mu2004.yaml").read_text()
+    long_step.write_text(text.replace("step_length: 0.35", "step_length: 1.5"))
+    assert "step_length: 1.5" in long_step.read_text()
+    with pytest.raises(gaitopt.InfeasibleError) as info:
+        gaitopt.design_poly(robot, str(long_step))
+    assert info.value.exit_code == 3
+    assert issubclass(gaitopt.NotConvergedError, gaitopt.GaitoptError)
+    assert gaitopt.NotConvergedError.exit_code == 4
