@@ -59,8 +59,7 @@ const std::vector<Lever> kLevers = {
        o.mu_strategy = "monotone";
        o.mu_init = 1e-2;
      }},
-    {"mumps_pivot_order 7 (MUMPS chooses)",
-     [](ocp::SolverOptions& o) { o.mumps_pivot_order = 7; }},
+    {"mumps_pivot_order 7 (MUMPS chooses)", [](ocp::SolverOptions& o) { o.mumps_pivot_order = 7; }},
     {"mu_strategy adaptive", [](ocp::SolverOptions& o) { o.mu_strategy = "adaptive"; }},
     {"mumps_pivot_order 5 (METIS)", [](ocp::SolverOptions& o) { o.mumps_pivot_order = 5; }},
     {"nlp_scaling_method none", [](ocp::SolverOptions& o) { o.nlp_scaling_method = "none"; }},
