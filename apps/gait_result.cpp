@@ -35,6 +35,30 @@ nlohmann::ordered_json meshHistory(const std::vector<ocp::MeshRound>& history) {
   return rounds;
 }
 
+nlohmann::ordered_json solverJson(const ocp::SolverOptions& s) {
+  return {{"tolerance", s.tolerance},
+          {"max_iterations", s.max_iterations},
+          {"hessian", s.hessian},
+          {"jacobian", s.jacobian},
+          {"linear_solver", s.linear_solver},
+          {"mu_strategy", s.mu_strategy},
+          {"mu_init", s.mu_init},
+          {"bound_push", s.bound_push},
+          {"bound_frac", s.bound_frac},
+          {"mumps_pivot_order", s.mumps_pivot_order},
+          {"nlp_scaling_method", s.nlp_scaling_method},
+          {"print_level", s.print_level}};
+}
+
+/// Every solver setting the solution came from: the config's (defaults filled in), those of
+/// the warm-started refinement rounds, and the refinement's resample rate.
+nlohmann::ordered_json solverSettings(const ocp::OcpConfig& config) {
+  auto json = solverJson(config.solver);
+  json["refinement_rounds"] = solverJson(ocp::warmStarted(config.solver));
+  json["refinement_resample_hz"] = ocp::kRefinementResampleHz;
+  return json;
+}
+
 /// The location of a violation for summary.json; `name_key` says what the name names.
 nlohmann::ordered_json violationJson(const ocp::LocatedViolation& v, const std::string& name_key) {
   const ocp::Violation& w = v.violation;
@@ -114,6 +138,7 @@ nlohmann::ordered_json writeGaitResult(const GaitResultOptions& o, const dynamic
                     {"segments", solution.history.back().segments},
                     {"scheme", ocp::toString(problem.ssp.layout.scheme)}};
   summary["mesh_history"] = meshHistory(solution.history);
+  summary["solver"] = solverSettings(config);
   writeGaitFiles(dir, dense, model, summary, o.plots);
   return summary;
 }

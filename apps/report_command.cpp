@@ -13,6 +13,7 @@
 #include "apps/report_page.hpp"
 #include "config/config_error.hpp"
 #include "dynamics/robot_config.hpp"
+#include "io/checked_write.hpp"
 
 namespace gaitopt::apps {
 namespace {
@@ -137,25 +138,17 @@ ReportContent collect(const ReportOptions& o) {
   return c;
 }
 
-void writePage(const std::string& path, const std::string& page) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out << page;
-    out.close();
-    if (!out) throw std::runtime_error(fmt::format("{}: cannot write", tmp));
-  }
-  fs::rename(tmp, path);
-}
-
 }  // namespace
 
 void runReport(const ReportOptions& o) {
+  // The page is the one file this command writes: never over an input (summary.json, a CSV).
+  if (!o.out.empty() && !o.out.ends_with(".html"))
+    throw config::ConfigError(o.out, "--out", 0, "expected a .html file for the page");
   const ReportContent content = collect(o);
   const std::string out = o.out.empty() ? o.dir + "/report.html" : o.out;
-  writePage(out, renderReportPage(content));
+  io::writeFileAtomically(out, renderReportPage(content));
   fmt::print("report: wrote {} ({} result, {} charts)\n", out, content.kind, content.charts.size());
-  if (o.gif && content.kind == "walk" && runPlotScript("walk_gif.py", fmt::format("'{}'", o.dir)))
+  if (o.gif && content.kind == "walk" && runPlotScript("walk_gif.py", {o.dir}))
     fmt::print("report: wrote {}/walk.gif\n", o.dir);
 }
 

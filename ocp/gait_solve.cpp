@@ -98,8 +98,8 @@ GaitSolution solveGait(const dynamics::Model& model, OcpConfig config,
                       round == config.refinement.max_rounds ||
                       !refine(config, s.problem, s.result, errors);
     if (done) break;
-    s.problem =
-        buildGaitProblem(model, config, reconstructDense(s.problem, model, s.result.x, 2000));
+    s.problem = buildGaitProblem(
+        model, config, reconstructDense(s.problem, model, s.result.x, kRefinementResampleHz));
     options = warmStarted(config.solver);
   }
   s.result.wall_time_s = wall;

@@ -12,6 +12,11 @@
 
 namespace gaitopt::ocp {
 
+/// The rate at which a refined round resamples the previous round's solution into its initial
+/// guess [Hz]: far finer than any mesh (a 0.7 s step on 100 segments has ~7 ms segments), so
+/// the guess is the previous solution's own polynomials.
+inline constexpr double kRefinementResampleHz = 2000;
+
 /// One solve of the refinement sequence.
 struct MeshRound {
   std::vector<int> segments;  ///< per phase (SSP, then DSP)

@@ -77,4 +77,27 @@ assert all(b < a for a, b in zip(errors, errors[1:])), errors
 assert errors[-1] <= 5.0e-5 and h[-1]["segments"][0] > 25, h
 assert d["iterations"] == sum(r["iterations"] for r in h)
 PY
+
+# (g) a result folder re-solves to the same cost from its summary.json and config alone: the
+# config with its solver block replaced by the summary's `solver` echo (every setting, defaults
+# filled in; the refinement rounds' settings are fixed by the code and only echoed).
+"$PY" - "$TMP/opt/summary.json" "$TMP/resolve.yaml" <<'PY' || fail "(g) config from summary"
+import json, os, sys, yaml
+summary = json.load(open(sys.argv[1]))
+config = yaml.safe_load(open(summary["config"]))
+here = os.path.dirname(os.path.abspath(summary["config"]))
+for key in ("robot", "initial_guess"):
+    config[key] = os.path.normpath(os.path.join(here, config[key]))
+config["solver"] = {k: v for k, v in summary["solver"].items() if not k.startswith("refinement")}
+json.dump(config, open(sys.argv[2], "w"))  # JSON is YAML
+PY
+run optimize --config "$TMP/resolve.yaml" --out "$TMP/resolve" --quiet --no-plots
+[[ $RC -eq 0 ]] || fail "(g) re-solve exited $RC: $(cat "$TMP/err")"
+"$PY" - "$TMP/opt/summary.json" "$TMP/resolve/summary.json" <<'PY' || fail "(g) re-solve"
+import json, sys
+first, again = (json.load(open(f)) for f in sys.argv[1:3])
+assert abs(again["cost"] - first["cost"]) <= 1e-9 * first["cost"], (again["cost"], first["cost"])
+assert again["iterations"] == first["iterations"], (again["iterations"], first["iterations"])
+assert again["solver"] == first["solver"], (again["solver"], first["solver"])
+PY
 echo "optimize CLI: all checks passed"

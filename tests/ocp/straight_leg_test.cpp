@@ -100,10 +100,10 @@ TEST_P(ShippedStraightLegConfig, SolvesToAPeriodicGaitTheResimulationReproduces)
   const SolveResult& r = s.solution.result;
   const GaitProblem& p = s.solution.problem;
   ASSERT_TRUE(r.success) << r.status;
-  const int n = s.model.nLinks(), last = p.ssp.points() - 1;
+  const int last = p.ssp.layout.points() - 1;
   // Periodic through the closed-form impact map and relabelling, not the OCP's own rows.
-  const ChainState next = nextStart(s.model, sspPointState(p, n, r.x, last));
-  const StateError period = difference(next, sspPointState(p, n, r.x, 0));
+  const ChainState next = nextStart(s.model, sspPointState(p, r.x, last));
+  const StateError period = difference(next, sspPointState(p, r.x, 0));
   EXPECT_LT(period.angle, 1e-7);
   EXPECT_LT(period.rate, 1e-6);
   // The torques re-simulated segment by segment reproduce each segment's end state (local
@@ -131,8 +131,8 @@ TEST_F(PassiveSlopeWalk, NeedsNoTorqueAndRepeatsItselfWithout) {
   const GaitProblem& p = s.solution.problem;
   ASSERT_TRUE(r.success) << r.status;
   double peak = 0;
-  for (int k = 0; k < p.ssp.points(); ++k)
-    peak = std::max(peak, p.ssp.point(r.x, k).segment(3 * 2, 2).cwiseAbs().maxCoeff());
+  for (int k = 0; k < p.ssp.layout.points(); ++k)
+    peak = std::max(peak, p.ssp.point.u.of(p.ssp.layout.point(r.x, k)).cwiseAbs().maxCoeff());
   RecordProperty("cost", fmt::format("{:.3e}", r.cost));
   RecordProperty("peak_hip_torque_Nm", fmt::format("{:.3e}", peak));
   EXPECT_LT(r.cost, 1e-8);  // N^2 m^2 s; a level-ground step costs ~10^2 (compass_gait_walk)
@@ -140,9 +140,8 @@ TEST_F(PassiveSlopeWalk, NeedsNoTorqueAndRepeatsItselfWithout) {
   // Independently: the zero-torque motion from the optimum's start state, integrated by RKF
   // 7(8) over the optimum's step, ends with the swing tip on the ground one step ahead, and
   // the impact map and relabelling bring it back to where it started: a passive gait.
-  const int n = 2;
-  const double duration = p.ssp.durationAt(r.x);
-  const ChainState start = sspPointState(p, n, r.x, 0);
+  const double duration = p.ssp.layout.durationAt(r.x);
+  const ChainState start = sspPointState(p, r.x, 0);
   ChainState strike = start;
   simulateSsp(
       s.model, start.first, start.second, [](double) { return VecD(VecD::Zero(2)); },
