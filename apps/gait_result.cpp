@@ -45,6 +45,8 @@ nlohmann::ordered_json solverJson(const ocp::SolverOptions& s) {
           {"mu_init", s.mu_init},
           {"bound_push", s.bound_push},
           {"bound_frac", s.bound_frac},
+          {"mumps_pivot_order", s.mumps_pivot_order},
+          {"nlp_scaling_method", s.nlp_scaling_method},
           {"print_level", s.print_level}};
 }
 

@@ -23,8 +23,24 @@ struct SolverOptions {
   double mu_init = 0.1;                  ///< initial barrier parameter
   double bound_push = 0.01;              ///< how far Ipopt moves the start inside the bounds
   double bound_frac = 0.01;              ///< the same, relative to the bound interval
-  int print_level = 0;                   ///< 0 silent ... 5 Ipopt's iteration table
-  bool progress = false;                 ///< one line per iteration on stdout (ours)
+  /// MUMPS fill-reducing ordering (ICNTL(7)): 0 AMD, 2 AMF, 3 SCOTCH, 4 PORD, 5 METIS, 6 QAMD,
+  /// 7 MUMPS chooses. AMD: 0.77 of the CPU time of a whole five-link solve against MUMPS's own
+  /// choice, 0.91 on RABBIT, same iterations (results/solve_profile.md)
+  int mumps_pivot_order = 0;
+  std::string nlp_scaling_method = "gradient-based";  ///< or "none"
+  int print_level = 0;                                ///< 0 silent ... 5 Ipopt's iteration table
+  bool progress = false;                              ///< one line per iteration on stdout (ours)
+};
+
+/// Where a solve's time went and how large its linear systems were (bench/solve_profile.cpp).
+struct SolveProfile {
+  int factorizations = 0;           ///< numerical factorizations of the KKT matrix (MUMPS)
+  double sparsity_time_s = 0;       ///< recording the Jacobian and Hessian patterns
+  double linear_solver_time_s = 0;  ///< factorizations and back-solves of the KKT system (wall)
+  /// The augmented system Ipopt factorises: variables, constraint rows and one slack per
+  /// inequality row (fixed variables included; Ipopt removes them)
+  int kkt_dimension = 0;
+  int kkt_nonzeros = 0;  ///< lower triangle: Hessian, Jacobian and the slacks' diagonal
 };
 
 struct SolveResult {
@@ -40,6 +56,7 @@ struct SolveResult {
   std::string point = "last iterate";
   double wall_time_s = 0;
   double callback_time_s = 0;  ///< time spent evaluating the Nlp (ours, not Ipopt's)
+  SolveProfile profile;
 };
 
 /// `options` for a start next to an optimum: a small barrier and small pushes off the bounds,

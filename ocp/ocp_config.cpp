@@ -99,13 +99,18 @@ MeshRefinement readRefinement(const YamlReader& r) {
 
 void readSolver(const YamlReader& r, SolverOptions& s) {
   r.allowOnly({"tolerance", "max_iterations", "hessian", "jacobian", "linear_solver", "print_level",
-               "mu_strategy", "mu_init", "bound_push", "bound_frac"});
+               "mu_strategy", "mu_init", "bound_push", "bound_frac", "mumps_pivot_order",
+               "nlp_scaling_method"});
   if (r.has("mu_strategy")) s.mu_strategy = r.choice("mu_strategy", {"monotone", "adaptive"});
   s.mu_init = r.numberOr("mu_init", s.mu_init, config::inRange(1e-12, 1e3, ""));
   s.tolerance = r.numberOr("tolerance", s.tolerance, config::inRange(1e-14, 1e-1, ""));
   s.max_iterations =
       static_cast<int>(r.numberOr("max_iterations", s.max_iterations, config::inRange(1, 1e5, "")));
   if (r.has("hessian")) s.hessian = r.choice("hessian", {"exact", "limited-memory"});
+  s.mumps_pivot_order = static_cast<int>(
+      r.numberOr("mumps_pivot_order", s.mumps_pivot_order, config::inRange(0, 7, "")));
+  if (r.has("nlp_scaling_method"))
+    s.nlp_scaling_method = r.choice("nlp_scaling_method", {"gradient-based", "none"});
   if (r.has("jacobian")) s.jacobian = r.choice("jacobian", {"exact", "finite-difference-values"});
   if (r.has("linear_solver")) s.linear_solver = r.choice("linear_solver", {"mumps"});
   s.bound_push = r.numberOr("bound_push", s.bound_push, config::inRange(1e-12, 0.5, ""));

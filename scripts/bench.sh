@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Runs the dynamics micro-benchmarks and prints a markdown table of per-benchmark median and
 # minimum time over 15 repetitions, with the ratio of each median to BM_MassMatrix's; then
-# the OCP solve-time table (bench/ocp_bench.cpp), then the speed-against-accuracy table and chart
+# the OCP solve-time table (bench/ocp_bench.cpp), the solve-time profile of issue 16 (where a
+# whole solve's time goes, and the solver settings measured against the shipped ones,
+# bench/solve_profile.cpp), then the speed-against-accuracy table and chart
 # of the ground models (bench/ground_bench.cpp, scripts/plots/ground_chart.py).
 # Usage: scripts/bench.sh BUILD_DIR   (BUILD_DIR configured with GAITOPT_BUILD_BENCH=ON, built)
 set -euo pipefail
@@ -60,6 +62,14 @@ echo
 ocp="$1/bench/ocp_bench"
 [[ -x "$ocp" ]] || { echo "error: $ocp not built" >&2; exit 1; }
 "$ocp" 5
+
+echo
+profile="$1/bench/solve_profile"
+[[ -x "$profile" ]] || { echo "error: $profile not built" >&2; exit 1; }
+echo "Load average before the solve profile: $(cut -d' ' -f1-3 /proc/loadavg)"
+"$profile" 5
+echo
+"$profile" 5 levers
 
 echo
 ground="$1/bench/ground_bench"

@@ -102,6 +102,31 @@ TEST(DoubleIntegrator, HermiteSimpsonRecoversTheExactCubic) {
   EXPECT_GT(r.iterations, 0);
 }
 
+/// Distinct (row, col) positions of `triplets`, merged by Eigen rather than by SparsityPattern.
+int distinctEntries(const Triplets& triplets, int rows, int cols) {
+  Eigen::SparseMatrix<double> m(rows, cols);
+  m.setFromTriplets(triplets.begin(), triplets.end());
+  return static_cast<int>(m.nonZeros());
+}
+
+TEST(DoubleIntegrator, SolveProfileCountsTheKktSystemAndOneFactorizationPerIteration) {
+  const PhaseLayout layout = layoutFor(Scheme::kHermiteSimpson, 5);
+  const Nlp nlp = buildProblem(layout);
+  const SolveResult r = solveWithIpopt(nlp, SolverOptions{});
+  ASSERT_TRUE(r.success) << r.status;
+  const int n = nlp.variables(), m = nlp.constraints();  // equalities only: no slacks
+  EXPECT_EQ(r.profile.kkt_dimension, n + m);
+  const Eigen::VectorXd x = nlp.initialGuess(), ones = Eigen::VectorXd::Ones(m);
+  EXPECT_EQ(r.profile.kkt_nonzeros, distinctEntries(nlp.jacobianTriplets(x), m, n) +
+                                        distinctEntries(nlp.hessianTriplets(x, 1.0, ones), n, n) +
+                                        n + m);
+  // Every iteration solves with a fresh factorization, and the start needs one more (the
+  // least-squares multipliers).
+  EXPECT_GE(r.profile.factorizations, r.iterations + 1);
+  EXPECT_GT(r.profile.linear_solver_time_s, 0);
+  EXPECT_LT(r.profile.linear_solver_time_s + r.profile.sparsity_time_s, r.wall_time_s);
+}
+
 TEST(DoubleIntegrator, HermiteSimpsonIsExactOnAnUnequalMeshAndBetweenItsNodes) {
   PhaseLayout layout = layoutFor(Scheme::kHermiteSimpson, 4);
   layout.mesh = {0.0, 0.1, 0.45, 0.5, 1.0};
