@@ -12,7 +12,7 @@ expression EXPR formatted with the format spec SPEC (e.g. `.3g`). EXPR may call:
     j(FILE, KEY)          a value of a JSON file; KEY is dotted, list items by index (`a.0.b`)
     c(FILE, COLUMN, **W)  a CSV cell: the column of the one row whose cells equal W
     md(FILE)              a whole markdown file (a table written by a script)
-and abs, min, max, round, len. FILE is relative to the repository root. `docs/src/README.md`
+and abs, min, max, round, len, format, str, sum, zip, sorted. FILE is relative to the repository root. `docs/src/README.md`
 becomes `README.md`; `docs/src/NAME.md` becomes `docs/NAME.md`.
 """
 import argparse
@@ -63,6 +63,7 @@ class Sources:
     def namespace(self):
         return {"j": self.json_value, "c": self.csv_value, "md": self.markdown,
                 "abs": abs, "min": min, "max": max, "round": round, "len": len,
+                "format": format, "str": str, "sum": sum, "zip": zip, "sorted": sorted,
                 "__builtins__": {}}
 
 
