@@ -58,20 +58,20 @@ void bindRobot(py::module_& m) {
           [](const Model& r, const VecD& theta) {
             return dynamics::massMatrix<double>(r, sized(r, theta, "theta"));
           },
-          py::arg("theta"), "D(theta), n x n (Mu 2.36)")
+          py::arg("theta"), "D(theta), n x n (Mu 2.8a)")
       .def(
           "coriolis",
           [](const Model& r, const VecD& theta, const VecD& dtheta) {
             return dynamics::coriolis<double>(r, sized(r, theta, "theta"),
                                               sized(r, dtheta, "dtheta"));
           },
-          py::arg("theta"), py::arg("dtheta"), "H(theta, dtheta) (Mu 2.37)")
+          py::arg("theta"), py::arg("dtheta"), "H(theta, dtheta) (Mu 2.8b)")
       .def(
           "gravity_vector",
           [](const Model& r, const VecD& theta) {
             return dynamics::gravityVector<double>(r, sized(r, theta, "theta"));
           },
-          py::arg("theta"), "G(theta) (Mu 2.38)")
+          py::arg("theta"), "G(theta) (Mu 2.8c, sign corrected: G_i = -g_i sin theta_i)")
       .def(
           "kinetic_energy",
           [](const Model& r, const VecD& theta, const VecD& dtheta) {
