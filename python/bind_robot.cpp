@@ -1,6 +1,6 @@
 /// @file bind_robot.cpp
 /// gaitopt.Robot: the single-support dynamics D(theta) ddtheta + H(theta, dtheta) + G(theta) = tau
-/// (Mu 2.35 to 2.38) and the energies (Mu 2.3, 2.4) of a robot YAML, with numpy arrays.
+/// (Mu 2.6-2.8) and the energies (Mu 2.3, 2.4) of a robot YAML, with numpy arrays.
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
