@@ -7,6 +7,9 @@
 JOBS ?= $(shell nproc)
 BUILD ?= build
 SAN_BUILD ?= build-sanitize
+# The sanitizer build keeps assertions (no NDEBUG) but compiles at -O1, as OSS-Fuzz does: Eigen at
+# -O0 made the sanitizer suite several times slower than the Release one for no extra findings.
+SAN_OPT ?= -g -O1
 CMAKE_GEN := $(shell command -v ninja >/dev/null 2>&1 && echo "-G Ninja")
 
 .PHONY: deps configure build test test-release test-sanitize valgrind demo demo-full bench format clean
@@ -30,7 +33,7 @@ test-release: build
 
 test-sanitize: deps
 	@cmake -S . -B $(SAN_BUILD) $(CMAKE_GEN) -DCMAKE_BUILD_TYPE=Debug -DGAITOPT_SANITIZE=ON \
-	  -DGAITOPT_BUILD_BENCH=OFF >/dev/null
+	  -DCMAKE_CXX_FLAGS_DEBUG="$(SAN_OPT)" -DGAITOPT_BUILD_BENCH=OFF >/dev/null
 	@cmake --build $(SAN_BUILD) -j $(JOBS)
 	@cd $(SAN_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	  ctest --output-on-failure -j $(JOBS)
