@@ -7,8 +7,8 @@
 #include <fmt/format.h>
 
 #include "apps/command_runner.hpp"
-#include "apps/gait_result.hpp"
 #include "apps/output_options.hpp"
+#include "apps/plotting.hpp"
 #include "config/config_error.hpp"
 #include "gaits/gait_summary.hpp"
 #include "gaits/trajectory_csv.hpp"
@@ -16,6 +16,7 @@
 #include "io/strict_json.hpp"
 #include "library/interpolation.hpp"
 #include "library/point_problem.hpp"
+#include "ocp/solution_report.hpp"
 
 namespace gaitopt::apps {
 namespace {
@@ -67,8 +68,9 @@ void runInterpolate(InterpolateOptions o) {
   auto& corners = summary["library_corners"] = nlohmann::ordered_json::array();
   for (const auto& [p, w] : library::cellWeights(lib.grid, o.values))
     corners.push_back({{"point", lib.grid.point(p).name}, {"weight", w}});
-  out.write(
-      [&](const std::string& dir) { writeGaitFiles(dir, traj, model, summary, o.output.plots); });
+  out.write([&](const std::string& dir) {
+    ocp::writeGaitFiles(dir, traj, model, summary, gaitPictures(o.output.plots));
+  });
   fmt::print(
       "interpolate: {} corners; max dynamics residual {:.3g} N m, periodicity error "
       "{:.3g}; wrote {}/trajectory.csv\n",

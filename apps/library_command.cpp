@@ -164,7 +164,7 @@ void runLibrary(const LibraryOptions& o) {
   const LibrarySetup setup{std::move(config),
                            std::move(grid),
                            io::normaliseOutPath(o.out_dir, "--out"),
-                           {o.config_path, o.rate_hz, o.plots}};
+                           {o.config_path, o.rate_hz, gaitPictures(o.plots)}};
   const bool under_mpi = parallel::launchedByMpi();
   // No more worker processes than points.
   const int jobs =

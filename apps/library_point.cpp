@@ -73,14 +73,14 @@ void record(const LibrarySetup& setup, const library::PointProblem& pp, const At
   row.cost = s.result.cost;
   row.iterations = a.iterations;
   row.solve_time_s = a.time_s;
-  GaitResultOptions options = setup.result;
+  ocp::GaitResultOptions options = setup.result;
   options.config_path = setup.config.path;
   if (!row.converged) {
-    row.message = writeFailedResult(options, pp.model, pp.config, s, dir + ".failed");
+    row.message = ocp::writeFailedResult(options, pp.model, pp.config, s, dir + ".failed");
     return;
   }
   io::OutputFolder(dir, {}).write([&](const std::string& staging) {
-    const auto summary = writeGaitResult(options, pp.model, pp.config, s, nullptr, staging);
+    const auto summary = ocp::writeGaitResult(options, pp.model, pp.config, s, nullptr, staging);
     row.cost_of_transport = summary.at("cost_of_transport").get<double>();
   });
   io::removeIfOurs(dir + ".failed");  // a retried point's old failure

@@ -4,11 +4,11 @@
 /// `gaitopt optimize`), or DIR/points/<point>.failed/ for a solve that failed.
 #include <string>
 
-#include "apps/gait_result.hpp"
 #include "apps/library_index.hpp"
 #include "library/grid.hpp"
 #include "library/library_config.hpp"
 #include "library/schedule.hpp"
+#include "ocp/solution_report.hpp"
 
 namespace gaitopt::apps {
 
@@ -16,7 +16,7 @@ struct LibrarySetup {
   library::LibraryConfig config;
   library::Grid grid;
   std::string out_dir;
-  GaitResultOptions result;  ///< rate and pictures of every point folder
+  ocp::GaitResultOptions result;  ///< rate and pictures of every point folder
 
   std::string pointDir(int point) const;
 };

@@ -6,13 +6,14 @@
 #include <fmt/ranges.h>
 
 #include "apps/command_runner.hpp"
-#include "apps/gait_result.hpp"
+#include "apps/plotting.hpp"
 #include "apps/reference_folder.hpp"
 #include "config/config_error.hpp"
 #include "gaits/trajectory_csv.hpp"
 #include "io/output_folder.hpp"
 #include "ocp/gait_solve.hpp"
 #include "ocp/initial_guess.hpp"
+#include "ocp/solution_report.hpp"
 
 namespace gaitopt::apps {
 namespace {
@@ -35,13 +36,17 @@ gaits::Trajectory initialGuess(const dynamics::Model& model, const ocp::OcpConfi
   }
 }
 
+ocp::GaitResultOptions resultOptions(const OptimizeOptions& o) {
+  return {o.config_path, o.output.rate_hz, gaitPictures(o.output.plots)};
+}
+
 /// A failed solve goes to OUT.failed and never touches a previous good result in OUT.
 /// @throws CommandError with the exit code.
 [[noreturn]] void reportFailure(const OptimizeOptions& o, const std::string& out_dir,
                                 const dynamics::Model& model, const ocp::OcpConfig& config,
                                 const ocp::GaitSolution& solution) {
-  const std::string message = writeFailedResult({o.config_path, o.output.rate_hz, o.output.plots},
-                                                model, config, solution, out_dir + ".failed");
+  const std::string message =
+      ocp::writeFailedResult(resultOptions(o), model, config, solution, out_dir + ".failed");
   const bool infeasible = solution.result.status == "Infeasible_Problem_Detected";
   throw CommandError(infeasible ? kExitInfeasible : kExitNotConverged, message);
 }
@@ -72,8 +77,7 @@ void runOptimize(const OptimizeOptions& o) {
       r.status, r.iterations, r.cost, r.max_violation, r.wall_time_s, r.callback_time_s);
   if (!r.success) reportFailure(o, out.path(), model, config, solution);
   out.write([&](const std::string& dir) {
-    writeGaitResult({o.config_path, o.output.rate_hz, o.output.plots}, model, config, solution,
-                    nullptr, dir);
+    ocp::writeGaitResult(resultOptions(o), model, config, solution, nullptr, dir);
   });
   // A failure of an earlier run would sit next to this result and contradict it.
   io::removeIfOurs(out.path() + ".failed");

@@ -45,4 +45,9 @@ bool runPlotScript(const std::string& script, const std::vector<std::string>& ar
   return true;
 }
 
+std::function<void(const std::string& dir)> gaitPictures(bool plots) {
+  if (!plots) return {};
+  return [](const std::string& dir) { runPlotScript("gait_plots.py", {dir}); };
+}
+
 }  // namespace gaitopt::apps

@@ -7,13 +7,14 @@
 #include <fmt/format.h>
 
 #include "apps/command_runner.hpp"
-#include "apps/gait_result.hpp"
+#include "apps/plotting.hpp"
 #include "dynamics/model_variation.hpp"
 #include "dynamics/robot_config.hpp"
 #include "gaits/gait_summary.hpp"
 #include "gaits/hip_plan_search.hpp"
 #include "gaits/polynomial_gait.hpp"
 #include "io/output_folder.hpp"
+#include "ocp/solution_report.hpp"
 
 namespace gaitopt::apps {
 namespace {
@@ -78,7 +79,7 @@ void runPoly(const PolyOptions& options) {
   auto summary = gaits::gaitSummary(traj, model, {options.gait_path, "designed", 0, elapsed, 0});
   summary.update(gaitJson(params, search));
   out.write([&](const std::string& dir) {
-    writeGaitFiles(dir, traj, model, summary, options.output.plots);
+    ocp::writeGaitFiles(dir, traj, model, summary, gaitPictures(options.output.plots));
   });
   fmt::print(
       "poly: energy {:.2f} J, CoT {:.4f}, min normal force {:.1f} N, max friction ratio "

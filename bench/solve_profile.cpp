@@ -24,10 +24,10 @@
 
 #include <fmt/format.h>
 
-#include "apps/gait_result.hpp"
 #include "bench/ocp_bench_common.hpp"
 #include "ocp/gait_solve.hpp"
 #include "ocp/initial_guess.hpp"
+#include "ocp/solution_report.hpp"
 
 namespace {
 
@@ -111,7 +111,7 @@ Run solveOnce(const Problem& p, const Lever& lever, const std::string& out_dir) 
   const ocp::GaitSolution s = ocp::solveGait(model, config, guess);
   const double solve_gait = since(t);
   std::filesystem::create_directories(out_dir);
-  apps::writeGaitResult({path, 1000, false}, model, config, s, nullptr, out_dir);
+  ocp::writeGaitResult({path, 1000, {}}, model, config, s, nullptr, out_dir);
   r.write = since(t);
   r.total = std::chrono::duration<double>(t - start).count();
   r.cpu = cpuSeconds() - cpu_start;

@@ -1,11 +1,10 @@
-#include "apps/gait_result.hpp"
+#include "ocp/solution_report.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
-#include "apps/plotting.hpp"
 #include "gaits/consistency.hpp"
 #include "gaits/gait_summary.hpp"
 #include "gaits/metrics.hpp"
@@ -13,7 +12,7 @@
 #include "io/checked_write.hpp"
 #include "io/output_folder.hpp"
 
-namespace gaitopt::apps {
+namespace gaitopt::ocp {
 namespace {
 
 /// The worst friction ratio, or why there is none (a tip pulling on the ground).
@@ -23,7 +22,7 @@ nlohmann::ordered_json frictionRatioJson(const gaits::Trajectory& traj) {
   return "unbounded: a normal force <= 0";
 }
 
-nlohmann::ordered_json meshHistory(const std::vector<ocp::MeshRound>& history) {
+nlohmann::ordered_json meshHistory(const std::vector<MeshRound>& history) {
   auto rounds = nlohmann::ordered_json::array();
   for (const auto& m : history)
     rounds.push_back({{"segments", m.segments},
@@ -35,7 +34,7 @@ nlohmann::ordered_json meshHistory(const std::vector<ocp::MeshRound>& history) {
   return rounds;
 }
 
-nlohmann::ordered_json solverJson(const ocp::SolverOptions& s) {
+nlohmann::ordered_json solverJson(const SolverOptions& s) {
   return {{"tolerance", s.tolerance},
           {"max_iterations", s.max_iterations},
           {"hessian", s.hessian},
@@ -52,16 +51,16 @@ nlohmann::ordered_json solverJson(const ocp::SolverOptions& s) {
 
 /// Every solver setting the solution came from: the config's (defaults filled in), those of
 /// the warm-started refinement rounds, and the refinement's resample rate.
-nlohmann::ordered_json solverSettings(const ocp::OcpConfig& config) {
+nlohmann::ordered_json solverSettings(const OcpConfig& config) {
   auto json = solverJson(config.solver);
-  json["refinement_rounds"] = solverJson(ocp::warmStarted(config.solver));
-  json["refinement_resample_hz"] = ocp::kRefinementResampleHz;
+  json["refinement_rounds"] = solverJson(warmStarted(config.solver));
+  json["refinement_resample_hz"] = kRefinementResampleHz;
   return json;
 }
 
 /// The location of a violation for summary.json; `name_key` says what the name names.
-nlohmann::ordered_json violationJson(const ocp::LocatedViolation& v, const std::string& name_key) {
-  const ocp::Violation& w = v.violation;
+nlohmann::ordered_json violationJson(const LocatedViolation& v, const std::string& name_key) {
+  const Violation& w = v.violation;
   if (w.name.empty()) return nullptr;
   using Json = nlohmann::ordered_json;
   const bool on_grid = v.node >= 0;
@@ -82,15 +81,14 @@ struct FailureReport {
   nlohmann::ordered_json summary;
 };
 
-FailureReport failureReport(const ocp::GaitSolution& solution, const std::string& dir) {
-  const ocp::SolveResult& r = solution.result;
-  const auto row = ocp::worstConstraint(solution.problem, r.x);
-  const auto bound = ocp::worstBound(solution.problem, r.x);
+FailureReport failureReport(const GaitSolution& solution, const std::string& dir) {
+  const SolveResult& r = solution.result;
+  const auto row = worstConstraint(solution.problem, r.x);
+  const auto bound = worstBound(solution.problem, r.x);
   const std::string message = fmt::format(
       "solver status {} after {} iterations; worst violated constraint: {}; worst variable "
       "bound: {}; {} (max violation {:.3g}) written to {}",
-      r.status, r.iterations, ocp::describe(row), ocp::describe(bound), r.point, r.max_violation,
-      dir);
+      r.status, r.iterations, describe(row), describe(bound), r.point, r.max_violation, dir);
   return {message,
           {{"point", r.point},
            {"worst_violation", violationJson(row, "constraint")},
@@ -101,22 +99,28 @@ FailureReport failureReport(const ocp::GaitSolution& solution, const std::string
 
 void writeGaitFiles(const std::string& dir, const gaits::Trajectory& traj,
                     const dynamics::Model& model, const nlohmann::ordered_json& summary,
-                    bool plots) {
+                    const FolderPictures& pictures) {
   gaits::writeTrajectoryCsv(traj, model, dir + "/trajectory.csv");
   gaits::writeJsonFile(summary, dir + "/summary.json");
-  if (plots) runPlotScript("gait_plots.py", {dir});
+  if (pictures) pictures(dir);
 }
 
-nlohmann::ordered_json writeGaitResult(const GaitResultOptions& o, const dynamics::Model& model,
-                                       const ocp::OcpConfig& config,
-                                       const ocp::GaitSolution& solution,
+nlohmann::ordered_json betweenNodeMetrics(const gaits::Trajectory& dense,
+                                          const dynamics::Model& model, double rate_hz) {
+  return {{"max_dynamics_defect", gaits::maxDynamicsResidual(dense, model)},
+          {"min_normal_force", gaits::minNormalForce(dense)},
+          {"max_friction_ratio", frictionRatioJson(dense)},
+          {"min_zmp_margin", gaits::minZmpMargin(dense, model)},
+          {"rate_hz", rate_hz}};
+}
+
+nlohmann::ordered_json solutionSummary(const GaitResultOptions& o, const dynamics::Model& model,
+                                       const OcpConfig& config, const GaitSolution& solution,
                                        const nlohmann::ordered_json& failure,
-                                       const std::string& dir) {
-  const ocp::GaitProblem& problem = solution.problem;
-  const ocp::SolveResult& r = solution.result;
-  const gaits::Trajectory traj = ocp::reconstruct(problem, model, r.x);
-  // Between the points the export follows the scheme's own polynomials.
-  const gaits::Trajectory dense = ocp::reconstructDense(problem, model, r.x, o.rate_hz);
+                                       const gaits::Trajectory& dense) {
+  const GaitProblem& problem = solution.problem;
+  const SolveResult& r = solution.result;
+  const gaits::Trajectory traj = reconstruct(problem, model, r.x);
   auto summary = gaits::gaitSummary(traj, model,
                                     {o.config_path, r.status, r.iterations, r.wall_time_s,
                                      r.callback_time_s, config.cost.primary()});
@@ -128,18 +132,25 @@ nlohmann::ordered_json writeGaitResult(const GaitResultOptions& o, const dynamic
   if (!failure.is_null()) summary.update(failure);
   // The constraints hold at the collocation points; the dense export shows how far they are
   // missed between them.
-  summary["between_nodes"] = {{"max_dynamics_defect", gaits::maxDynamicsResidual(dense, model)},
-                              {"min_normal_force", gaits::minNormalForce(dense)},
-                              {"max_friction_ratio", frictionRatioJson(dense)},
-                              {"min_zmp_margin", gaits::minZmpMargin(dense, model)},
-                              {"rate_hz", o.rate_hz}};
+  summary["between_nodes"] = betweenNodeMetrics(dense, model, o.rate_hz);
   summary["nlp"] = {{"variables", problem.nlp.variables()},
                     {"constraints", problem.nlp.constraints()},
                     {"segments", solution.history.back().segments},
-                    {"scheme", ocp::toString(problem.ssp.layout.scheme)}};
+                    {"scheme", toString(problem.ssp.layout.scheme)}};
   summary["mesh_history"] = meshHistory(solution.history);
   summary["solver"] = solverSettings(config);
-  writeGaitFiles(dir, dense, model, summary, o.plots);
+  return summary;
+}
+
+nlohmann::ordered_json writeGaitResult(const GaitResultOptions& o, const dynamics::Model& model,
+                                       const OcpConfig& config, const GaitSolution& solution,
+                                       const nlohmann::ordered_json& failure,
+                                       const std::string& dir) {
+  // Between the points the export follows the scheme's own polynomials.
+  const gaits::Trajectory dense =
+      reconstructDense(solution.problem, model, solution.result.x, o.rate_hz);
+  const auto summary = solutionSummary(o, model, config, solution, failure, dense);
+  writeGaitFiles(dir, dense, model, summary, o.pictures);
   return summary;
 }
 
@@ -157,7 +168,7 @@ void writeFailedNote(const std::string& path, const std::string& message) {
 }  // namespace
 
 std::string writeFailedResult(const GaitResultOptions& o, const dynamics::Model& model,
-                              const ocp::OcpConfig& config, const ocp::GaitSolution& solution,
+                              const OcpConfig& config, const GaitSolution& solution,
                               const std::string& failed_dir) {
   const FailureReport report = failureReport(solution, failed_dir);
   io::OutputFolder(failed_dir, {o.config_path}).write([&](const std::string& dir) {
@@ -167,4 +178,4 @@ std::string writeFailedResult(const GaitResultOptions& o, const dynamics::Model&
   return report.message;
 }
 
-}  // namespace gaitopt::apps
+}  // namespace gaitopt::ocp
