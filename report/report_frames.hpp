@@ -25,7 +25,7 @@ struct StickFrame {
 std::vector<StickFrame> gaitFrames(const dynamics::Model& model, const gaits::Trajectory& step,
                                    double rate_hz);
 
-/// The frames of a walk's stick.csv (walk_record.hpp). @throws config::ConfigError naming the
+/// The frames of a walk's stick.csv (sim/walk_record.hpp). @throws config::ConfigError naming the
 /// file and line for a missing column, a bad number or phase, or a frame with missing links.
 std::vector<StickFrame> readStickCsv(const std::string& path);
 

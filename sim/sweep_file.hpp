@@ -1,7 +1,7 @@
 #pragma once
 /// @file sweep_file.hpp
-/// One stability sweep on disk: sweep_<parameter>.csv, a io::RowLog (row_log.hpp) of one row per
-/// walked value, so a rerun skips the values already walked.
+/// One stability sweep on disk: sweep_<parameter>.csv, an io::RowLog (io/row_log.hpp) of one row
+/// per walked value, so a rerun skips the values already walked.
 #include <map>
 #include <string>
 
