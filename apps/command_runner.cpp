@@ -12,7 +12,7 @@
 namespace gaitopt::apps {
 namespace {
 
-int report(const char* message, ExitCode code) {
+int report(const char* message, io::ExitCode code) {
   fmt::print(stderr, "error: {}\n", io::printable(message));
   return code;
 }
@@ -22,23 +22,23 @@ int report(const char* message, ExitCode code) {
 int runReportingErrors(const std::function<void()>& body) {
   try {
     body();
-    return kExitOk;
-  } catch (const CommandError& e) {
+    return io::kExitOk;
+  } catch (const io::CommandError& e) {
     return report(e.what(), e.code());
   } catch (const config::ConfigError& e) {
-    return report(e.what(), kExitInputError);
+    return report(e.what(), io::kExitInputError);
   } catch (const std::domain_error& e) {
-    return report(e.what(), kExitInfeasible);
+    return report(e.what(), io::kExitInfeasible);
   } catch (const std::exception& e) {
-    return report(e.what(), kExitFailure);
+    return report(e.what(), io::kExitFailure);
   } catch (...) {
-    return report("unknown failure (non-standard exception)", kExitFailure);
+    return report("unknown failure (non-standard exception)", io::kExitFailure);
   }
 }
 
 void runSubcommand(const std::function<void()>& body) {
   const int code = runReportingErrors(body);
-  if (code != kExitOk) throw CLI::RuntimeError(code);
+  if (code != io::kExitOk) throw CLI::RuntimeError(code);
 }
 
 }  // namespace gaitopt::apps

@@ -5,9 +5,9 @@
 #include <fmt/format.h>
 
 #include "apps/command_runner.hpp"
-#include "apps/plotting.hpp"
 #include "config/config_error.hpp"
 #include "io/output_folder.hpp"
+#include "report/plot_script.hpp"
 
 namespace gaitopt::apps {
 namespace {
@@ -28,7 +28,7 @@ void runCompare(const CompareOptions& o) {
   requireResultFolder(o.b_dir);
   // The report is the script's whole job: without matplotlib there is nothing to write.
   out.write([&](const std::string& dir) {
-    if (!runPlotScript("compare_gaits.py", {o.a_dir, o.b_dir, dir}))
+    if (!report::runPlotScript("compare_gaits.py", {o.a_dir, o.b_dir, dir}))
       throw std::runtime_error("compare: scripts/plots/compare_gaits.py failed (see above)");
   });
   fmt::print("compare: wrote {}/comparison.md and the overlays\n", out.path());

@@ -10,15 +10,15 @@
 #include <fmt/format.h>
 
 #include "apps/command_runner.hpp"
-#include "apps/impact_map_report.hpp"
 #include "apps/option_checks.hpp"
-#include "apps/plotting.hpp"
-#include "apps/progress_bar.hpp"
-#include "apps/range_option.hpp"
 #include "config/config_error.hpp"
 #include "dynamics/robot_config.hpp"
 #include "gaits/gait_summary.hpp"
+#include "gaits/grid_range.hpp"
+#include "gaits/impact_map_report.hpp"
 #include "io/output_folder.hpp"
+#include "parallel/progress_bar.hpp"
+#include "report/plot_script.hpp"
 
 namespace gaitopt::apps {
 namespace {
@@ -27,9 +27,9 @@ constexpr double kDeg = M_PI / 180;
 
 gaits::ImpactGrid parseGrid(const ImpactMapOptions& o, const dynamics::Model& model) {
   gaits::ImpactGrid grid;
-  grid.axes = {parseRange(o.step_lengths, "--step-lengths", 1.0),
-               parseRange(o.knee_bias, "--knee-bias", kDeg),
-               parseRange(o.approach_angles, "--approach-angles", kDeg)};
+  grid.axes = {gaits::parseRange(o.step_lengths, "--step-lengths", 1.0),
+               gaits::parseRange(o.knee_bias, "--knee-bias", kDeg),
+               gaits::parseRange(o.approach_angles, "--approach-angles", kDeg)};
   grid.approach_speed = o.approach_speed;
   if (model.legLinks() != 2)
     throw config::ConfigError(o.robot_path, "links", 0,
@@ -73,19 +73,19 @@ void runImpactMap(const ImpactMapOptions& options) {
   fmt::print("impact-map: {} on {} points with {} job(s)\n", model.name(), grid.size(), jobs);
   std::fflush(stdout);
   const gaits::ImpactMap map =
-      gaits::sweepImpactMap(model, grid, jobs, progressBar("impact-map", options.quiet));
+      gaits::sweepImpactMap(model, grid, jobs, parallel::progressBar("impact-map", options.quiet));
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  auto summary = impactMapSummary(map, model);
+  auto summary = gaits::impactMapSummary(map, model);
   summary["jobs"] = jobs;
   summary["wall_time_s"] = elapsed;
   out.write([&](const std::string& dir) {
-    writeImpactMapCsv(map, dir + "/impact_map.csv");
+    gaits::writeImpactMapCsv(map, dir + "/impact_map.csv");
     gaits::writeJsonFile(summary, dir + "/summary.json");
   });
   printResult(summary);
-  if (options.plots) runPlotScript("impact_map.py", {out.path()});
+  if (options.plots) report::runPlotScript("impact_map.py", {out.path()});
   fmt::print("impact-map: wrote {}/impact_map.csv and summary.json in {:.2f} s\n", out.path(),
              elapsed);
 }

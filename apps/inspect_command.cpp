@@ -5,17 +5,18 @@
 #include <stdexcept>
 
 #include "apps/command_runner.hpp"
-#include "apps/inspect_report.hpp"
-#include "apps/state_file.hpp"
 #include "dynamics/robot_config.hpp"
+#include "gaits/state_file.hpp"
+#include "report/inspect_report.hpp"
 
 namespace gaitopt::apps {
 
 void runInspect(const InspectOptions& options) {
   const dynamics::Model model = dynamics::loadRobot(options.robot_path);
-  const ChainState state =
-      options.state_path ? loadState(*options.state_path, model.nLinks()) : standingState(model);
-  const auto report = inspectReport(model, state);
+  const gaits::ChainState state = options.state_path
+                                      ? gaits::loadState(*options.state_path, model.nLinks())
+                                      : gaits::standingState(model);
+  const auto report = report::inspectReport(model, state);
   std::cout << report.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << '\n'
             << std::flush;
   if (!std::cout) throw std::runtime_error("cannot write the report to stdout");

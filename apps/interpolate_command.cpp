@@ -1,22 +1,19 @@
 #include "apps/interpolate_command.hpp"
 
-#include <filesystem>
-#include <map>
+#include <array>
 #include <memory>
 
 #include <fmt/format.h>
 
 #include "apps/command_runner.hpp"
 #include "apps/output_options.hpp"
-#include "apps/plotting.hpp"
-#include "config/config_error.hpp"
 #include "gaits/gait_summary.hpp"
-#include "gaits/trajectory_csv.hpp"
 #include "io/output_folder.hpp"
-#include "io/strict_json.hpp"
 #include "library/interpolation.hpp"
+#include "library/library_folder.hpp"
 #include "library/point_problem.hpp"
 #include "ocp/solution_report.hpp"
+#include "report/plot_script.hpp"
 
 namespace gaitopt::apps {
 namespace {
@@ -28,48 +25,20 @@ struct InterpolateOptions {
   OutputOptions output;
 };
 
-/// The grid and base problem a library folder was built from (its library.json).
-struct LibraryFolder {
-  library::Grid grid;
-  ocp::OcpConfig base;
-};
-
-LibraryFolder readLibraryFolder(const std::string& dir) {
-  const std::string path = dir + "/library.json";
-  if (!std::filesystem::is_regular_file(path))
-    throw config::ConfigError(path, "", 0, "not a gait library folder (no library.json)");
-  const auto j = io::readStrictJson(path);
-  if (!j.is_object() || !j.contains("axes") || !j.contains("ocp"))
-    throw config::ConfigError(path, "", 0, "not a library.json written by gaitopt library");
-  std::array<std::vector<double>, 3> axes;
-  for (int a = 0; a < 3; ++a)
-    axes[a] = j.at("axes").at(library::kAxisNames[a]).get<std::vector<double>>();
-  // The OCP path is relative to the library folder (library_command.cpp).
-  const auto ocp_path = std::filesystem::path(dir) / j.at("ocp").get<std::string>();
-  return {library::Grid(axes), ocp::loadOcpConfig(ocp_path.string())};
-}
-
 void runInterpolate(InterpolateOptions o) {
   const io::OutputFolder out(o.output.out_dir, {o.library_dir});
-  const LibraryFolder lib = readLibraryFolder(o.library_dir);
+  const library::LibraryFolder lib = library::readLibraryFolder(o.library_dir);
   if (!o.has_slope) o.values[library::kSlope] = library::basePoint(lib.base)[library::kSlope];
   const dynamics::Model model = library::pointProblem(lib.base, o.values).model;
-  std::map<int, std::unique_ptr<gaits::Trajectory>> cache;
-  const library::GaitLookup lookup = [&](int p) -> const gaits::Trajectory* {
-    auto& slot = cache[p];
-    const std::string csv = o.library_dir + "/points/" + lib.grid.point(p).name + "/trajectory.csv";
-    if (!slot && std::filesystem::exists(csv))
-      slot = std::make_unique<gaits::Trajectory>(gaits::readTrajectoryCsv(csv, model));
-    return slot.get();
-  };
+  library::FolderGaits solved(o.library_dir, lib.grid, model);
   const gaits::Trajectory traj =
-      library::interpolateGait(lib.grid, lookup, model, o.values, o.output.rate_hz);
+      library::interpolateGait(lib.grid, solved.lookup(), model, o.values, o.output.rate_hz);
   auto summary = gaits::gaitSummary(traj, model, {o.library_dir, "interpolated", 0, 0, 0});
   auto& corners = summary["library_corners"] = nlohmann::ordered_json::array();
   for (const auto& [p, w] : library::cellWeights(lib.grid, o.values))
     corners.push_back({{"point", lib.grid.point(p).name}, {"weight", w}});
   out.write([&](const std::string& dir) {
-    ocp::writeGaitFiles(dir, traj, model, summary, gaitPictures(o.output.plots));
+    ocp::writeGaitFiles(dir, traj, model, summary, report::gaitPictures(o.output.plots));
   });
   fmt::print(
       "interpolate: {} corners; max dynamics residual {:.3g} N m, periodicity error "

@@ -18,15 +18,15 @@ int run(int argc, char** argv) {
     return e.get_exit_code();  // a subcommand failed and has already printed its error
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);  // prints help, the version, or the usage error
-    return code == 0 ? gaitopt::apps::kExitOk : gaitopt::apps::kExitInputError;
+    return code == 0 ? gaitopt::io::kExitOk : gaitopt::io::kExitInputError;
   }
-  return gaitopt::apps::kExitOk;
+  return gaitopt::io::kExitOk;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  int code = gaitopt::apps::kExitOk;
+  int code = gaitopt::io::kExitOk;
   const int status = gaitopt::apps::runReportingErrors([&] { code = run(argc, argv); });
-  return status != gaitopt::apps::kExitOk ? status : code;
+  return status != gaitopt::io::kExitOk ? status : code;
 }

@@ -6,14 +6,14 @@
 #include <fmt/ranges.h>
 
 #include "apps/command_runner.hpp"
-#include "apps/plotting.hpp"
-#include "apps/reference_folder.hpp"
 #include "config/config_error.hpp"
 #include "gaits/trajectory_csv.hpp"
 #include "io/output_folder.hpp"
 #include "ocp/gait_solve.hpp"
 #include "ocp/initial_guess.hpp"
 #include "ocp/solution_report.hpp"
+#include "report/plot_script.hpp"
+#include "sim/reference_folder.hpp"
 
 namespace gaitopt::apps {
 namespace {
@@ -22,7 +22,7 @@ namespace {
 gaits::Trajectory initialGuess(const dynamics::Model& model, const ocp::OcpConfig& config,
                                const std::string& path, const std::string& warm_start) {
   if (!warm_start.empty()) {
-    requireGaitOf(warm_start, model);
+    sim::requireGaitOf(warm_start, model);
     return gaits::readTrajectoryCsv(warm_start + "/trajectory.csv", model);
   }
   try {
@@ -37,18 +37,18 @@ gaits::Trajectory initialGuess(const dynamics::Model& model, const ocp::OcpConfi
 }
 
 ocp::GaitResultOptions resultOptions(const OptimizeOptions& o) {
-  return {o.config_path, o.output.rate_hz, gaitPictures(o.output.plots)};
+  return {o.config_path, o.output.rate_hz, report::gaitPictures(o.output.plots)};
 }
 
 /// A failed solve goes to OUT.failed and never touches a previous good result in OUT.
-/// @throws CommandError with the exit code.
+/// @throws io::CommandError with the exit code.
 [[noreturn]] void reportFailure(const OptimizeOptions& o, const std::string& out_dir,
                                 const dynamics::Model& model, const ocp::OcpConfig& config,
                                 const ocp::GaitSolution& solution) {
   const std::string message =
       ocp::writeFailedResult(resultOptions(o), model, config, solution, out_dir + ".failed");
   const bool infeasible = solution.result.status == "Infeasible_Problem_Detected";
-  throw CommandError(infeasible ? kExitInfeasible : kExitNotConverged, message);
+  throw io::CommandError(infeasible ? io::kExitInfeasible : io::kExitNotConverged, message);
 }
 
 }  // namespace

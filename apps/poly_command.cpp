@@ -7,7 +7,6 @@
 #include <fmt/format.h>
 
 #include "apps/command_runner.hpp"
-#include "apps/plotting.hpp"
 #include "dynamics/model_variation.hpp"
 #include "dynamics/robot_config.hpp"
 #include "gaits/gait_summary.hpp"
@@ -15,44 +14,9 @@
 #include "gaits/polynomial_gait.hpp"
 #include "io/output_folder.hpp"
 #include "ocp/solution_report.hpp"
+#include "report/plot_script.hpp"
 
 namespace gaitopt::apps {
-namespace {
-
-nlohmann::ordered_json gaitJson(const gaits::GaitParams& p, const gaits::HipPlanSearch& search) {
-  return {{"gait",
-           {{"name", p.name},
-            {"ssp_duration", p.ssp_duration},
-            {"dsp_duration", p.dsp_duration},
-            {"apex_x", p.apex_x},
-            {"apex_height", p.apex_height},
-            {"hip_height", p.hip_height},
-            {"hip_bob", p.hip_bob},
-            {"hip_start", p.hip_start},
-            {"torso_angle", p.torso_angle}}},
-          {"hip_plan",
-           {{"velocity_start", search.plan.velocity_start},
-            {"velocity_touchdown", search.plan.velocity_touchdown},
-            {"dsp_start", search.plan.dsp_start},
-            {"dsp_stability_margin", search.margin},
-            {"algorithm", search.algorithm},
-            {"evaluations", search.evaluations}}}};
-}
-
-/// The hip plan; an unrealisable gait names its file and step. @throws std::domain_error.
-gaits::HipPlanSearch designHipPlan(const dynamics::Model& model, const gaits::GaitParams& params,
-                                   const std::string& gait_path) {
-  try {
-    return gaits::searchHipPlan(model, params);
-  } catch (const std::domain_error& e) {
-    throw std::domain_error(
-        fmt::format("{}: gait '{}' (step_length {:g} m) cannot be realised by "
-                    "robot '{}': {}",
-                    gait_path, params.name, params.step_length, model.name(), e.what()));
-  }
-}
-
-}  // namespace
 
 void runPoly(const PolyOptions& options) {
   const auto start = std::chrono::steady_clock::now();
@@ -64,7 +28,7 @@ void runPoly(const PolyOptions& options) {
   fmt::print("poly: {} on {}: step {:.3f} m in {:.3f} s ({:.3f} m/s)\n", params.name, model.name(),
              params.step_length, params.duration(), params.speed());
 
-  const gaits::HipPlanSearch search = designHipPlan(model, params, options.gait_path);
+  const gaits::HipPlanSearch search = gaits::designHipPlan(model, params, options.gait_path);
   fmt::print(
       "poly: hip plan by {} ({} evaluations): V_h1 {:.4f} m/s, V_h2 {:.4f} m/s, "
       "S_D0 {:.4f} m, DSP margin {:.4f} m\n",
@@ -77,9 +41,9 @@ void runPoly(const PolyOptions& options) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   auto summary = gaits::gaitSummary(traj, model, {options.gait_path, "designed", 0, elapsed, 0});
-  summary.update(gaitJson(params, search));
+  summary.update(gaits::designJson(params, search));
   out.write([&](const std::string& dir) {
-    ocp::writeGaitFiles(dir, traj, model, summary, gaitPictures(options.output.plots));
+    ocp::writeGaitFiles(dir, traj, model, summary, report::gaitPictures(options.output.plots));
   });
   fmt::print(
       "poly: energy {:.2f} J, CoT {:.4f}, min normal force {:.1f} N, max friction ratio "

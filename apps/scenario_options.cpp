@@ -1,15 +1,8 @@
 #include "apps/scenario_options.hpp"
 
-#include <filesystem>
-
-#include <fmt/format.h>
-
-#include "config/config_error.hpp"
-#include "sim/ground_config.hpp"
-
 namespace gaitopt::apps {
 
-void addScenarioOptions(CLI::App* cmd, ScenarioOptions& o) {
+void addScenarioOptions(CLI::App* cmd, sim::ScenarioSettings& o) {
   cmd->add_option("--reference", o.reference_dir,
                   "Gait result folder to track (trajectory.csv, summary.json)")
       ->required()
@@ -46,65 +39,6 @@ void addScenarioOptions(CLI::App* cmd, ScenarioOptions& o) {
   cmd->add_option("--gain-scale", o.gain_scale, "Controller bandwidth factor (kp by s^2, kd by s)")
       ->check(CLI::Range(1e-3, 1e3))
       ->capture_default_str();
-}
-
-namespace {
-bool isBuiltinGround(const std::string& ground) {
-  return ground == "rigid" || ground == "impedance" || ground == "lcp";
-}
-}  // namespace
-
-std::string groundPath(const std::string& ground) {
-  if (isBuiltinGround(ground)) return std::string(GAITOPT_SOURCE_DIR "/") + groundRecord(ground);
-  return ground;
-}
-
-std::string groundRecord(const std::string& ground) {
-  return isBuiltinGround(ground) ? "configs/grounds/" + ground + ".yaml" : ground;
-}
-
-sim::Scenario makeScenario(const ScenarioOptions& o) {
-  sim::Scenario s;
-  s.controller = o.controller;
-  s.steps = o.steps;
-  s.ground = sim::loadGround(groundPath(o.ground));
-  s.parameter_errors = dynamics::muUncertaintyCase(o.uncertainty_case);
-  s.errors_on_controller = o.uncertainty_on == "controller";
-  if (o.friction >= 0) s.friction = o.friction;
-  if (o.push != 0) sim::setSweepValue(s, "push", o.push);
-  s.gain_scale = o.gain_scale;
-  return s;
-}
-
-std::vector<std::string> scenarioInputs(const ScenarioOptions& o) {
-  return {o.reference_dir, o.robot_path, groundPath(o.ground)};
-}
-
-void requireControllerFits(const ScenarioOptions& o, const dynamics::Model& model) {
-  if (model.joints().front().actuated) return;
-  throw config::ConfigError(
-      "--controller", o.controller, 0,
-      fmt::format("the {} controller imposes all {} joint accelerations through the joint "
-                  "torques, so it needs an actuated stance ankle; robot '{}' has a passive one "
-                  "(walking it needs an underactuated controller, which gaitopt does not have)",
-                  o.controller, model.nLinks(), model.name()));
-}
-
-nlohmann::ordered_json scenarioJson(const ScenarioOptions& o, const sim::Scenario& s) {
-  return {{"reference", o.reference_dir},
-          {"controller", s.controller},
-          {"gain_scale", s.gain_scale},
-          {"ground", sim::groundName(s.ground)},
-          {"ground_file", groundRecord(o.ground)},
-          {"uncertainty_case", o.uncertainty_case},
-          {"uncertainty_on", o.uncertainty_on},
-          {"parameter_errors",
-           {{"mass", s.parameter_errors.mass},
-            {"inertia", s.parameter_errors.inertia},
-            {"length", s.parameter_errors.length},
-            {"com", s.parameter_errors.com}}},
-          {"push_impulse_Ns", o.push},
-          {"steps_requested", s.steps}};
 }
 
 }  // namespace gaitopt::apps

@@ -12,7 +12,7 @@
 namespace gaitopt::apps {
 
 struct SimulateOptions {
-  ScenarioOptions scenario;
+  sim::ScenarioSettings scenario;
   OutputOptions output;
   bool poincare = true;  ///< the Poincare map of the cycle (rigid ground)
   bool quiet = false;

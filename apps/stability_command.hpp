@@ -17,7 +17,7 @@
 namespace gaitopt::apps {
 
 struct StabilityOptions {
-  ScenarioOptions scenario;
+  sim::ScenarioSettings scenario;
   std::vector<std::string> sweeps;  ///< NAME or NAME=a:b:n
   std::string out_dir;
   int jobs = 0;

@@ -7,7 +7,7 @@ include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(GAITOPT_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/gaitopt)
-set(gaitopt_libraries config io dynamics gaits ocp sim library parallel)
+set(gaitopt_libraries config io dynamics gaits ocp sim library report parallel)
 
 foreach(name IN LISTS gaitopt_libraries)
   set_target_properties(gaitopt_${name} PROPERTIES EXPORT_NAME ${name})

@@ -136,4 +136,36 @@ HipPlanSearch searchHipPlan(const dynamics::Model& model, const GaitParams& para
   return {best, -value, ctx.evaluations, "LN_SBPLX"};
 }
 
+nlohmann::ordered_json designJson(const GaitParams& p, const HipPlanSearch& search) {
+  return {{"gait",
+           {{"name", p.name},
+            {"ssp_duration", p.ssp_duration},
+            {"dsp_duration", p.dsp_duration},
+            {"apex_x", p.apex_x},
+            {"apex_height", p.apex_height},
+            {"hip_height", p.hip_height},
+            {"hip_bob", p.hip_bob},
+            {"hip_start", p.hip_start},
+            {"torso_angle", p.torso_angle}}},
+          {"hip_plan",
+           {{"velocity_start", search.plan.velocity_start},
+            {"velocity_touchdown", search.plan.velocity_touchdown},
+            {"dsp_start", search.plan.dsp_start},
+            {"dsp_stability_margin", search.margin},
+            {"algorithm", search.algorithm},
+            {"evaluations", search.evaluations}}}};
+}
+
+HipPlanSearch designHipPlan(const dynamics::Model& model, const GaitParams& params,
+                            const std::string& gait_path) {
+  try {
+    return searchHipPlan(model, params);
+  } catch (const std::domain_error& e) {
+    throw std::domain_error(
+        fmt::format("{}: gait '{}' (step_length {:g} m) cannot be realised by "
+                    "robot '{}': {}",
+                    gait_path, params.name, params.step_length, model.name(), e.what()));
+  }
+}
+
 }  // namespace gaitopt::gaits

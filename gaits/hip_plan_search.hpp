@@ -15,6 +15,8 @@
 #include "gaits/gait_params.hpp"
 #include "gaits/polynomial_gait.hpp"
 
+#include <nlohmann/json.hpp>
+
 namespace gaitopt::gaits {
 
 struct HipPlanSearch {
@@ -31,5 +33,15 @@ double dspStabilityMargin(const PolynomialGait& gait, const dynamics::Model& mod
 /// @throws std::domain_error when no plan keeps the legs within reach (the message names the
 ///         time and the reachable range) or the DSP ZMP between the tips.
 HipPlanSearch searchHipPlan(const dynamics::Model& model, const GaitParams& params);
+
+/// searchHipPlan for the gait of file `gait_path`.
+/// @throws std::domain_error naming the file, the gait, its step length and the robot when the
+///         gait cannot be realised.
+HipPlanSearch designHipPlan(const dynamics::Model& model, const GaitParams& params,
+                            const std::string& gait_path);
+
+/// summary.json's record of a designed gait: "gait" (its parameters) and "hip_plan" (the plan
+/// and how it was found).
+nlohmann::ordered_json designJson(const GaitParams& params, const HipPlanSearch& search);
 
 }  // namespace gaitopt::gaits

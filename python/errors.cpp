@@ -1,5 +1,5 @@
 /// @file errors.cpp
-/// The CLI's exit codes (apps/command_runner.hpp) as Python exceptions, each carrying
+/// The CLI's exit codes (io/exit_code.hpp) as Python exceptions, each carrying
 /// `exit_code`: InputError (2, also a ValueError) for bad files and values, InfeasibleError (3)
 /// for valid input describing something impossible, NotConvergedError (4) for a solve that
 /// stopped early, GaitoptError (1) for the rest.
@@ -7,6 +7,7 @@
 #include <string>
 
 #include "config/config_error.hpp"
+#include "io/exit_code.hpp"
 #include "python/bindings.hpp"
 
 namespace py = pybind11;
@@ -28,16 +29,17 @@ py::handle makeError(py::module_& m, const char* name, py::handle bases, int exi
 }  // namespace
 
 void bindErrors(py::module_& m) {
-  const py::handle base = makeError(m, "GaitoptError", PyExc_Exception, 1,
+  const py::handle base = makeError(m, "GaitoptError", PyExc_Exception, io::kExitFailure,
                                     "A gaitopt failure; exit_code is the CLI's exit code for it.");
   static py::handle input =
-      makeError(m, "InputError", py::make_tuple(base, py::handle(PyExc_ValueError)), 2,
-                "Bad input: a file, key or value (the CLI exits 2).");
+      makeError(m, "InputError", py::make_tuple(base, py::handle(PyExc_ValueError)),
+                io::kExitInputError, "Bad input: a file, key or value (the CLI exits 2).");
   static py::handle infeasible =
-      makeError(m, "InfeasibleError", base, 3,
+      makeError(m, "InfeasibleError", base, io::kExitInfeasible,
                 "Valid input describing something impossible (the CLI exits 3).");
-  static py::handle not_converged = makeError(
-      m, "NotConvergedError", base, 4, "The solver stopped without converging (the CLI exits 4).");
+  static py::handle not_converged =
+      makeError(m, "NotConvergedError", base, io::kExitNotConverged,
+                "The solver stopped without converging (the CLI exits 4).");
   static py::handle failure = base;
   py::register_exception_translator([](std::exception_ptr p) {
     try {

@@ -3,15 +3,11 @@
 # input, 3 a gait that cannot be realised) and print one line naming the file, the key or line,
 # the value and what was expected; no result folder may appear.
 # Usage: bad_input_cli_test.sh <path to gaitopt binary> <repo root>
-set -u
-[[ $# -eq 2 ]] || { echo "usage: $0 <gaitopt binary> <repo root>" >&2; exit 1; }
-GAITOPT=$1
-ROOT=$2
+# shellcheck source=tests/apps/cli_test_lib.sh
+source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
 ROBOT="$ROOT/configs/robots/mu2004_five_link.yaml"
 GAIT="$ROOT/configs/gaits/mu2004.yaml"
 OCP="$ROOT/configs/ocp/rabbit_kelly2017.yaml"
-# shellcheck source=tests/apps/cli_test_lib.sh
-source "$(dirname "$0")/cli_test_lib.sh"
 
 # expect NAME CODE PATTERN: the last run exited CODE, its stderr matches the extended regular
 # expression PATTERN, and it created no result folder.

@@ -1,4 +1,26 @@
-# Shared helpers of the CLI end-to-end tests: sourced after GAITOPT and ROOT are set.
+# shellcheck shell=bash
+# Shared helpers of the end-to-end tests. Every script starts with one of
+#   source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"      # <gaitopt binary> <repo root>
+#   source "$(dirname "$0")/cli_test_lib.sh" gaitopt-mpi "$@"  # the same and an optional [mpi]
+#   source "$(dirname "$0")/cli_test_lib.sh" root "$@"         # <repo root> (the plot tests)
+# which checks the script's arguments and sets GAITOPT and ROOT.
+set -u
+# shellcheck disable=SC2034  # GAITOPT and ROOT are read by the sourcing script
+case "$1:$#" in
+  gaitopt:3 | gaitopt-mpi:3 | gaitopt-mpi:4)
+    GAITOPT=$2
+    ROOT=$3
+    ;;
+  root:2) ROOT=$2 ;;
+  *)
+    case $1 in
+      root) echo "usage: $0 <repo root>" >&2 ;;
+      gaitopt) echo "usage: $0 <gaitopt binary> <repo root>" >&2 ;;
+      *) echo "usage: $0 <gaitopt binary> <repo root> [mpi]" >&2 ;;
+    esac
+    exit 1
+    ;;
+esac
 PY=/usr/bin/python3
 
 TMP=$(mktemp -d)

@@ -2,12 +2,8 @@
 # End-to-end checks of `gaitopt compare`: the report of two gait folders, and exit 2 with the
 # missing file named when a folder is not a gait result.
 # Usage: compare_cli_test.sh <path to gaitopt binary> <repo root>
-set -u
-[[ $# -eq 2 ]] || { echo "usage: $0 <gaitopt binary> <repo root>" >&2; exit 1; }
-GAITOPT=$1
-ROOT=$2
 # shellcheck source=tests/apps/cli_test_lib.sh
-source "$(dirname "$0")/cli_test_lib.sh"
+source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
 "$PY" -c "import matplotlib" 2>/dev/null || { echo "SKIP: no matplotlib"; exit 0; }
 cd "$ROOT" || fail "no repo root $ROOT"
 

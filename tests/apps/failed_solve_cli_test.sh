@@ -5,13 +5,9 @@
 # "converged": false) and never touches a previous good result in OUT; a killed run leaves OUT
 # whole, and no run leaves staging folders behind.
 # Usage: failed_solve_cli_test.sh <path to gaitopt binary> <repo root>
-set -u
-[[ $# -eq 2 ]] || { echo "usage: $0 <gaitopt binary> <repo root>" >&2; exit 1; }
-GAITOPT=$1
-ROOT=$2
-OCP="$ROOT/configs/ocp/rabbit_kelly2017.yaml"
 # shellcheck source=tests/apps/cli_test_lib.sh
-source "$(dirname "$0")/cli_test_lib.sh"
+source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
+OCP="$ROOT/configs/ocp/rabbit_kelly2017.yaml"
 OUT="$TMP/result"
 
 # A good result in OUT, fingerprinted, that no later failure may change.

@@ -1,13 +1,9 @@
 #!/usr/bin/env bash
 # End-to-end checks of `gaitopt impact-map`: outputs, counts, exit codes, determinism over jobs.
 # Usage: impact_map_cli_test.sh <path to gaitopt binary> <repo root>
-set -u
-[[ $# -eq 2 ]] || { echo "usage: $0 <gaitopt binary> <repo root>" >&2; exit 1; }
-GAITOPT=$1
-ROOT=$2
-ROBOT="$ROOT/configs/robots/mu2004_five_link.yaml"
 # shellcheck source=tests/apps/cli_test_lib.sh
-source "$(dirname "$0")/cli_test_lib.sh"
+source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
+ROBOT="$ROOT/configs/robots/mu2004_five_link.yaml"
 GRID=(--step-lengths 0.1:0.9:5 --knee-bias 5:45:3 --approach-angles 10:170:9)
 
 # (a) a 5 x 3 x 9 grid with one job: files, row count, counts summing to the grid size.

@@ -1,17 +1,9 @@
 #!/usr/bin/env bash
 # End-to-end checks of `gaitopt inspect`.
 # Usage: inspect_cli_test.sh <path to gaitopt binary> <repo root>
-set -u
-
-if [[ $# -ne 2 ]]; then
-  echo "usage: $0 <gaitopt binary> <repo root>" >&2
-  exit 1
-fi
-GAITOPT=$1
-ROOT=$2
-ROBOT="$ROOT/configs/robots/mu2004_five_link.yaml"
 # shellcheck source=tests/apps/cli_test_lib.sh
-source "$(dirname "$0")/cli_test_lib.sh"
+source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
+ROBOT="$ROOT/configs/robots/mu2004_five_link.yaml"
 
 # (a) default standing posture of the five-link robot.
 run inspect --robot "$ROBOT"

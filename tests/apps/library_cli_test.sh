@@ -8,13 +8,9 @@
 # With a third argument `mpi`: instead, the same library on two MPI ranks gives the same rows
 # as on one process.
 # Usage: library_cli_test.sh <path to gaitopt binary> <repo root> [mpi]
-set -u
-[[ $# -eq 2 || $# -eq 3 ]] || { echo "usage: $0 <gaitopt binary> <repo root> [mpi]" >&2; exit 1; }
-GAITOPT=$1
-ROOT=$2
-MODE=${3:-}
 # shellcheck source=tests/apps/cli_test_lib.sh
-source "$(dirname "$0")/cli_test_lib.sh"
+source "$(dirname "$0")/cli_test_lib.sh" gaitopt-mpi "$@"
+MODE=${3:-}
 cd "$ROOT" || fail "no repo root $ROOT"
 # No pictures: python would take longer than the solves.
 export GAITOPT_SCRIPTS="$TMP/no_scripts"

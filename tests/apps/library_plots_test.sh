@@ -5,12 +5,9 @@
 # malformed index.json and a point off the grid.
 # Needs Debian's python3-matplotlib; skips (exit 0) without it.
 # Usage: library_plots_test.sh <repo root>
-set -u
-[[ $# -eq 1 ]] || { echo "usage: $0 <repo root>" >&2; exit 1; }
-ROOT=$1
-SCRIPT="$ROOT/scripts/plots/library_plots.py"
 # shellcheck source=tests/apps/cli_test_lib.sh
-source "$(dirname "$0")/cli_test_lib.sh"  # PY, TMP (removed on exit), fail
+source "$(dirname "$0")/cli_test_lib.sh" root "$@"  # PY, TMP (removed on exit), fail
+SCRIPT="$ROOT/scripts/plots/library_plots.py"
 "$PY" -c "import matplotlib, numpy" 2>/dev/null || { echo "SKIP: no matplotlib/numpy"; exit 0; }
 
 plot() {

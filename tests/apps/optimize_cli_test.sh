@@ -1,13 +1,9 @@
 #!/usr/bin/env bash
 # End-to-end checks of `gaitopt optimize`: the RABBIT benchmark, outputs and exit codes.
 # Usage: optimize_cli_test.sh <path to gaitopt binary> <repo root>
-set -u
-[[ $# -eq 2 ]] || { echo "usage: $0 <gaitopt binary> <repo root>" >&2; exit 1; }
-GAITOPT=$1
-ROOT=$2
-CONFIG="$ROOT/configs/ocp/rabbit_kelly2017.yaml"
 # shellcheck source=tests/apps/cli_test_lib.sh
-source "$(dirname "$0")/cli_test_lib.sh"
+source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
+CONFIG="$ROOT/configs/ocp/rabbit_kelly2017.yaml"
 
 # (a) the benchmark solves; the summary carries the solver's figures; the CSV is dense.
 run optimize --config "$CONFIG" --out "$TMP/opt" --rate 200 --quiet --no-plots

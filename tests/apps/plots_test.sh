@@ -4,12 +4,9 @@
 # checks that gait_plots.py and impact_map.py report broken inputs through plot_io the same way.
 # Needs Debian's python3-matplotlib; skips (exit 0) without it.
 # Usage: plots_test.sh <repo root>
-set -u
-[[ $# -eq 1 ]] || { echo "usage: $0 <repo root>" >&2; exit 1; }
-ROOT=$1
-PLOTS="$ROOT/scripts/plots"
 # shellcheck source=tests/apps/cli_test_lib.sh
-source "$(dirname "$0")/cli_test_lib.sh"  # PY, TMP (removed on exit), fail
+source "$(dirname "$0")/cli_test_lib.sh" root "$@"  # PY, TMP (removed on exit), fail
+PLOTS="$ROOT/scripts/plots"
 "$PY" -c "import matplotlib, numpy" 2>/dev/null || { echo "SKIP: no matplotlib/numpy"; exit 0; }
 
 # Runs a plotting script on a folder, keeping stdout, stderr and the exit code.

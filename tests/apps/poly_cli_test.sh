@@ -1,14 +1,10 @@
 #!/usr/bin/env bash
 # End-to-end checks of `gaitopt poly`: outputs, summary values and exit codes.
 # Usage: poly_cli_test.sh <path to gaitopt binary> <repo root>
-set -u
-[[ $# -eq 2 ]] || { echo "usage: $0 <gaitopt binary> <repo root>" >&2; exit 1; }
-GAITOPT=$1
-ROOT=$2
+# shellcheck source=tests/apps/cli_test_lib.sh
+source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
 ROBOT="$ROOT/configs/robots/mu2004_five_link.yaml"
 GAIT="$ROOT/configs/gaits/mu2004.yaml"
-# shellcheck source=tests/apps/cli_test_lib.sh
-source "$(dirname "$0")/cli_test_lib.sh"
 
 # (a) the Mu gait at 200 Hz, no pictures: files, sample count and physics in summary.json.
 run poly --robot "$ROBOT" --gait "$GAIT" --out "$TMP/poly" --rate 200 --no-plots

@@ -4,15 +4,11 @@
 # (a small tmpfs; skipped with a message where it cannot be mounted), resume under the same
 # settings only, validated values, inputs that must match, no control bytes on the terminal.
 # Usage: reliability_cli_test.sh <path to gaitopt binary> <repo root>
-set -u
-[[ $# -eq 2 ]] || { echo "usage: $0 <gaitopt binary> <repo root>" >&2; exit 1; }
-GAITOPT=$1
-ROOT=$2
+# shellcheck source=tests/apps/cli_test_lib.sh
+source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
 ROBOT="$ROOT/configs/robots/mu2004_five_link.yaml"
 GAIT="$ROOT/configs/gaits/mu2004.yaml"
 RABBIT="$ROOT/configs/robots/rabbit.yaml"
-# shellcheck source=tests/apps/cli_test_lib.sh
-source "$(dirname "$0")/cli_test_lib.sh"
 # KEEP_GOING=1 lists every failing case instead of stopping at the first (e.g. on an old binary).
 fail() {
   echo "FAIL: $*" >&2

@@ -21,7 +21,7 @@ import sys
 import matplotlib.image
 import numpy as np
 
-# The link colours of apps/report_template.html (COLORS), as 0..255 RGB.
+# The link colours of report/report_template.html (COLORS), as 0..255 RGB.
 LINK_COLORS = ["#1f77b4", "#2ca02c", "#d62728", "#ff7f0e", "#9467bd"]
 MIN_LINK_PIXELS = 150
 MIN_MOVED_PIXELS = 300

@@ -3,12 +3,8 @@
 # http(s) reference, every chart inlined), walk.gif, a non-result folder exits 2; the walk page
 # in headless Chromium (report_browser_check.py: renders, no console error, the robot moves).
 # Usage: report_cli_test.sh <path to gaitopt binary> <repo root>
-set -u
-[[ $# -eq 2 ]] || { echo "usage: $0 <gaitopt binary> <repo root>" >&2; exit 1; }
-GAITOPT=$1
-ROOT=$2
 # shellcheck source=tests/apps/cli_test_lib.sh
-source "$(dirname "$0")/cli_test_lib.sh"
+source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
 cd "$ROOT" || fail "no repo root $ROOT"
 
 # (a) a gait folder: the page animates the step and inlines overview.png.

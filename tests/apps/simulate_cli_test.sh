@@ -2,12 +2,8 @@
 # End-to-end checks of `gaitopt simulate`: the polynomial gait walks on each ground, the outputs
 # and summary keys, a fall is a result (exit 0, fell: true), bad input exits 2 naming the problem.
 # Usage: simulate_cli_test.sh <path to gaitopt binary> <repo root>
-set -u
-[[ $# -eq 2 ]] || { echo "usage: $0 <gaitopt binary> <repo root>" >&2; exit 1; }
-GAITOPT=$1
-ROOT=$2
 # shellcheck source=tests/apps/cli_test_lib.sh
-source "$(dirname "$0")/cli_test_lib.sh"
+source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
 cd "$ROOT" || fail "no repo root $ROOT"  # the reference folder names its robot under configs/
 # The reference: the polynomial gait, made here (results/ keeps no trajectory CSVs).
 REF="$TMP/poly"

@@ -3,12 +3,8 @@
 # polynomial gait, the rows do not depend on the number of jobs, and an interrupted sweep resumes
 # without redoing finished points.
 # Usage: stability_cli_test.sh <path to gaitopt binary> <repo root>
-set -u
-[[ $# -eq 2 ]] || { echo "usage: $0 <gaitopt binary> <repo root>" >&2; exit 1; }
-GAITOPT=$1
-ROOT=$2
 # shellcheck source=tests/apps/cli_test_lib.sh
-source "$(dirname "$0")/cli_test_lib.sh"
+source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
 cd "$ROOT" || fail "no repo root $ROOT"
 # The reference: the polynomial gait, made here (results/ keeps no trajectory CSVs).
 run poly --robot configs/robots/mu2004_five_link.yaml --gait configs/gaits/mu2004.yaml \

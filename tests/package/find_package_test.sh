@@ -11,7 +11,7 @@ BUILD=$1
 ROOT=$2
 GAITOPT=$3
 # shellcheck source=tests/apps/cli_test_lib.sh
-source "$ROOT/tests/apps/cli_test_lib.sh"
+source "$ROOT/tests/apps/cli_test_lib.sh" gaitopt "$GAITOPT" "$ROOT"
 cd "$ROOT" || fail "no repo root $ROOT"
 GEN=()
 command -v ninja >/dev/null && GEN=(-G Ninja)

@@ -1,0 +1,93 @@
+#include "library/library_folder.hpp"
+
+#include <filesystem>
+#include <fstream>
+
+#include "config/config_error.hpp"
+#include "gaits/gait_summary.hpp"
+#include "gaits/trajectory_csv.hpp"
+#include "io/settings_record.hpp"
+#include "io/strict_json.hpp"
+
+namespace gaitopt::library {
+namespace {
+
+/// The base OCP file relative to the library folder, so the folder and the configs can move
+/// together (a clone of the repository elsewhere).
+std::string ocpPathFromFolder(const LibrarySetup& s) {
+  namespace fs = std::filesystem;
+  return fs::relative(fs::absolute(s.config.ocp_path), fs::absolute(s.out_dir)).string();
+}
+
+/// The last run that solved something: a rerun with nothing left to do keeps the figures of
+/// the run that built the library.
+nlohmann::ordered_json lastRun(const std::string& path, const RunStats& s) {
+  if (s.points == 0 && std::filesystem::exists(path)) {
+    std::ifstream in(path);
+    const auto previous = nlohmann::ordered_json::parse(in, nullptr, false);
+    if (!previous.is_discarded() && previous.contains("last_run")) return previous["last_run"];
+  }
+  return {{"points", s.points},
+          {"failed", s.failed},
+          {"solves", s.solves},
+          {"workers", s.workers},
+          {"wall_time_s", s.wall_time_s},
+          {"points_per_second", s.wall_time_s > 0 ? s.points / s.wall_time_s : 0.0}};
+}
+
+}  // namespace
+
+GaitLookup FolderGaits::lookup() {
+  return [this](int p) -> const gaits::Trajectory* {
+    auto& slot = cache_[p];
+    const std::string csv = dir_ + "/points/" + grid_->point(p).name + "/trajectory.csv";
+    if (!slot && std::filesystem::exists(csv))
+      slot = std::make_unique<gaits::Trajectory>(gaits::readTrajectoryCsv(csv, *model_));
+    return slot.get();
+  };
+}
+
+LibraryFolder readLibraryFolder(const std::string& dir) {
+  const std::string path = dir + "/library.json";
+  if (!std::filesystem::is_regular_file(path))
+    throw config::ConfigError(path, "", 0, "not a gait library folder (no library.json)");
+  const auto j = io::readStrictJson(path);
+  if (!j.is_object() || !j.contains("axes") || !j.contains("ocp"))
+    throw config::ConfigError(path, "", 0, "not a library.json written by gaitopt library");
+  std::array<std::vector<double>, 3> axes;
+  for (int a = 0; a < 3; ++a) axes[a] = j.at("axes").at(kAxisNames[a]).get<std::vector<double>>();
+  // The OCP path is relative to the library folder (claimLibraryFolder).
+  const auto ocp_path = std::filesystem::path(dir) / j.at("ocp").get<std::string>();
+  return {Grid(axes), ocp::loadOcpConfig(ocp_path.string())};
+}
+
+void claimLibraryFolder(const LibrarySetup& s) {
+  nlohmann::ordered_json axes;
+  for (int a = 0; a < 3; ++a) axes[kAxisNames[a]] = s.grid.axes()[a];
+  const nlohmann::ordered_json claim = {
+      {"name", s.config.name}, {"ocp", ocpPathFromFolder(s)}, {"axes", axes}};
+  io::claimSettings(s.out_dir + "/library.json", claim);
+}
+
+ScheduleState previousState(const LibrarySetup& s, const LibraryIndex& index, bool retry_failed) {
+  const auto n = static_cast<std::size_t>(s.grid.size());
+  ScheduleState state{std::vector<bool>(n, false), std::vector<bool>(n, false)};
+  for (int p = 0; p < s.grid.size(); ++p) {
+    const auto row = index.row(s.grid.point(p).name);
+    if (!row) continue;
+    const bool solved =
+        row->converged && std::filesystem::exists(s.pointDir(p) + "/trajectory.csv");
+    state.solved[static_cast<std::size_t>(p)] = solved;
+    state.finished[static_cast<std::size_t>(p)] = solved || (!row->converged && !retry_failed);
+  }
+  return state;
+}
+
+void writeIndexJson(const LibrarySetup& setup, const LibraryIndex& index, const RunStats& s) {
+  const std::string path = setup.out_dir + "/index.json";
+  auto json = index.json(setup.grid);
+  json["last_run"] = lastRun(path, s);
+  gaits::writeJsonFile(json, path);
+}
+
+}  // namespace gaitopt::library

@@ -1,0 +1,131 @@
+#include "library/library_point.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <optional>
+
+#include "gaits/metrics.hpp"
+#include "gaits/retime.hpp"
+#include "gaits/trajectory_csv.hpp"
+#include "io/output_folder.hpp"
+#include "library/point_problem.hpp"
+#include "ocp/initial_guess.hpp"
+
+namespace gaitopt::library {
+namespace {
+
+/// The polynomial gait of the point, or why it cannot be realised there.
+struct PolyGuess {
+  std::optional<gaits::Trajectory> traj;
+  std::string error;
+};
+
+PolyGuess polyGuess(const PointProblem& pp) {
+  try {
+    return {ocp::polynomialGuess(pp.model, pp.guess), ""};
+  } catch (const std::domain_error& e) {
+    return {std::nullopt, std::string("polynomial gait: ") + e.what()};
+  }
+}
+
+/// A solve and what it cost; iterations and times add up over the attempts.
+struct Attempts {
+  std::optional<ocp::GaitSolution> solution;
+  int iterations = 0;
+  double time_s = 0;
+
+  void run(const PointProblem& pp, const gaits::Trajectory& guess) {
+    solution = ocp::solveGait(pp.model, pp.config, guess);
+    iterations += solution->result.iterations;
+    time_s += solution->result.wall_time_s;
+  }
+  bool solved() const { return solution && solution->result.success; }
+};
+
+void solve(const LibrarySetup& setup, const PointJob& job, const PointProblem& pp,
+           const PolyGuess& poly, Attempts& a, IndexRow& row) {
+  if (job.warm_from >= 0) {
+    row.start = "warm:" + setup.grid.point(job.warm_from).name;
+    try {
+      const gaits::Trajectory neighbour =
+          gaits::readTrajectoryCsv(setup.pointDir(job.warm_from) + "/trajectory.csv", pp.model);
+      a.run(pp, gaits::retimed(neighbour, phaseDurations(pp.config), pp.config.step_length));
+    } catch (const std::exception& e) {  // a neighbour's file damaged since: start cold
+      if (!poly.traj) throw;
+      row.message = std::string("warm start unusable: ") + e.what();
+    }
+    if (a.solved() || !poly.traj) return;
+    row.start += ",polynomial";
+  } else {
+    if (!poly.traj) throw std::domain_error(poly.error);
+    row.start = "polynomial";
+  }
+  a.run(pp, *poly.traj);
+}
+
+void record(const LibrarySetup& setup, const PointProblem& pp, const Attempts& a,
+            const std::string& dir, IndexRow& row) {
+  const ocp::GaitSolution& s = *a.solution;
+  row.status = s.result.status;
+  row.converged = s.result.success;
+  row.cost = s.result.cost;
+  row.iterations = a.iterations;
+  row.solve_time_s = a.time_s;
+  ocp::GaitResultOptions options = setup.result;
+  options.config_path = setup.config.path;
+  if (!row.converged) {
+    row.message = ocp::writeFailedResult(options, pp.model, pp.config, s, dir + ".failed");
+    return;
+  }
+  io::OutputFolder(dir, {}).write([&](const std::string& staging) {
+    const auto summary = ocp::writeGaitResult(options, pp.model, pp.config, s, nullptr, staging);
+    row.cost_of_transport = summary.at("cost_of_transport").get<double>();
+  });
+  io::removeIfOurs(dir + ".failed");  // a retried point's old failure
+}
+
+/// A row for the point with nothing known yet.
+IndexRow emptyRow(const GridPoint& p) {
+  IndexRow row;
+  row.point = p.name;
+  row.speed = p.values[0];
+  row.step_length = p.values[1];
+  row.slope = p.values[2];
+  row.cost = row.cost_of_transport = row.poly_cost_of_transport = std::nan("");
+  return row;
+}
+
+}  // namespace
+
+std::string LibrarySetup::pointDir(int point) const {
+  return out_dir + "/points/" + grid.point(point).name;
+}
+
+IndexRow crashedPointRow(const LibrarySetup& setup, const PointJob& job, const std::string& why) {
+  IndexRow row = emptyRow(setup.grid.point(job.point));
+  row.status = "error";
+  row.message = why;
+  return row;
+}
+
+IndexRow solveLibraryPoint(const LibrarySetup& setup, const PointJob& job) {
+  IndexRow row = emptyRow(setup.grid.point(job.point));
+  const auto start = std::chrono::steady_clock::now();
+  Attempts attempts;
+  try {
+    const PointProblem pp = pointProblem(setup.config.base, setup.grid.point(job.point).values);
+    const PolyGuess poly = polyGuess(pp);
+    if (poly.traj) row.poly_cost_of_transport = gaits::costOfTransport(*poly.traj, pp.model);
+    solve(setup, job, pp, poly, attempts, row);
+    record(setup, pp, attempts, setup.pointDir(job.point), row);
+  } catch (const std::exception& e) {
+    row.status = "error";
+    row.message = e.what();
+    row.solve_time_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  return row;
+}
+
+}  // namespace gaitopt::library

@@ -1,0 +1,32 @@
+#pragma once
+/// @file library_point.hpp
+/// One point of a gait library, solved and written: DIR/points/<point>/ (the same files as
+/// `gaitopt optimize`), or DIR/points/<point>.failed/ for a solve that failed.
+#include <string>
+
+#include "library/grid.hpp"
+#include "library/library_config.hpp"
+#include "library/library_index.hpp"
+#include "library/schedule.hpp"
+#include "ocp/solution_report.hpp"
+
+namespace gaitopt::library {
+
+struct LibrarySetup {
+  LibraryConfig config;
+  Grid grid;
+  std::string out_dir;
+  ocp::GaitResultOptions result;  ///< rate and pictures of every point folder
+
+  std::string pointDir(int point) const;
+};
+
+/// Solves the job's point, from the job's warm start (retimed to the point's phases) or the
+/// polynomial gait, and from the polynomial gait again when a warm start fails. Never throws:
+/// a point that cannot even be set up is a row with status "error" and the reason.
+IndexRow solveLibraryPoint(const LibrarySetup& setup, const PointJob& job);
+
+/// The row of a point whose worker process died while solving it.
+IndexRow crashedPointRow(const LibrarySetup& setup, const PointJob& job, const std::string& why);
+
+}  // namespace gaitopt::library

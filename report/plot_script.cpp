@@ -1,0 +1,53 @@
+#include "report/plot_script.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <system_error>
+
+#include <fmt/format.h>
+
+#include "io/spawn.hpp"
+
+namespace gaitopt::report {
+namespace {
+
+/// Scripts live in the source tree; GAITOPT_SCRIPTS overrides (an installed copy).
+std::string scriptDir() {
+  if (const char* env = std::getenv("GAITOPT_SCRIPTS")) return env;
+  return GAITOPT_SOURCE_DIR "/scripts/plots";
+}
+
+}  // namespace
+
+bool runPlotScript(const std::string& script, const std::vector<std::string>& args) {
+  std::fflush(stdout);  // keep our progress lines before the script's output
+  const std::string python = "/usr/bin/python3";
+  std::vector<std::string> argv = {python, scriptDir() + "/" + script};
+  argv.insert(argv.end(), args.begin(), args.end());
+  try {
+    if (!std::filesystem::exists(python) ||
+        io::runProgram({python, "-c", "import matplotlib"}, true) != 0) {
+      fmt::print(stderr,
+                 "warning: no pictures: {} with matplotlib is missing "
+                 "(apt-get install python3-matplotlib)\n",
+                 python);
+      return false;
+    }
+    if (const int status = io::runProgram(argv); status != 0) {
+      fmt::print(stderr, "warning: plotting failed: {} exited {}\n", script, status);
+      return false;
+    }
+  } catch (const std::system_error& e) {  // no process could be started (a process limit)
+    fmt::print(stderr, "warning: no pictures: {}\n", e.what());
+    return false;
+  }
+  return true;
+}
+
+std::function<void(const std::string& dir)> gaitPictures(bool plots) {
+  if (!plots) return {};
+  return [](const std::string& dir) { runPlotScript("gait_plots.py", {dir}); };
+}
+
+}  // namespace gaitopt::report

@@ -1,0 +1,138 @@
+#include "report/report_folder.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "config/config_error.hpp"
+#include "dynamics/robot_config.hpp"
+#include "report/report_frames.hpp"
+#include "sim/reference_folder.hpp"
+
+namespace gaitopt::report {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double kGaitFrameRate = 100;  // [Hz] smooth at screen rates, small page
+
+bool has(const std::string& dir, const std::string& file) {
+  return fs::is_regular_file(fs::path(dir) / file);
+}
+
+nlohmann::ordered_json readJson(const std::string& path) {
+  std::ifstream in(path);
+  auto json = nlohmann::ordered_json::parse(in, nullptr, false);
+  if (!in || json.is_discarded()) throw config::ConfigError(path, "", 0, "not readable JSON");
+  return json;
+}
+
+/// The files of `dir` whose names start with `prefix` and end with `suffix`, sorted.
+std::vector<std::string> filesOf(const std::string& dir, const std::string& prefix,
+                                 const std::string& suffix) {
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_regular_file() && name.starts_with(prefix) && name.ends_with(suffix))
+      files.push_back(entry.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::vector<std::string> linkNames(const dynamics::Model& model) {
+  std::vector<std::string> names;
+  for (const auto& link : model.links()) names.push_back(link.name);
+  return names;
+}
+
+/// One step of a gait folder, B at the origin.
+void animateGait(ReportContent& c, const std::string& gait_dir, const std::string& robot_path) {
+  const sim::ReferenceFolder ref = sim::loadReferenceFolder(gait_dir, robot_path);
+  c.frames = framesJson(gaitFrames(ref.model, ref.step, kGaitFrameRate));
+  c.link_names = linkNames(ref.model);
+  c.animation_note = fmt::format(
+      "One step of {}/trajectory.csv ({}), drawn in the frame of the stance tip; it loops. "
+      "Each step the legs swap (relabelling, Mu sec. 2.4).",
+      gait_dir, ref.model.name());
+}
+
+/// The walk as simulated, every step in the world frame (stick.csv).
+void animateWalk(ReportContent& c, const std::string& dir) {
+  c.frames = framesJson(readStickCsv(dir + "/stick.csv"));
+  const std::string robot = c.summary.value("robot_file", "");
+  if (!robot.empty() && fs::is_regular_file(robot))
+    c.link_names = linkNames(dynamics::loadRobot(robot));
+  c.animation_note = fmt::format(
+      "The closed-loop walk of {}/stick.csv in the world frame; link colours follow the legs "
+      "as labelled at each step's start (stance leg first).",
+      dir);
+}
+
+/// A library shows its first solved point that kept its trajectory.
+void animateLibraryPoint(ReportContent& c, const std::string& dir, const std::string& robot_path) {
+  const std::string points = dir + "/points";
+  std::vector<std::string> folders;
+  if (fs::is_directory(points))
+    for (const auto& entry : fs::directory_iterator(points))
+      if (has(entry.path().string(), "trajectory.csv")) folders.push_back(entry.path().string());
+  std::sort(folders.begin(), folders.end());
+  if (folders.empty()) {
+    c.animation_note = "No point of the library kept its trajectory.csv (points/ is empty).";
+    return;
+  }
+  animateGait(c, folders.front(), robot_path);
+}
+
+/// A stability sweep shows the reference gait it walked, when that folder is still there.
+void animateReference(ReportContent& c, const std::string& robot_path) {
+  const std::string ref = c.summary.value("reference", "");
+  if (ref.empty() || !has(ref, "trajectory.csv")) {
+    c.animation_note = fmt::format("The reference gait '{}' is not here to animate.", ref);
+    return;
+  }
+  animateGait(c, ref, robot_path);
+}
+
+}  // namespace
+
+ReportContent collectReport(const std::string& dir, const std::string& robot_path) {
+  if (!fs::is_directory(dir))
+    throw config::ConfigError(dir, "", 0, "no such folder: expected a gaitopt result folder");
+  ReportContent c;
+  c.title = fs::path(dir).lexically_normal().filename().string();
+  if (c.title.empty()) c.title = fs::path(dir).lexically_normal().parent_path().filename().string();
+  c.charts = filesOf(dir, "", ".png");
+  if (has(dir, "library.json")) {
+    c.kind = "library";
+    c.summary = readJson(dir + "/library.json");
+    c.tables = filesOf(dir, "index", ".csv");
+    animateLibraryPoint(c, dir, robot_path);
+    return c;
+  }
+  if (!has(dir, "summary.json"))
+    throw config::ConfigError(dir, "", 0,
+                              "not a gaitopt result folder: no summary.json or library.json");
+  c.summary = readJson(dir + "/summary.json");
+  if (has(dir, "stick.csv")) {
+    c.kind = "walk";
+    c.tables = filesOf(dir, "steps", ".csv");
+    animateWalk(c, dir);
+  } else if (has(dir, "trajectory.csv")) {
+    c.kind = "gait";
+    animateGait(c, dir, robot_path);
+  } else if (c.summary.contains("sweeps")) {
+    c.kind = "stability";
+    c.tables = filesOf(dir, "sweep_", ".csv");
+    animateReference(c, robot_path);
+  } else {
+    throw config::ConfigError(dir, "", 0,
+                              "not a gait, walk, library or stability folder: no trajectory.csv, "
+                              "stick.csv, library.json or sweeps in summary.json");
+  }
+  return c;
+}
+
+}  // namespace gaitopt::report

@@ -1,0 +1,51 @@
+#pragma once
+/// @file scenario_settings.hpp
+/// The settings of `gaitopt simulate` and `gaitopt stability` (which gait, controller, ground and
+/// plant to walk) turned into a Scenario, the files it reads, and its record in summary.json.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "dynamics/model.hpp"
+#include "sim/scenario.hpp"
+
+namespace gaitopt::sim {
+
+/// What a closed-loop command walks, as given on its command line.
+struct ScenarioSettings {
+  std::string reference_dir;
+  std::string robot_path;  ///< "" = from the reference's summary.json
+  std::string controller = "computed_torque";
+  std::string ground = "rigid";  ///< a shipped ground name or a ground YAML
+  int steps = 20;
+  int uncertainty_case = 1;              ///< Mu ch. 4 case
+  std::string uncertainty_on = "plant";  ///< or "controller" (Mu's setting)
+  double friction = -1;                  ///< < 0: the robot's
+  double push = 0;  ///< horizontal hip impulse, 0.1 s pulse from mid single support of step 2 [N s]
+  double gain_scale = 1;
+};
+
+/// The ground YAML `ground` names: a shipped configs/grounds/<name>.yaml or a file path.
+std::string groundPath(const std::string& ground);
+
+/// The ground as summary.json records it: a shipped ground by its path relative to the source
+/// tree (no absolute path of the machine that ran it), a user's file as given.
+std::string groundRecord(const std::string& ground);
+
+/// The scenario the options describe. @throws config::ConfigError for a bad ground file.
+Scenario makeScenario(const ScenarioSettings& o);
+
+/// The files the scenario reads (reference folder, robot and ground files): a --out may not
+/// be one of them.
+std::vector<std::string> scenarioInputs(const ScenarioSettings& o);
+
+/// @throws config::ConfigError (exit 2) when the controller cannot drive `model`: both
+/// tracking laws set every joint acceleration through the torques, so the stance ankle must be
+/// actuated.
+void requireControllerFits(const ScenarioSettings& o, const dynamics::Model& model);
+
+/// The scenario's settings for summary.json.
+nlohmann::ordered_json scenarioJson(const ScenarioSettings& o, const Scenario& s);
+
+}  // namespace gaitopt::sim

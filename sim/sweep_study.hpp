@@ -1,0 +1,46 @@
+#pragma once
+/// @file sweep_study.hpp
+/// One stability sweep (`gaitopt stability`): the values of a scenario parameter to walk, one
+/// walk per value as a row of sweep_file.hpp, and the interval around the nominal value where
+/// every point walks all its steps.
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "dynamics/model.hpp"
+#include "gaits/impact_map.hpp"
+#include "sim/reference.hpp"
+#include "sim/reference_folder.hpp"
+#include "sim/scenario.hpp"
+#include "sim/scenario_settings.hpp"
+#include "sim/sweep_file.hpp"
+
+namespace gaitopt::sim {
+
+/// axis.count values from axis.first to axis.last: evenly spaced, or by a constant ratio for a
+/// geometric parameter; rounding noise below 1e-12 of the larger end snapped to 0 (so
+/// -0.3:0.5:17 holds 0 rather than 5.6e-17).
+/// @throws std::invalid_argument for a geometric range whose ends are not both positive.
+std::vector<double> sweepValues(const SweepParameter& parameter, const gaits::GridAxis& axis);
+
+/// Walks `scenario` with the parameter `name` set to `value` (model: the reference's robot).
+SweepRow walkSweepPoint(const dynamics::Model& model, const Reference& reference, Scenario scenario,
+                        const std::string& name, double value);
+
+/// The interval of values around `nominal` (NaN: none) where every row walks all its steps:
+/// unit, meaning, values (rows), nominal, walks_from, walks_to (null when the point nearest
+/// the nominal value does not walk), and fails_below / fails_above (value, failure) where the
+/// interval ends inside the rows.
+nlohmann::ordered_json walkingInterval(const SweepParameter& parameter,
+                                       const std::map<std::string, SweepRow>& rows, double nominal);
+
+/// What defines a sweep folder's rows (settings.json): the robot and fingerprints of its file,
+/// the reference's trajectory.csv and the ground file, the controller and plant settings, the
+/// steps and whether Poincare maps are taken. A rerun under other settings would mix two
+/// experiments.
+nlohmann::ordered_json sweepFolderSettings(const ScenarioSettings& settings,
+                                           const ReferenceFolder& ref, const Scenario& base);
+
+}  // namespace gaitopt::sim

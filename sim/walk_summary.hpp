@@ -1,0 +1,22 @@
+#pragma once
+/// @file walk_summary.hpp
+/// summary.json of a closed-loop walk (`gaitopt simulate`): robot, the scenario's settings,
+/// friction, steps_completed, fell, failure, max_tracking_error, mean step length, duration and
+/// speed over the completed steps, the Poincare multipliers (null when not computed, with
+/// poincare_failure when the map failed), HZD's restricted Poincare map (analytic and measured)
+/// under the hzd controller, and wall_time_s.
+#include <nlohmann/json.hpp>
+
+#include "dynamics/model.hpp"
+#include "sim/reference_folder.hpp"
+#include "sim/scenario.hpp"
+#include "sim/scenario_settings.hpp"
+
+namespace gaitopt::sim {
+
+/// `plant`: the model walked (the scenario's parameter errors applied).
+nlohmann::ordered_json walkSummary(const ScenarioSettings& settings, const ReferenceFolder& ref,
+                                   const Scenario& scenario, const dynamics::Model& plant,
+                                   const ScenarioResult& result);
+
+}  // namespace gaitopt::sim

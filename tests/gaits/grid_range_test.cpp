@@ -1,0 +1,42 @@
+// Ranges "a:b:n" and "a" as the command line writes them (gaits/grid_range.hpp).
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "config/config_error.hpp"
+#include "gaits/grid_range.hpp"
+
+namespace gaitopt::gaits {
+namespace {
+
+TEST(GridRange, ARangeScaledToInternalUnits) {
+  const double deg = std::numbers::pi / 180;
+  const GridAxis a = parseRange("1:60:60", "--knee-bias", deg);
+  EXPECT_DOUBLE_EQ(a.first, deg);
+  EXPECT_DOUBLE_EQ(a.last, 60 * deg);
+  EXPECT_EQ(a.count, 60);
+  EXPECT_DOUBLE_EQ(a.value(14), 15 * deg);
+}
+
+TEST(GridRange, OneValueIsARangeOfOne) {
+  const GridAxis a = parseRange("0.35", "--step-lengths", 1.0);
+  EXPECT_EQ(a.first, 0.35);
+  EXPECT_EQ(a.last, 0.35);
+  EXPECT_EQ(a.count, 1);
+}
+
+TEST(GridRange, MalformedRangesNameTheOption) {
+  for (const char* bad :
+       {"1:2", "1:2:0", "1:2:2.5", "1:2:2000001", "a:2:3", "1:2:3x", "nan", "1:inf:3", ""}) {
+    try {
+      parseRange(bad, "--approach-angles", 1.0);
+      ADD_FAILURE() << "accepted '" << bad << "'";
+    } catch (const config::ConfigError& e) {
+      EXPECT_NE(std::string(e.what()).find("--approach-angles"), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace gaitopt::gaits

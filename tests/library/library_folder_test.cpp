@@ -1,0 +1,113 @@
+// The files of a library folder (library/library_folder.hpp, library_index.hpp): library.json
+// written by a run and read back by `gaitopt interpolate`, and index rows through index.csv and
+// index.json, every field.
+#include <cmath>
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "config/config_error.hpp"
+#include "io/io_test_dir.hpp"
+#include "io/strict_json.hpp"
+#include "library/library_folder.hpp"
+
+namespace gaitopt::library {
+namespace {
+
+class LibraryFolderTest : public io::test::IoTest {
+ protected:
+  /// A setup of the shipped RABBIT base problem over a 2 x 3 x 1 grid, in this test's folder.
+  LibrarySetup setup(const std::array<std::vector<double>, 3>& axes) const {
+    LibraryConfig config;
+    config.name = "round_trip";
+    config.ocp_path = std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/rabbit_kelly2017.yaml";
+    config.base = ocp::loadOcpConfig(config.ocp_path);
+    return {config, Grid(axes), path("lib"), {}};
+  }
+};
+
+const std::array<std::vector<double>, 3> kAxes = {
+    std::vector<double>{0.5, 0.7}, std::vector<double>{0.3, 0.4, 0.5}, std::vector<double>{0.0}};
+
+TEST_F(LibraryFolderTest, LibraryJsonRoundTripsTheGridAndTheBaseProblem) {
+  const LibrarySetup s = setup(kAxes);
+  std::filesystem::create_directories(s.out_dir);
+  claimLibraryFolder(s);
+  const LibraryFolder back = readLibraryFolder(s.out_dir);
+  EXPECT_EQ(back.grid.axes(), kAxes);
+  EXPECT_EQ(back.base.name, s.config.base.name);
+  EXPECT_DOUBLE_EQ(back.base.step_length, s.config.base.step_length);
+  // The OCP file is recorded relative to the folder, so both can move together.
+  const auto json = io::readStrictJson(s.out_dir + "/library.json");
+  const std::filesystem::path ocp = json.at("ocp").get<std::string>();
+  EXPECT_TRUE(ocp.is_relative()) << ocp;
+  EXPECT_TRUE(
+      std::filesystem::equivalent(std::filesystem::path(s.out_dir) / ocp, s.config.ocp_path))
+      << ocp;
+}
+
+TEST_F(LibraryFolderTest, AnotherGridInTheSameFolderIsRefused) {
+  const LibrarySetup s = setup(kAxes);
+  std::filesystem::create_directories(s.out_dir);
+  claimLibraryFolder(s);
+  auto other = kAxes;
+  other[0].push_back(0.9);
+  EXPECT_THROW(claimLibraryFolder(setup(other)), config::ConfigError);
+}
+
+TEST_F(LibraryFolderTest, AFolderWithoutLibraryJsonIsNotALibrary) {
+  EXPECT_THROW(readLibraryFolder(dir_.string()), config::ConfigError);
+}
+
+/// A row with every field set, a comma, a quote and a line break in the message, and NaN costs.
+IndexRow awkwardRow() {
+  return {"v0.500_L0.300_s+0.000",
+          0.5,
+          0.3,
+          -0.01,
+          "Maximum_Iterations_Exceeded",
+          false,
+          12.25,
+          std::nan(""),
+          0.1875,
+          3000,
+          42.5,
+          "warm:v0.700_L0.300_s+0.000,polynomial",
+          "restoration failed, \"tiny step\"\nat iteration 17"};
+}
+
+void expectSameRow(const IndexRow& a, const IndexRow& b) {
+  EXPECT_EQ(a.point, b.point);
+  EXPECT_EQ(a.speed, b.speed);
+  EXPECT_EQ(a.step_length, b.step_length);
+  EXPECT_EQ(a.slope, b.slope);
+  EXPECT_EQ(a.status, b.status);
+  EXPECT_EQ(a.converged, b.converged);
+  EXPECT_EQ(a.cost, b.cost);
+  EXPECT_EQ(std::isnan(a.cost_of_transport), std::isnan(b.cost_of_transport));
+  EXPECT_EQ(a.poly_cost_of_transport, b.poly_cost_of_transport);
+  EXPECT_EQ(a.iterations, b.iterations);
+  EXPECT_EQ(a.solve_time_s, b.solve_time_s);
+  EXPECT_EQ(a.start, b.start);
+}
+
+TEST_F(LibraryFolderTest, AnIndexRowRoundTripsThroughIndexCsv) {
+  const IndexRow row = awkwardRow();
+  LibraryIndex(dir_.string()).append(row);
+  const auto back = LibraryIndex(dir_.string()).row(row.point);
+  ASSERT_TRUE(back.has_value());
+  expectSameRow(*back, row);
+  // One line per row: the line break of the message is written as a space.
+  EXPECT_EQ(back->message, "restoration failed, \"tiny step\" at iteration 17");
+}
+
+TEST_F(LibraryFolderTest, AnIndexRowRoundTripsThroughJson) {
+  const IndexRow row = awkwardRow();
+  const IndexRow back = indexRowFromJson(nlohmann::json::parse(toJson(row).dump()));
+  expectSameRow(back, row);
+  EXPECT_EQ(back.message, row.message);
+  EXPECT_TRUE(toJson(row).at("cost_of_transport").is_null());  // JSON has no NaN
+}
+
+}  // namespace
+}  // namespace gaitopt::library

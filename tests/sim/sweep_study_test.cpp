@@ -1,0 +1,74 @@
+// A stability sweep's values and its walking interval (sim/sweep_study.hpp), on made-up rows.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "sim/sweep_study.hpp"
+
+namespace gaitopt::sim {
+namespace {
+
+const SweepParameter kLinear{"push", "N s", "hip impulse", -10, 10, 5, false};
+const SweepParameter kGeometric{"stiffness", "N/m", "ground stiffness", 1e4, 1e6, 3, true};
+
+TEST(SweepValues, EvenlySpacedWithZeroExactlyOnTheGrid) {
+  const auto v = sweepValues(kLinear, {-0.3, 0.5, 17});  // step 0.05: the 7th value is 0
+  ASSERT_EQ(v.size(), 17u);
+  EXPECT_DOUBLE_EQ(v.front(), -0.3);
+  EXPECT_DOUBLE_EQ(v.back(), 0.5);
+  EXPECT_EQ(v[6], 0.0);  // not 5.6e-17
+  EXPECT_NEAR(v[1] - v[0], 0.05, 1e-15);
+}
+
+TEST(SweepValues, GeometricByAConstantRatio) {
+  const auto v = sweepValues(kGeometric, {1e4, 1e6, 5});
+  ASSERT_EQ(v.size(), 5u);
+  for (std::size_t k = 0; k < v.size(); ++k)
+    EXPECT_NEAR(v[k], std::pow(10.0, 4 + 0.5 * static_cast<double>(k)), 1e-9 * v[k]);
+}
+
+TEST(SweepValues, OneValueIsTheFirstEnd) {
+  EXPECT_EQ(sweepValues(kGeometric, {2e5, 2e5, 1}), std::vector<double>{2e5});
+}
+
+TEST(SweepValues, AGeometricRangeNeedsPositiveEnds) {
+  EXPECT_THROW(sweepValues(kGeometric, {0, 1e6, 3}), std::invalid_argument);
+  EXPECT_NO_THROW(sweepValues(kLinear, {-1, 1, 3}));
+}
+
+/// Rows keyed as SweepFile keys them; `fell` per value.
+std::map<std::string, SweepRow> rows(const std::vector<std::pair<double, bool>>& walks) {
+  std::map<std::string, SweepRow> out;
+  for (const auto& [value, fell] : walks)
+    out[SweepFile::key(value)] = {value, fell ? 3 : 10, 10, fell, fell ? "fall" : "", 0.01};
+  return out;
+}
+
+TEST(WalkingInterval, IsTheRunOfWalkingValuesAroundTheNominalOne) {
+  // Keys sort as text ("-10" < "-5" < "0" < "10" < "5"); the interval must sort by value.
+  const auto j = walkingInterval(
+      kLinear, rows({{-10, true}, {-5, false}, {0, false}, {5, false}, {10, true}}), 0.4);
+  EXPECT_EQ(j.at("walks_from"), -5.0);
+  EXPECT_EQ(j.at("walks_to"), 5.0);
+  EXPECT_EQ(j.at("fails_below").at("value"), -10.0);
+  EXPECT_EQ(j.at("fails_above").at("value"), 10.0);
+  EXPECT_EQ(j.at("fails_above").at("failure"), "fall");
+  EXPECT_EQ(j.at("values"), 5);
+  EXPECT_EQ(j.at("unit"), "N s");
+}
+
+TEST(WalkingInterval, NoneWhenTheNominalPointFalls) {
+  const auto j = walkingInterval(kLinear, rows({{-5, false}, {0, true}, {5, false}}), 0.0);
+  EXPECT_TRUE(j.at("walks_from").is_null());
+  EXPECT_TRUE(j.at("walks_to").is_null());
+  EXPECT_FALSE(j.contains("fails_below"));
+}
+
+TEST(WalkingInterval, NoneWithoutANominalValue) {
+  const auto j = walkingInterval(kLinear, rows({{0, false}}), std::nan(""));
+  EXPECT_TRUE(j.at("nominal").is_null());
+  EXPECT_TRUE(j.at("walks_from").is_null());
+}
+
+}  // namespace
+}  // namespace gaitopt::sim
