@@ -23,7 +23,6 @@
 namespace gaitopt::apps {
 namespace {
 
-constexpr double kDeg = M_PI / 180;
 
 gaits::ImpactGrid parseGrid(const ImpactMapOptions& o, const dynamics::Model& model) {
   gaits::ImpactGrid grid;

@@ -10,7 +10,6 @@
 namespace gaitopt::gaits {
 namespace {
 
-constexpr double kDeg = M_PI / 180;
 constexpr std::array<const char*, 3> kAxisNames = {"step_length", "knee_bias", "approach_angle"};
 
 void checkAxis(const GridAxis& a, MapAxis which) {

@@ -16,7 +16,6 @@ namespace {
 
 using dynamics::ImpactType;
 
-constexpr double kDeg = M_PI / 180;
 constexpr std::array<MapAxis, 3> kAxes = {MapAxis::kStepLength, MapAxis::kKneeBias,
                                           MapAxis::kApproachAngle};
 constexpr std::array<ImpactType, 4> kTypes = {ImpactType::kSingle, ImpactType::kDouble,

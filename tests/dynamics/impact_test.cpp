@@ -13,7 +13,6 @@ namespace gaitopt::test {
 namespace {
 
 using dynamics::Model;
-constexpr double kDeg = M_PI / 180.0;
 
 /// Pre-impact state: a random posture and rates with the swing tip moving down and forward.
 std::pair<VecD, VecD> preImpact(const Model& m, std::mt19937& rng) {

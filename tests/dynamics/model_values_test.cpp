@@ -9,7 +9,6 @@
 namespace gaitopt::test {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
 
 TEST(ModelValues, InertiaAndGravityCoefficientsMatchTable31) {
   const auto model = loadNamed("mu2004_five_link");

@@ -15,7 +15,6 @@ using dynamics::ImpactType;
 using gaits::GridAxis;
 using gaits::ImpactGrid;
 using gaits::MapAxis;
-constexpr double kDeg = M_PI / 180.0;
 
 ImpactGrid grid(GridAxis step, GridAxis sigma_deg, GridAxis alpha_deg) {
   sigma_deg.first *= kDeg;

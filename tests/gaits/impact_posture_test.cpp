@@ -17,7 +17,6 @@ namespace {
 
 using dynamics::ImpactType;
 using gaits::ImpactPostureParams;
-constexpr double kDeg = M_PI / 180.0;
 
 class ImpactPostureTest : public ::testing::Test {
  protected:

@@ -12,7 +12,6 @@ namespace gaitopt::test {
 namespace {
 
 using gaits::Phase;
-constexpr double kDeg = M_PI / 180.0;
 
 gaits::GaitParams muParams() {
   return gaits::loadGait(std::string(GAITOPT_SOURCE_DIR) + "/configs/gaits/mu2004.yaml");
