@@ -11,7 +11,7 @@ void addScenarioOptions(CLI::App* cmd, sim::ScenarioSettings& o) {
                   "Robot YAML (default: configs/robots/<summary robot>.yaml)")
       ->option_text("FILE");
   cmd->add_option("--controller", o.controller, "Tracking controller")
-      ->check(CLI::IsMember({"computed_torque", "sliding_mode", "hzd"}))
+      ->check(CLI::IsMember({"computed_torque", "sliding_mode", "mu_sliding_mode", "hzd"}))
       ->capture_default_str();
   cmd->add_option("--ground", o.ground,
                   "rigid, impedance, lcp (configs/grounds/NAME.yaml) or a ground YAML")

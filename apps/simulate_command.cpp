@@ -60,7 +60,7 @@ void runSimulate(const SimulateOptions& o) {
   if (!o.quiet)
     fmt::print("simulate: {} steps of {} with {} on {} ground\n", scenario.steps, ref.dir,
                scenario.controller, sim::groundName(scenario.ground));
-  const sim::Reference reference(ref.step);
+  const sim::Reference reference(ref.step, ref.model);
   if (scenario.controller == "hzd") checkHzdReference(ref, reference);
   sim::WalkRecorder recorder(plant, o.output.rate_hz);
   const sim::ScenarioResult r = sim::runScenario(ref.model, reference, scenario, recorder.log());

@@ -78,7 +78,7 @@ void runStability(const StabilityOptions& o) {
   const sim::ReferenceFolder ref =
       sim::loadReferenceFolder(o.scenario.reference_dir, o.scenario.robot_path);
   sim::requireControllerFits(o.scenario, ref.model);
-  const sim::Reference reference(ref.step);
+  const sim::Reference reference(ref.step, ref.model);
   sim::Scenario base = sim::makeScenario(o.scenario);
   base.poincare = o.poincare;
   const io::ResumableFolder folder(o.out_dir, sim::scenarioInputs(o.scenario));

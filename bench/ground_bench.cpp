@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
   const std::string root = GAITOPT_SOURCE_DIR;
   const auto config = ocp::loadOcpConfig(root + "/configs/ocp/mu2004_walk.yaml");
   const auto model = dynamics::loadRobot(config.robot_path);
-  const sim::Reference ref(ocp::polynomialGuess(model, config));
+  const sim::Reference ref(ocp::polynomialGuess(model, config), model);
   const sim::TrackingController controller(
       model, sim::makeTrackingLaw("computed_torque", sim::TrackingGains{}));
 

@@ -32,18 +32,28 @@ Mat<S> massMatrix(const Model& model, const Vec<S>& theta) {
   return d;
 }
 
-/// H(theta, dtheta) dtheta of Mu (2.8b): (H dtheta)_i = sum_j p_ij sin(theta_i - theta_j)
-/// dtheta_j^2 [N m].
+/// C(theta, dtheta) w with H of Mu (2.8b) as a matrix, C_ij = p_ij sin(theta_i - theta_j)
+/// dtheta_j (j != i), so that C dtheta is (2.8b)'s vector. With this C, Ddot - 2C is
+/// skew-symmetric, the property Mu's sliding-mode proof (4.7) rests on; the sliding-mode law
+/// (4.4) multiplies it by a vector other than dtheta [N m].
 template <class S>
-Vec<S> coriolis(const Model& model, const Vec<S>& theta, const Vec<S>& dtheta) {
+Vec<S> coriolisMatrixTimes(const Model& model, const Vec<S>& theta, const Vec<S>& dtheta,
+                           const Vec<S>& w) {
   using std::sin;
   const auto& p = model.inertiaCoefficients();
   const int n = model.nLinks();
   Vec<S> h = Vec<S>::Zero(n);
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j)
-      if (j != i) h(i) += p(i, j) * sin(theta(i) - theta(j)) * dtheta(j) * dtheta(j);
+      if (j != i) h(i) += p(i, j) * sin(theta(i) - theta(j)) * dtheta(j) * w(j);
   return h;
+}
+
+/// H(theta, dtheta) dtheta of Mu (2.8b): (H dtheta)_i = sum_j p_ij sin(theta_i - theta_j)
+/// dtheta_j^2 [N m].
+template <class S>
+Vec<S> coriolis(const Model& model, const Vec<S>& theta, const Vec<S>& dtheta) {
+  return coriolisMatrixTimes(model, theta, dtheta, dtheta);
 }
 
 /// G of Mu (2.8c), sign corrected and with gravity rotated by the slope gamma:

@@ -49,7 +49,7 @@ py::dict simulate(const dynamics::Model& robot, const gaits::Trajectory& referen
   std::vector<sim::WalkSample> samples;
   const sim::ScenarioResult result = [&] {
     py::gil_scoped_release release;
-    return sim::runScenario(robot, sim::Reference(reference), scenario,
+    return sim::runScenario(robot, sim::Reference(reference, robot), scenario,
                             [&](const sim::WalkSample& s) { samples.push_back(s); });
   }();
   py::list step_list;

@@ -3,7 +3,11 @@
 /// What every closed-loop walk (hybrid_walk.hpp, compliant_walk.hpp, lcp_walk.hpp) asks of a
 /// controller: joint torques at the measured state. Tracking controllers follow the reference
 /// knot of the step clock (tracking_controller.hpp); a state-feedback law such as HZD
-/// (hzd_controller.hpp) may ignore it.
+/// (hzd_controller.hpp) may ignore it. A controller with memory (the integral of Mu's sliding
+/// surface, 4.1) names how many states it keeps in a phase; the walk integrates them beside the
+/// plant's state from zero at every phase start.
+#include <Eigen/Core>
+
 #include "dynamics/conventions.hpp"
 #include "gaits/trajectory.hpp"
 
@@ -13,9 +17,17 @@ class Controller {
  public:
   virtual ~Controller() = default;
   /// Joint torques (q-space, tau0 the stance ankle) at (theta, dtheta), within the torque
-  /// limits, for the reference knot `ref` of the step clock [N m].
+  /// limits, for the reference knot `ref` of the step clock [N m]; memory of memorySize(phase).
   virtual VecD torque(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
-                      const gaits::Knot& ref) const = 0;
+                      const gaits::Knot& ref, const Eigen::VectorXd& memory) const = 0;
+  /// How many states the controller integrates in `phase` (0: none).
+  virtual int memorySize(gaits::Phase /*phase*/) const { return 0; }
+  /// d(memory)/dt at the same arguments (size memorySize(phase)).
+  virtual Eigen::VectorXd memoryRate(gaits::Phase /*phase*/, const VecD& /*theta*/,
+                                     const VecD& /*dtheta*/, const gaits::Knot& /*ref*/,
+                                     const Eigen::VectorXd& /*memory*/) const {
+    return {};
+  }
 };
 
 }  // namespace gaitopt::sim

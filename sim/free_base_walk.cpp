@@ -35,6 +35,8 @@ struct StepRun {
   double b_unloaded = 0, e_unloaded = 0;
   double b_x0 = 0;  ///< world x of the stance tip at the step start [m]
   TipForces force;
+  PhaseStart start;        ///< where the phase's reference starts (reference.hpp)
+  Eigen::VectorXd memory;  ///< the controller's, zero at each phase start
 };
 
 /// Everything a step needs that does not change during the walk.
@@ -46,11 +48,25 @@ struct Walker {
   const WalkLog& log;
 
   TorqueFeedback feedback(const StepRun& run) const {
-    return [this, phase = run.phase, clock = run.clock](double dt, const Eigen::VectorXd& q,
-                                                        const Eigen::VectorXd& v) {
-      return controller.torque(phase, anglesOf(plant, q), anglesOf(plant, v),
-                               ref.at(phase, clock + dt));
+    return [this, &run](double dt, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+      return controller.torque(run.phase, anglesOf(plant, q), anglesOf(plant, v),
+                               ref.at(run.phase, run.clock + dt, run.start), run.memory);
     };
+  }
+
+  /// The phase starts: the reference from where the robot is, the controller's memory at zero.
+  void startPhase(StepRun& run, Phase phase) const {
+    run.phase = phase;
+    run.start = ref.startFrom(phase, run.clock, anglesOf(plant, run.s.q), anglesOf(plant, run.s.v));
+    run.memory = Eigen::VectorXd::Zero(controller.memorySize(phase));
+  }
+
+  /// The controller's memory over one time step h (explicit Euler at the step's start).
+  void advanceMemory(StepRun& run, const FreeBaseState& before, double h) const {
+    if (run.memory.size() == 0) return;
+    const gaits::Knot k = ref.at(run.phase, run.clock, run.start);
+    run.memory += h * controller.memoryRate(run.phase, anglesOf(plant, before.q),
+                                            anglesOf(plant, before.v), k, run.memory);
   }
 
   /// Why the walk cannot go on after this time step ("" while it can).
@@ -80,13 +96,13 @@ struct Walker {
 
   void record(const StepRun& run, double t0, int index, StepResult& r) const {
     const VecD theta = anglesOf(plant, run.s.q), dtheta = anglesOf(plant, run.s.v);
-    const gaits::Knot k = ref.at(run.phase, run.clock);
+    const gaits::Knot k = ref.at(run.phase, run.clock, run.start);
     r.max_tracking_error =
         std::max(r.max_tracking_error, (theta - VecD(k.theta)).cwiseAbs().maxCoeff());
     if (!log) return;
     log({t0 + run.elapsed, index, run.phase, theta, dtheta, k.theta,
-         controller.torque(run.phase, theta, dtheta, k), k.tau, run.force.b, run.force.e,
-         run.s.q(0), run.s.q(1)});
+         controller.torque(run.phase, theta, dtheta, k, run.memory), k.tau, run.force.b,
+         run.force.e, run.s.q(0), run.s.q(1)});
   }
 
   /// One time step; false when the step has ended (normally or not).
@@ -97,6 +113,7 @@ struct Walker {
       return false;
     }
     const double h = ground.time_step;
+    advanceMemory(run, run.s, h);
     run.s = cs.next;
     run.force = cs.force;
     run.clock += h;
@@ -109,8 +126,8 @@ struct Walker {
     if (run.phase == Phase::kSsp) {
       if (!touchedDown(run)) return true;
       r.ssp_duration = run.elapsed;
-      run.clock = ref.touchdownTime();
-      run.phase = Phase::kDsp;
+      run.clock = ref.dspClockAt(anglesOf(plant, run.s.q));
+      startPhase(run, Phase::kDsp);
       return ref.hasDsp();
     }
     // The trailing tip unloading ends the DSP early, as the trailing-force event of the rigid
@@ -130,6 +147,7 @@ struct Walker {
     StepRun run;
     run.s = s;
     run.b_x0 = s.q(0);
+    startPhase(run, Phase::kSsp);
     const auto max_ticks = static_cast<long>(std::ceil(3 * ref.endTime() / ground.time_step));
     long ticks = 0;
     // The push's force at the middle of each time step, held over it.

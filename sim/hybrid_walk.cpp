@@ -21,21 +21,23 @@ constexpr double kMaxTorsoLean = std::numbers::pi / 3;  // 60 deg from upright: 
 // velocity (Mu ch. 3) only touches y = 0 tangentially, which a sign change would miss [m].
 constexpr double kContactDistance = 1e-6;
 
-Eigen::VectorXd join(const VecD& theta, const VecD& dtheta) {
-  Eigen::VectorXd x(theta.size() + dtheta.size());
-  x << theta, dtheta;
+/// The phase's integrated state: the plant's (theta, dtheta) and the controller's memory.
+Eigen::VectorXd join(const VecD& theta, const VecD& dtheta, const Eigen::VectorXd& memory) {
+  Eigen::VectorXd x(theta.size() + dtheta.size() + memory.size());
+  x << theta, dtheta, memory;
   return x;
 }
 
 /// The closed loop in one phase: controller torques, plant accelerations and contact forces.
+/// The reference starts from where the robot is (`start`, reference.hpp).
 struct ClosedLoop {
-  ClosedLoop(const dynamics::Model& plant_, const Controller& controller_,
-             const Reference& ref_, Phase phase_, const std::optional<Push>& push_ = {},
-             int step_ = 0)
+  ClosedLoop(const dynamics::Model& plant_, const Controller& controller_, const Reference& ref_,
+             Phase phase_, PhaseStart start_, const std::optional<Push>& push_ = {}, int step_ = 0)
       : plant(plant_),
         controller(controller_),
         ref(ref_),
         phase(phase_),
+        start(std::move(start_)),
         push(push_),
         step(step_) {}
 
@@ -43,13 +45,20 @@ struct ClosedLoop {
   const Controller& controller;
   const Reference& ref;
   Phase phase;
+  PhaseStart start;
   std::optional<Push> push;  ///< acts in single support only
   int step;                  ///< 0-based, for the push
+
+  /// The integrated state at the phase start: the controller's memory starts at zero.
+  Eigen::VectorXd initial(const VecD& theta, const VecD& dtheta) const {
+    return join(theta, dtheta, Eigen::VectorXd::Zero(controller.memorySize(phase)));
+  }
 
   struct State {
     VecD theta, dtheta, ddtheta, tau;
     Vec2d force_stance, force_swing = Vec2d::Zero();
     gaits::Knot ref;
+    Eigen::VectorXd memory, memory_rate;
   };
 
   /// The closed loop at (t, x). The last evaluation is kept: the event functions and the
@@ -66,13 +75,22 @@ struct ClosedLoop {
 
   Eigen::VectorXd rhs(double t, const Eigen::VectorXd& x) const {
     const State& s = at(t, x);
-    return join(s.dtheta, s.ddtheta);
+    return join(s.dtheta, s.ddtheta, s.memory_rate);
   }
 
   State evaluate(double t, const Eigen::VectorXd& x) const {
     const int n = plant.nLinks();
-    State s{x.head(n), x.tail(n), {}, {}, {}, Vec2d::Zero(), ref.at(phase, t)};
-    s.tau = controller.torque(phase, s.theta, s.dtheta, s.ref);
+    State s{x.head(n),
+            x.segment(n, n),
+            {},
+            {},
+            {},
+            Vec2d::Zero(),
+            ref.at(phase, t, start),
+            x.tail(x.size() - 2 * n),
+            {}};
+    s.tau = controller.torque(phase, s.theta, s.dtheta, s.ref, s.memory);
+    s.memory_rate = controller.memoryRate(phase, s.theta, s.dtheta, s.ref, s.memory);
     Vec2d pushed = Vec2d::Zero();  // the push's force on the hip
     if (phase == Phase::kSsp) {
       s.ddtheta = dynamics::sspForwardDynamics(plant, s.theta, s.dtheta, s.tau);
@@ -221,7 +239,9 @@ StepResult simulateStep(const dynamics::Model& plant, const Controller& controll
                         int step_index, double stance_x, const std::optional<Push>& push) {
   StepResult r;
   StepRecorder recorder{r, log, step_index, stance_x};
-  const ClosedLoop ssp{plant, controller, ref, Phase::kSsp, push, step_index};
+  const ClosedLoop ssp{
+      plant, controller, ref, Phase::kSsp, ref.startFrom(Phase::kSsp, 0, theta0, dtheta0),
+      push,  step_index};
   const auto ssp_events = [&](double t, const Eigen::VectorXd& x) {
     const auto s = ssp.at(t, x);
     const Vec2d tip = dynamics::swingTip<double>(plant, s.theta);
@@ -231,16 +251,18 @@ StepResult simulateStep(const dynamics::Model& plant, const Controller& controll
   };
   const std::vector<std::string> ssp_names{"touchdown", kFailures[0], kFailures[1], kFailures[2],
                                            kFailures[3]};
-  PhaseOutcome phase = runSingleSupport(ssp, ssp_events, ssp_names, join(theta0, dtheta0), o,
+  PhaseOutcome phase = runSingleSupport(ssp, ssp_events, ssp_names, ssp.initial(theta0, dtheta0), o,
                                         recorder.observer(ssp, t0));
   const int n = plant.nLinks();
-  VecD theta = phase.end.x.head(n), dtheta = phase.end.x.tail(n);
+  VecD theta = phase.end.x.head(n), dtheta = phase.end.x.segment(n, n);
   r.ssp_duration = phase.end.t;
   if (phase.failure.empty() && phase.end.event < 0)
     phase.failure = "no touchdown within 3 times the planned single support";
   if (phase.failure.empty()) r.impact = chooseImpact(plant, theta, dtheta, phase.failure);
   if (phase.failure.empty() && r.impact == "double" && ref.hasDsp()) {
-    const ClosedLoop dsp{plant, controller, ref, Phase::kDsp};
+    const double start = ref.dspClockAt(theta);
+    const ClosedLoop dsp{plant, controller, ref, Phase::kDsp,
+                         ref.startFrom(Phase::kDsp, start, theta, dtheta)};
     const auto dsp_events = [&](double t, const Eigen::VectorXd& x) {
       const auto s = dsp.at(t, x);
       const Vec2d fe = s.force_swing;
@@ -254,11 +276,10 @@ StepResult simulateStep(const dynamics::Model& plant, const Controller& controll
         "trailing tip unloads", kFailures[0],
         kFailures[1],           "leading tip lifts off the ground",
         "trailing tip slips",   "leading tip slips"};
-    const double start = ref.touchdownTime();
-    phase = runPhase(dsp, dsp_events, 1, dsp_names, start, join(theta, dtheta), ref.endTime(), o,
-                     recorder.observer(dsp, t0 + r.ssp_duration - start));
+    phase = runPhase(dsp, dsp_events, 1, dsp_names, start, dsp.initial(theta, dtheta),
+                     ref.endTime(), o, recorder.observer(dsp, t0 + r.ssp_duration - start));
     theta = phase.end.x.head(n);
-    dtheta = phase.end.x.tail(n);
+    dtheta = phase.end.x.segment(n, n);
     r.dsp_duration = phase.end.t - start;
   }
   r.failure = phase.failure;

@@ -35,7 +35,7 @@ VecD HzdController::unclippedTorque(const VecD& theta, const VecD& dtheta) const
 }
 
 VecD HzdController::torque(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
-                           const gaits::Knot& /*ref*/) const {
+                           const gaits::Knot& /*ref*/, const Eigen::VectorXd& /*memory*/) const {
   if (phase != gaits::Phase::kSsp) throw std::invalid_argument("HZD control has no double support");
   const int n = model_.nLinks();
   VecD tau = VecD::Zero(n);

@@ -25,8 +25,8 @@ class HzdController : public Controller {
                 std::shared_ptr<const TrackingLaw> law);
 
   /// @throws std::invalid_argument in double support (HZD walks have an instantaneous one).
-  VecD torque(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
-              const gaits::Knot& ref) const override;
+  VecD torque(gaits::Phase phase, const VecD& theta, const VecD& dtheta, const gaits::Knot& ref,
+              const Eigen::VectorXd& memory) const override;
   /// The actuated torques u before clipping (tau_1 .. tau_n-1).
   VecD unclippedTorque(const VecD& theta, const VecD& dtheta) const;
 

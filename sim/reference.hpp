@@ -1,22 +1,84 @@
 #pragma once
 /// @file reference.hpp
 /// An exported gait (trajectory CSV, DESIGN.md sec. 5) as the reference a controller tracks:
-/// one step, SSP then optionally DSP, read on the step clock. The clock restarts at every SSP
-/// start and jumps to the reference touchdown time at the actual touchdown, so a step that
-/// lands early or late is compared with the right phase of the reference.
+/// one step, SSP then optionally DSP, read on the step clock (0 at every SSP start).
+/// The angles are the data: rates and accelerations are those of the C^2 cubic spline through
+/// them (per phase, with the export's accelerations at the phase ends). An optimum's export has
+/// rates up to 2 % off the derivative of its angles (issue 15), and the quintic between knots
+/// turned that into accelerations swinging by 130 rad/s^2 within a millisecond, which Mu's
+/// sliding-mode law tracked into 80 N m torque spikes that slipped the leading tip; three-point
+/// differences did the same at the phase ends, where an optimum's DSP starts in a steep
+/// transient (187 rad/s^2 falling 10 % per millisecond). Three
+/// choices make it survive timing errors (issue 14 item 1; DESIGN.md sec. 7 item 4):
+///  - Past the planned touchdown the SSP reference does not freeze: it goes on at the touchdown
+///    rates, with the swing tip's downward speed raised to at least `strike_velocity`. A gait
+///    designed to land at rest (Mu ch. 3: touchdown time goes as the square root of a height
+///    error) would otherwise hover a lagging robot at its final posture while the feed-forward
+///    still has rates. The extra swing-leg rate Delta is phased in over the `strike_window`
+///    after the planned touchdown, Delta phi(t) with phidot = 3s^2 - 2s^3 (s from 0 to 1 over
+///    the window): a step in the reference rates at touchdown made Mu's sliding-mode law
+///    (Lambda = 100) jerk the swing leg and slip the stance tip, and a strike phased in before
+///    it made the robot that was on time strike early, in a single impact that skipped the
+///    double support.
+///  - A phase starts from where the robot is: the robot's departure from the reference at the
+///    phase start (angles and rates) is faded out by a cubic Hermite blend over `fade` seconds
+///    (PhaseStart), as Westervelt et al. correct their virtual constraints after an impact. An
+///    early or late touchdown thus starts the DSP reference at the robot, not at a jump.
+///  - The DSP (fully actuated in hip x, hip y and torso, Mu 2.21) starts where the plan's hip has
+///    progressed as far as the robot's (dspClockAt): a late touchdown finds the hip ahead of the
+///    plan's DSP start, and fading a posture 0.03 s behind back onto the plan's start within the
+///    0.1 s DSP asked for 12 m/s^2 at the hip and saturated the stance ankle and knee.
 #include <optional>
+#include <vector>
 
+#include "dynamics/model.hpp"
 #include "gaits/trajectory.hpp"
 
 namespace gaitopt::sim {
 
+struct ReferenceOptions {
+  /// Least downward speed of the swing tip past the planned touchdown [m/s] (>= 0).
+  double strike_velocity = 0.1;
+  /// Time over which a phase start's departure from the reference fades out [s] (> 0; the DSP
+  /// uses at most its own duration).
+  double fade = 0.15;
+  /// Time after the planned touchdown over which the strike rates are phased in [s] (> 0).
+  double strike_window = 0.1;
+};
+
+class Reference;
+
+/// The robot's departure from the reference at the start of a phase, faded out over the phase:
+/// offset(tau) = h00(s) d_theta + F h10(s) d_dtheta, s = tau / F, with the cubic Hermite basis
+/// h00 = 2s^3 - 3s^2 + 1, h10 = s^3 - 2s^2 + s (zero value and slope at s = 1).
+struct PhaseStart {
+  double t0 = 0;           ///< step clock at the phase start [s]
+  double fade = 0;         ///< F [s]; 0: no offset
+  VecD d_theta, d_dtheta;  ///< robot minus reference at t0 [rad], [rad/s]
+};
+
 class Reference {
  public:
-  /// @throws std::invalid_argument when the trajectory does not start with an SSP.
-  explicit Reference(const gaits::Trajectory& step);
+  /// Without a model the reference past touchdown keeps the touchdown rates as they are.
+  /// @throws std::invalid_argument when the trajectory does not start with an SSP, or for
+  ///         options out of range.
+  explicit Reference(const gaits::Trajectory& step, ReferenceOptions options = {});
+  /// With the robot's model, the swing tip past touchdown descends at >= strike_velocity.
+  Reference(const gaits::Trajectory& step, const dynamics::Model& model,
+            ReferenceOptions options = {});
 
-  /// The reference knot of `phase` at step clock t, held at the phase's ends outside them.
+  /// The reference knot of `phase` at step clock t: held at the start of a phase before it,
+  /// extrapolated past the SSP end (see file doc), held at the DSP end after it.
   gaits::Knot at(gaits::Phase phase, double t) const;
+  /// The same with the robot's departure at the phase start faded in (PhaseStart).
+  gaits::Knot at(gaits::Phase phase, double t, const PhaseStart& start) const;
+  /// The step clock at which the DSP starts for a robot touching down at angles theta: where
+  /// the plan's hip x equals the robot's (the reference's model), kept within the DSP's first
+  /// three quarters; the planned touchdown time without a model or DSP.
+  double dspClockAt(const VecD& theta) const;
+  /// The departure of (theta, dtheta) from the reference at clock t0 of `phase`.
+  PhaseStart startFrom(gaits::Phase phase, double t0, const VecD& theta, const VecD& dtheta) const;
+
   double touchdownTime() const { return ssp_end_; }  ///< SSP duration [s]
   double endTime() const { return end_; }            ///< step duration [s]
   bool hasDsp() const { return dsp_.has_value(); }
@@ -25,9 +87,15 @@ class Reference {
   const gaits::Knot& start() const { return ssp_.knots().front(); }
 
  private:
+  gaits::Knot singleSupport(double t) const;
+
   gaits::Trajectory ssp_;
   std::optional<gaits::Trajectory> dsp_;
   double ssp_end_ = 0, end_ = 0;
+  ReferenceOptions options_;
+  VecD strike_change_;  ///< Delta: added swing-leg rates at and past touchdown [rad/s]
+  std::optional<dynamics::ChainPoint> hip_;  ///< the model's hip weights, when given
+  std::vector<double> dsp_hip_x_;            ///< plan's hip x at each DSP knot [m]
 };
 
 }  // namespace gaitopt::sim

@@ -21,6 +21,13 @@ TrackingGains scaledGains(TrackingGains g, double s) {
   return g;
 }
 
+/// Mu's constants at bandwidth factor s: Lambda by s, the tanh slopes unchanged.
+MuSlidingModeGains scaledGains(MuSlidingModeGains g, double s) {
+  g.ssp_lambda *= s;
+  g.dsp_lambda *= s;
+  return g;
+}
+
 const std::vector<SweepParameter> kParameters{
     {"push", "N s",
      "horizontal impulse on the hip, a 0.1 s pulse from mid single support of step 2", -15, 15, 31},
@@ -74,6 +81,9 @@ ScenarioResult runScenario(const dynamics::Model& nominal, const Reference& ref,
     auto hzd = makeHzdController(model, ref, makeTrackingLaw("computed_torque", gains));
     analyseHzd(plant, model, *hzd, ref, s, r);
     controller = std::move(hzd);
+  } else if (s.controller == "mu_sliding_mode") {
+    controller = std::make_unique<MuSlidingModeController>(
+        model, scaledGains(s.mu_gains, s.gain_scale), s.uncertainty_bound);
   } else {
     controller = std::make_unique<TrackingController>(model, makeTrackingLaw(s.controller, gains));
   }

@@ -11,6 +11,7 @@
 #include "sim/ground_model.hpp"
 #include "sim/hybrid_walk.hpp"
 #include "sim/hzd_poincare.hpp"
+#include "sim/mu_sliding_mode.hpp"
 #include "sim/poincare.hpp"
 #include "sim/push.hpp"
 #include "sim/tracking_law.hpp"
@@ -18,8 +19,14 @@
 namespace gaitopt::sim {
 
 struct Scenario {
-  std::string controller = "computed_torque";  ///< see makeTrackingLaw, or "hzd" (PD gains)
+  /// see makeTrackingLaw, "mu_sliding_mode" (mu_sliding_mode.hpp) or "hzd" (PD gains)
+  std::string controller = "computed_torque";
   TrackingGains gains;
+  MuSlidingModeGains mu_gains;  ///< Table 4.2 of the scenario's uncertainty case
+  /// What mu_sliding_mode knows of its model's error: the true parameters are within a factor
+  /// (1 + b) of its model's. Default: the plant-error interval the controller is meant to
+  /// cover (masses and inertias 20 %, lengths and CoM offsets 5 %).
+  dynamics::ParameterErrors uncertainty_bound{0.2, 0.2, 0.05, 0.05};
   double gain_scale = 1;  ///< bandwidth factor s: kp, K by s^2; kd, lambda by s
   dynamics::ParameterErrors parameter_errors;  ///< the plant's parameters are (1 + E) the nominal
   /// Mu's setting instead (sec. 4.3): the plant is nominal and the controller's model is

@@ -29,6 +29,9 @@ Scenario makeScenario(const ScenarioSettings& o) {
   s.ground = loadGround(groundPath(o.ground));
   s.parameter_errors = dynamics::muUncertaintyCase(o.uncertainty_case);
   s.errors_on_controller = o.uncertainty_on == "controller";
+  s.mu_gains = muTable42(o.uncertainty_case);
+  // Mu's setting: the controller knows how far its model may be off (sec. 4.3).
+  if (s.errors_on_controller) s.uncertainty_bound = s.parameter_errors;
   if (o.friction >= 0) s.friction = o.friction;
   if (o.push != 0) setSweepValue(s, "push", o.push);
   s.gain_scale = o.gain_scale;
@@ -63,6 +66,19 @@ nlohmann::ordered_json scenarioJson(const ScenarioSettings& o, const Scenario& s
             {"length", s.parameter_errors.length},
             {"com", s.parameter_errors.com}}},
           {"push_impulse_Ns", o.push},
+          {"mu_sliding_mode",
+           {{"gains_table_4_2",
+             {{"ssp_lambda", s.mu_gains.ssp_lambda},
+              {"ssp_gamma", s.mu_gains.ssp_gamma},
+              {"ssp_sigma", s.mu_gains.ssp_sigma},
+              {"dsp_lambda", s.mu_gains.dsp_lambda},
+              {"dsp_alpha", s.mu_gains.dsp_alpha},
+              {"dsp_sigma", s.mu_gains.dsp_sigma}}},
+            {"uncertainty_bound",
+             {{"mass", s.uncertainty_bound.mass},
+              {"inertia", s.uncertainty_bound.inertia},
+              {"length", s.uncertainty_bound.length},
+              {"com", s.uncertainty_bound.com}}}}},
           {"steps_requested", s.steps}};
 }
 

@@ -2,12 +2,10 @@
 
 #include <stdexcept>
 
-#include <Eigen/Dense>
-
 #include "dynamics/dsp_dynamics.hpp"
 #include "dynamics/joint_coordinates.hpp"
-#include "dynamics/kinematics.hpp"
 #include "dynamics/ssp_dynamics.hpp"
+#include "sim/computed_torque.hpp"
 
 namespace gaitopt::sim {
 
@@ -27,44 +25,26 @@ VecD TrackingController::sspAcceleration(const VecD& theta, const VecD& dtheta,
   return dynamics::toAbsolute<double>(qdd);
 }
 
-VecD TrackingController::dspAcceleration(const VecD& theta, const VecD& dtheta,
-                                         const gaits::Knot& ref) const {
-  const int n = model_.nLinks();
+VecD TrackingController::dspReducedAcceleration(const VecD& theta, const VecD& dtheta,
+                                                const gaits::Knot& ref) const {
   const auto now = dynamics::reducedCoordinates(model_, theta, dtheta);
   const auto want = dynamics::reducedCoordinates(model_, ref.theta, ref.dtheta);
   const VecD pdd_ref = want.r * VecD(ref.ddtheta) + want.rdot_dth;
-  const VecD pdd =
-      pdd_ref + VecD(law_->correction(want.p - now.p, want.r * VecD(ref.dtheta) - now.r * dtheta));
-  // [R; J] thetaddot = [pddot - Rdot thetadot; -Jdot thetadot]: n equations, n unknowns.
-  const auto& tip = model_.tipWeights();
-  Eigen::MatrixXd a(n, n);
-  Eigen::VectorXd b(n);
-  a << now.r, dynamics::pointJacobian<double>(tip, theta);
-  b << pdd - now.rdot_dth, -dynamics::pointBias<double>(tip, theta, dtheta);
-  return a.partialPivLu().solve(b);
+  return pdd_ref +
+         VecD(law_->correction(want.p - now.p, want.r * VecD(ref.dtheta) - now.r * dtheta));
 }
 
 VecD TrackingController::unclippedTorque(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
                                          const gaits::Knot& ref) const {
   if (phase == gaits::Phase::kSsp)
     return dynamics::sspInverseDynamics(model_, theta, dtheta, sspAcceleration(theta, dtheta, ref));
-  const VecD thdd = dspAcceleration(theta, dtheta, ref);
-  const auto jac = dynamics::pointJacobian<double>(model_.tipWeights(), theta);
-  const VecD generalized = dynamics::massMatrix(model_, theta) * thdd +
-                           dynamics::nonlinearEffects(model_, theta, dtheta) -
-                           jac.transpose() * Vec2d(ref.force_swing);
-  return dynamics::jointTorque<double>(generalized);
+  return dspComputedTorque(model_, theta, dtheta, dspReducedAcceleration(theta, dtheta, ref),
+                           ref.force_stance, ref.force_swing);
 }
 
 VecD TrackingController::torque(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
-                                const gaits::Knot& ref) const {
-  VecD tau = unclippedTorque(phase, theta, dtheta, ref);
-  for (int j = 0; j < model_.nLinks(); ++j) {
-    const auto& joint = model_.joints()[static_cast<size_t>(j)];
-    const double limit = joint.actuated ? joint.torque_limit : 0.0;
-    tau(j) = std::clamp(tau(j), -limit, limit);
-  }
-  return tau;
+                                const gaits::Knot& ref, const Eigen::VectorXd& /*memory*/) const {
+  return clipTorque(model_, unclippedTorque(phase, theta, dtheta, ref));
 }
 
 }  // namespace gaitopt::sim

@@ -25,15 +25,16 @@ class TrackingController : public Controller {
   TrackingController(dynamics::Model nominal, std::shared_ptr<const TrackingLaw> law);
 
   /// Joint torques at the measured state (theta, dtheta) for reference knot `ref`.
-  VecD torque(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
-              const gaits::Knot& ref) const override;
+  VecD torque(gaits::Phase phase, const VecD& theta, const VecD& dtheta, const gaits::Knot& ref,
+              const Eigen::VectorXd& memory) const override;
   /// The same before clipping to the torque limits.
   VecD unclippedTorque(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
                        const gaits::Knot& ref) const;
 
  private:
   VecD sspAcceleration(const VecD& theta, const VecD& dtheta, const gaits::Knot& ref) const;
-  VecD dspAcceleration(const VecD& theta, const VecD& dtheta, const gaits::Knot& ref) const;
+  /// pddot of the reduced coordinates (Mu 2.21) the law asks for in the DSP.
+  VecD dspReducedAcceleration(const VecD& theta, const VecD& dtheta, const gaits::Knot& ref) const;
 
   dynamics::Model model_;
   std::shared_ptr<const TrackingLaw> law_;

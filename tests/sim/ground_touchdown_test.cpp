@@ -41,7 +41,7 @@ class SoftTouchdown : public ::testing::Test {
   }
 
   VecD dspTorque(double t, const VecD& theta, const VecD& dtheta) const {
-    return controller_.torque(Phase::kDsp, theta, dtheta, ref_.at(Phase::kDsp, start_ + t));
+    return controller_.torque(Phase::kDsp, theta, dtheta, ref_.at(Phase::kDsp, start_ + t), {});
   }
   TorqueFeedback feedback(double t) const {
     const int n = plant_.nLinks();
@@ -87,7 +87,7 @@ class SoftTouchdown : public ::testing::Test {
   /// The ground force at B just before touchdown (single support, same controller).
   Vec2d stanceLoad() const {
     const VecD tau = controller_.torque(Phase::kSsp, theta_, dtheta_,
-                                        ref_.at(Phase::kSsp, ref_.touchdownTime()));
+                                        ref_.at(Phase::kSsp, ref_.touchdownTime()), {});
     const VecD dd = dynamics::sspForwardDynamics(plant_, theta_, dtheta_, tau);
     return dynamics::stanceForce<double>(plant_, theta_, dtheta_, dd, Vec2d::Zero());
   }

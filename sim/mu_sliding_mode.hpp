@@ -1,0 +1,82 @@
+#pragma once
+/// @file mu_sliding_mode.hpp
+/// The sliding-mode controller of Mu (2004) ch. 4 as written, on the controller's model (the
+/// hatted matrices) with a known bound on how far the true robot may be from it.
+///  SSP, joint coordinates q (2.39), e = q - q_d, memory z = int e:
+///    s = edot + 2 Lambda e + Lambda^2 z                                        (4.1)
+///    u = qdd_d - 2 Lambda edot - Lambda^2 e,  v = qdot_d - 2 Lambda e - Lambda^2 z  (4.2)
+///    T^ = D^_q u + H^_q v + G^_q   (equivalent control, H as a matrix)          (4.4)
+///    T = T^ - (eta + sigma) o tanh(gamma s)                                     (4.5)-(4.6)
+///  DSP, reduced coordinates p = (hip x, hip y, torso) (2.21), e = p - p_d, z = int e:
+///    s and u as above in p;  T^ realises pdd = u on the hatted model          (4.10)-(4.12)
+///    T = T^ - C^- diag(tanh(alpha s)) |C^| (eta_D + sigma)                     (4.14)
+///  with C^ the map from joint torques to pdd (2.21 with T_theta = M^T T, 2.43) and
+///  C^- = C^T (C C^T)^-1 its right pseudo-inverse.
+/// eta (4.5) needs the true matrices, which Mu takes from the simulation; here the controller
+/// knows only a bound: the true masses, inertias, lengths and CoM offsets are within a factor
+/// (1 + b) of its own either way, and eta_i is the largest |T^_i - T_i| over the 2^3 corner
+/// models of that box (masses, inertias, geometry; the torques are multilinear in masses and
+/// inertias at fixed state, so the corners bound them in practice; not a proof).
+/// One deviation, for the contact: Mu's T^ in the DSP (4.12) is the minimum-norm solution
+/// C^- (u - B^ pdot) + N^, which leaves the split of the load between the two tips to chance;
+/// here T^ gives pdd = u with the leading tip carrying the reference's ground force (the planned
+/// load sharing, inside its friction cone), computed_torque.hpp. The switching term is Mu's.
+#include <vector>
+
+#include "dynamics/model.hpp"
+#include "dynamics/model_variation.hpp"
+#include "sim/controller.hpp"
+
+namespace gaitopt::sim {
+
+/// Mu's controller constants (Table 4.2), the same on every diagonal entry.
+struct MuSlidingModeGains {
+  double ssp_lambda = 25, ssp_gamma = 1, ssp_sigma = 2;   ///< [1/s], [s/rad], [N m]
+  double dsp_lambda = 10, dsp_alpha = 5, dsp_sigma = 10;  ///< [1/s], [s/m], [N m]
+};
+
+/// Table 4.2 for Mu's uncertainty case 1, 2 or 3. @throws std::invalid_argument otherwise.
+MuSlidingModeGains muTable42(int mu_case);
+
+class MuSlidingModeController : public Controller {
+ public:
+  /// `bound`: the relative uncertainty b of each parameter group (>= 0; 0.4 = the true value is
+  /// within a factor 1.4 of the model's). @throws std::invalid_argument when the stance ankle is
+  /// unactuated, a gain is not positive or a bound is negative.
+  MuSlidingModeController(dynamics::Model model, MuSlidingModeGains gains,
+                          const dynamics::ParameterErrors& bound);
+
+  VecD torque(gaits::Phase phase, const VecD& theta, const VecD& dtheta, const gaits::Knot& ref,
+              const Eigen::VectorXd& memory) const override;
+  /// The same before clipping to the torque limits (Mu's proof assumes no saturation).
+  VecD unclippedTorque(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
+                       const gaits::Knot& ref, const Eigen::VectorXd& memory) const;
+  /// n in the SSP (int e over q), n - 2 in the DSP (over p).
+  int memorySize(gaits::Phase phase) const override;
+  /// e: the memory is the integral of the tracking error of (4.1).
+  Eigen::VectorXd memoryRate(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
+                             const gaits::Knot& ref, const Eigen::VectorXd& memory) const override;
+
+  /// The sliding variable s (4.1) at the same arguments, for tests and logs.
+  Eigen::VectorXd slidingVariable(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
+                                  const gaits::Knot& ref, const Eigen::VectorXd& memory) const;
+
+ private:
+  struct Errors {
+    Eigen::VectorXd e, edot;
+    Eigen::VectorXd u;  ///< (4.2)/(4.10) reference acceleration
+    Eigen::VectorXd v;  ///< (4.2), SSP only
+    Eigen::VectorXd s;  ///< (4.1)
+  };
+  Errors errors(gaits::Phase phase, const VecD& theta, const VecD& dtheta, const gaits::Knot& ref,
+                const Eigen::VectorXd& memory) const;
+  VecD sspTorque(const VecD& theta, const VecD& dtheta, const Errors& err) const;
+  VecD dspTorque(const VecD& theta, const VecD& dtheta, const gaits::Knot& ref,
+                 const Errors& err) const;
+
+  dynamics::Model model_;
+  MuSlidingModeGains gains_;
+  std::vector<dynamics::Model> corners_;  ///< where the true robot may be
+};
+
+}  // namespace gaitopt::sim

@@ -1,0 +1,94 @@
+// Mu's sliding-mode controller (2004, ch. 4): on its exact model and on the reference it gives
+// the reference's inverse-dynamics torques; with its model off by case 2 and the bound known, the
+// Lyapunov function of (4.7) decreases outside the boundary layer (4.8); and it walks the
+// polynomial gait 20 steps with the controller's model off by Mu's cases 2 and 3.
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "dynamics/joint_coordinates.hpp"
+#include "dynamics/ssp_dynamics.hpp"
+#include "five_link_gait.hpp"
+#include "sim/hybrid_walk.hpp"
+#include "sim/mu_sliding_mode.hpp"
+
+namespace gaitopt::sim {
+namespace {
+
+using gaits::Phase;
+
+TEST(MuSlidingMode, OnTheExactModelAndTheReferenceItGivesTheInverseDynamicsTorques) {
+  const auto& model = test::fiveLinkRobot();
+  const MuSlidingModeController c(model, muTable42(1), {});
+  double worst = 0;
+  for (const auto& k : test::polynomialGait().knots()) {
+    if (k.phase != Phase::kSsp) continue;
+    const VecD tau = c.torque(Phase::kSsp, k.theta, k.dtheta, k, Eigen::VectorXd::Zero(5));
+    // (2.43) with H as the vector of (2.8b): an independent path from (4.4)'s matrix form.
+    const VecD want = dynamics::sspInverseDynamics(model, k.theta, k.dtheta, k.ddtheta);
+    worst = std::max(worst, (tau - want).cwiseAbs().maxCoeff());
+  }
+  EXPECT_LT(worst, 1e-9);
+}
+
+/// V = 1/2 s^T D_q s (4.7) along the plant's motion under the controller, by differences.
+double lyapunovRate(const dynamics::Model& plant, const MuSlidingModeController& c,
+                    const gaits::Knot& ref, const VecD& theta, const VecD& dtheta,
+                    const Eigen::VectorXd& z) {
+  const auto v_at = [&](double h) {
+    const VecD tau = c.unclippedTorque(Phase::kSsp, theta, dtheta, ref, z);
+    const VecD thdd = dynamics::sspForwardDynamics(plant, theta, dtheta, tau);
+    // State, reference and memory advanced together by h (first order is enough for V-dot).
+    gaits::Knot r = ref;
+    r.theta += h * ref.dtheta;
+    r.dtheta += h * ref.ddtheta;
+    const VecD th = theta + h * dtheta, dth = dtheta + h * thdd;
+    const Eigen::VectorXd zz = z + h * c.memoryRate(Phase::kSsp, theta, dtheta, ref, z);
+    const Eigen::VectorXd s = c.slidingVariable(Phase::kSsp, th, dth, r, zz);
+    const MatD dq = dynamics::jointSpaceMassMatrix(dynamics::massMatrix<double>(plant, th));
+    return 0.5 * s.dot(dq * s);
+  };
+  const double h = 1e-7;
+  return (v_at(h) - v_at(-h)) / (2 * h);
+}
+
+TEST(MuSlidingMode, WithItsModelOffTheLyapunovFunctionDecreasesOutsideTheBoundaryLayer) {
+  const auto& plant = test::fiveLinkRobot();
+  const dynamics::ParameterErrors case2 = dynamics::muUncertaintyCase(2);
+  const MuSlidingModeController c(dynamics::perturbedModel(plant, case2), muTable42(2), case2);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> off(-0.3, 0.3);
+  const auto& knots = test::polynomialGait().knots();
+  int checked = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const gaits::Knot& ref = knots[static_cast<size_t>(trial * 13 % 500)];
+    VecD theta = ref.theta, dtheta = ref.dtheta;
+    for (int i = 0; i < 5; ++i) {
+      theta(i) += 0.2 * off(rng);
+      dtheta(i) += 3 * off(rng);
+    }
+    const Eigen::VectorXd z = Eigen::VectorXd::Zero(5);
+    const Eigen::VectorXd s = c.slidingVariable(Phase::kSsp, theta, dtheta, ref, z);
+    // (4.9): outside |s_i| >= eps_i for gamma = 2.5 and mu_i near 1/2 (eta ~ sigma).
+    if (s.cwiseAbs().minCoeff() < 1.0) continue;
+    ++checked;
+    EXPECT_LT(lyapunovRate(plant, c, ref, theta, dtheta, z), 0) << trial;
+  }
+  EXPECT_GE(checked, 5);
+}
+
+TEST(MuSlidingMode, WalksThePolynomialGaitWithItsModelOffByMusCases2And3) {
+  const auto& plant = test::fiveLinkRobot();
+  const Reference ref(test::polynomialGait(), plant);
+  for (int mu_case : {2, 3}) {
+    const auto errors = dynamics::muUncertaintyCase(mu_case);
+    const MuSlidingModeController c(dynamics::perturbedModel(plant, errors), muTable42(mu_case),
+                                    errors);
+    const WalkResult w = simulateWalk(plant, c, ref, {});
+    EXPECT_EQ(w.steps_completed, 20) << "case " << mu_case << ": " << w.failure;
+    EXPECT_LT(w.max_tracking_error, 0.1) << "case " << mu_case;
+  }
+}
+
+}  // namespace
+}  // namespace gaitopt::sim
