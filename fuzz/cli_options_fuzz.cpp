@@ -11,6 +11,16 @@
 
 #include "apps/cli_app.hpp"
 
+namespace {
+
+/// Thrown when every option is parsed and checked, before a subcommand's callback would run its
+/// command (reading and writing files). The callbacks themselves must stay: each owns its
+/// command's option storage (a shared_ptr), so replacing them freed the storage CLI11 then
+/// parsed into (heap-use-after-free on the first seed).
+struct Parsed {};
+
+}  // namespace
+
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::vector<std::string> args{"gaitopt"};
   std::string current;
@@ -27,10 +37,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   for (auto& a : args) argv.push_back(a.data());
   CLI::App app;
   gaitopt::apps::configureCli(app);
-  for (CLI::App* sub : app.get_subcommands({})) sub->callback({});  // parse only: no files
+  // The top-level app's parse-complete callback runs after all parsing and checking and before
+  // the subcommands' callbacks (CLI::App::run_callback).
+  app.parse_complete_callback([] { throw Parsed{}; });
   try {
     app.parse(static_cast<int>(argv.size()), argv.data());
   } catch (const CLI::Error&) {  // usage errors, --help and --version
+  } catch (const Parsed&) {
   }
   return 0;
 }
