@@ -19,7 +19,11 @@ namespace gaitopt::ocp {
 
 using Triplets = std::vector<Eigen::Triplet<double>>;
 
-/// Infinity for bounds: Ipopt reads any bound beyond 1e19 as none (nlp_upper_bound_inf).
+/// "No bound", the one definition for every bound of the NLP. Ipopt reads a bound at or beyond
+/// +-1e19 as absent (its nlp_lower_bound_inf / nlp_upper_bound_inf defaults), so 1e20 is no
+/// bound to the solver, yet finite: a failed folder's summary.json records the bounds of the
+/// worst violation, and JSON has no infinity. Values that are really infinite (a friction
+/// ratio at zero normal force, gaits/metrics.hpp) are std::numeric_limits<double>::infinity().
 inline constexpr double kInf = 1e20;
 
 /// The phase tag of sets and blocks that belong to no single phase (they link phases).
