@@ -69,9 +69,9 @@ Nlp buildProblem(const PhaseLayout& layout) {
   fix(last, 0, 1);
   fix(last, 1, 0);
   nlp.addVariables("points", n, lo, hi, Eigen::VectorXd::Zero(n));
-  nlp.addConstraint(std::make_unique<CollocationDefects>(layout));
-  nlp.addConstraint(
-      std::make_unique<PathConstraint>("dynamics", layout, std::make_shared<DoubleIntegrator>()));
+  nlp.addConstraint(std::make_unique<CollocationDefects>("defects", "move", layout));
+  nlp.addConstraint(std::make_unique<PathConstraint>("dynamics", "move", layout,
+                                                     std::make_shared<DoubleIntegrator>()));
   nlp.addCost(std::make_unique<QuadratureCost>("effort", layout, std::make_shared<Effort>()));
   return nlp;
 }
