@@ -5,10 +5,11 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
-#include <numbers>
 #include <utility>
 
 #include <fmt/format.h>
+
+#include "config/units.hpp"
 
 namespace gaitopt::config {
 
@@ -31,7 +32,7 @@ NumberCheck angleInRange(double lo, double hi) {
   return [=](double v) {
     if (v >= lo && v <= hi) return std::string();
     const std::string expected = fmt::format("an angle in [{:.4g}, {:.4g}] [rad]", lo, hi);
-    const double as_radians = v * std::numbers::pi / 180;
+    const double as_radians = v * kDeg;
     if (as_radians < lo || as_radians > hi) return expected;
     return fmt::format("{} (degrees? {:g} deg is {:.4g} rad)", expected, v, as_radians);
   };

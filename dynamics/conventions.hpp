@@ -28,14 +28,11 @@
 ///
 /// A step: SSP (B pinned) -> impact at E -> DSP (B and E pinned, E = B + (step_length, 0)) ->
 /// relabel (2.38, corrected) -> next step.
-#include <numbers>
-
 #include <Eigen/Core>
 
-namespace gaitopt {
+#include "config/units.hpp"  // kDeg: one degree in radians (pi is std::numbers::pi)
 
-/// One degree in radians: the one definition (robot files, impact maps and tests give degrees).
-inline constexpr double kDeg = std::numbers::pi / 180;
+namespace gaitopt {
 
 /// Largest chain the fixed-capacity matrices hold (five-link robots use 5).
 inline constexpr int kMaxLinks = 7;

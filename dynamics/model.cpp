@@ -1,6 +1,7 @@
 #include "dynamics/model.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <utility>
 
@@ -38,7 +39,7 @@ Model::Model(std::string name, std::vector<Link> links, std::vector<Joint> joint
       foot_(foot),
       slope_(slope),
       gravity_acc_(-gravity * std::sin(slope), -gravity * std::cos(slope)) {
-  if (!(std::isfinite(slope) && std::abs(slope) < M_PI / 2))
+  if (!(std::isfinite(slope) && std::abs(slope) < std::numbers::pi / 2))
     throw std::invalid_argument(
         fmt::format("slope {} rad: expected a finite inclination with |slope| < pi/2", slope));
   checkStructure();

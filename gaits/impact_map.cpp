@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -24,7 +26,7 @@ void checkAxis(const GridAxis& a, MapAxis which) {
     throw std::invalid_argument(
         fmt::format("{}: range {:.6g}:{:.6g}:{} must have first <= last (equal when count is 1)",
                     name, a.first / unit, a.last / unit, a.count));
-  const double upper = angle ? M_PI : INFINITY;
+  const double upper = angle ? std::numbers::pi : std::numeric_limits<double>::infinity();
   if (!(a.first > 0 && a.last < upper))
     throw std::invalid_argument(
         fmt::format("{}: {:.6g}..{:.6g} {} outside the open range (0, {:.6g}) {}", name,

@@ -1,6 +1,7 @@
 #include "gaits/impact_posture.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -20,8 +21,8 @@ void requireParams(const dynamics::Model& model, const ImpactPostureParams& p) {
         model.name(), model.legLinks()));
   // sigma = 0 is a singular point of the study (Mu sec. 5.3, after Hurmuzlu 1993); alpha = 0 or
   // pi would be a tip sliding horizontally, not an impact (ydot_e^- < 0 is required).
-  if (!(p.step_length > 0 && p.knee_bias > 0 && p.knee_bias < M_PI && p.approach_angle > 0 &&
-        p.approach_angle < M_PI && p.approach_speed > 0))
+  if (!(p.step_length > 0 && p.knee_bias > 0 && p.knee_bias < std::numbers::pi &&
+        p.approach_angle > 0 && p.approach_angle < std::numbers::pi && p.approach_speed > 0))
     throw std::invalid_argument(fmt::format(
         "impact posture needs step_length > 0, 0 < sigma < pi, 0 < alpha < pi, V_e > 0; got "
         "{} m, {} rad, {} rad, {} m/s",
@@ -54,7 +55,7 @@ double impactHipHeight(const dynamics::Model& model, const ImpactPostureParams& 
     throw std::domain_error(fmt::format(
         "leg cannot reach: step_length {:.4f} m needs a hip reach above {:.4f} m, but knee bias "
         "{:.2f} deg gives {:.4f} m",
-        params.step_length, x_h, params.knee_bias * 180 / M_PI, reach));
+        params.step_length, x_h, params.knee_bias / kDeg, reach));
   return std::sqrt(reach * reach - x_h * x_h);
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <functional>
 #include <stdexcept>
+#include <utility>
 
 namespace gaitopt::ocp {
 namespace {
@@ -62,8 +63,9 @@ void PhaseLayout::validate() const {
       throw std::invalid_argument("phase mesh fractions must increase");
 }
 
-CollocationDefects::CollocationDefects(const PhaseLayout& layout, const std::string& name)
-    : ConstraintSet(name, defectRows(layout)), layout_(layout) {
+CollocationDefects::CollocationDefects(std::string name, std::string phase,
+                                       const PhaseLayout& layout)
+    : ConstraintSet(std::move(name), defectRows(layout), std::move(phase)), layout_(layout) {
   const PhaseLayout& l = layout_;
   l.validate();
   const int nx = l.nx;

@@ -84,13 +84,14 @@ struct PhaseLayout {
 /// Jacobian, empty Hessian); with a free T they are bilinear in T and xdot.
 class CollocationDefects : public ConstraintSet {
  public:
-  explicit CollocationDefects(const PhaseLayout& layout, const std::string& name = "defects");
+  /// @param phase  the phase the layout's points belong to (ConstraintSet)
+  CollocationDefects(std::string name, std::string phase, const PhaseLayout& layout);
   void values(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> g) const override;
   void jacobian(const Eigen::VectorXd& x, Triplets& out) const override;
   void hessian(const Eigen::VectorXd& x, const Eigen::VectorXd& lambda,
                Triplets& out) const override;
   /// The segment of a row: nx rows per segment (trapezoidal), 2 nx (Hermite-Simpson).
-  NodeOfRow nodeOf(int row) const override {
+  GridNode nodeOf(int row) const override {
     const int per_segment = layout_.pointsPerSegment() * layout_.nx;
     return {"segment", row / per_segment, row % per_segment};
   }

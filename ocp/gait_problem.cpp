@@ -107,16 +107,15 @@ Phase addPhase(GaitProblem& p, const dynamics::Model& model, const OcpConfig& c,
     x0.segment(l.pointOffset(k) - l.offset, l.pointSize()) = guessPoint(guess, phase, l.time(k));
   l.offset = p.nlp
                  .addVariables(phase.name() + "_points", l.variables(), lo.replicate(l.points(), 1),
-                               hi.replicate(l.points(), 1), x0, phase.name())
+                               hi.replicate(l.points(), 1), x0, phase.name(), l.pointSize())
                  .offset;
   return phase;
 }
 
 void addPathConstraint(GaitProblem& p, const Phase& phase, const std::string& what,
                        std::shared_ptr<const PointFunction> f) {
-  p.nlp.addConstraint(
-      std::make_unique<PathConstraint>(phase.name() + "_" + what, phase.layout, std::move(f)),
-      phase.name());
+  p.nlp.addConstraint(std::make_unique<PathConstraint>(phase.name() + "_" + what, phase.name(),
+                                                       phase.layout, std::move(f)));
 }
 
 /// The weighted running costs: torque squared, and absolute work through slacks, alone or
@@ -138,8 +137,8 @@ void addPhaseCost(GaitProblem& p, const dynamics::Model& model, const OcpConfig&
 
 void addPhaseConstraints(GaitProblem& p, const dynamics::Model& model, const OcpConfig& c,
                          const Phase& phase) {
-  p.nlp.addConstraint(std::make_unique<CollocationDefects>(phase.layout, phase.name() + "_defects"),
-                      phase.name());
+  p.nlp.addConstraint(
+      std::make_unique<CollocationDefects>(phase.name() + "_defects", phase.name(), phase.layout));
   addPathConstraint(p, phase, "dynamics", std::make_shared<BipedDynamics>(model, phase.point));
   if (c.knee_limits && model.legLinks() == 2)
     addPathConstraint(p, phase, "knees", std::make_shared<KneeDirection>(phase.point));
@@ -150,7 +149,7 @@ void addPhaseConstraints(GaitProblem& p, const dynamics::Model& model, const Ocp
                                                       frictionBound(model, c)));
   }
   if (!phase.doubleSupport() && c.clearance.enabled)
-    p.nlp.addConstraint(std::make_unique<SwingClearance>(model, phase, c.clearance), phase.name());
+    p.nlp.addConstraint(std::make_unique<SwingClearance>(model, phase, c.clearance));
   addPhaseCost(p, model, c, phase);
 }
 

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include <fmt/format.h>
-
 #include "ocp/biped_dynamics.hpp"
 #include "ocp/mesh_refinement.hpp"
 
@@ -34,44 +32,6 @@ bool refine(OcpConfig& config, const GaitProblem& p, const SolveResult& r,
 }
 
 }  // namespace
-
-LocatedViolation worstConstraint(const GaitProblem& problem, const Eigen::VectorXd& x) {
-  LocatedViolation v{problem.nlp.worstConstraint(x), "", -1, "row", -1};
-  for (const auto& set : problem.nlp.constraintSets()) {
-    if (set->name() != v.violation.name) continue;
-    const NodeOfRow node = set->nodeOf(v.violation.index);
-    v.node_kind = node.kind;
-    v.node = node.index;
-    v.index = node.row;
-  }
-  return v;
-}
-
-LocatedViolation worstBound(const GaitProblem& problem, const Eigen::VectorXd& x) {
-  LocatedViolation v{problem.nlp.worstBound(x), "", -1, "element", -1};
-  const auto& blocks = problem.nlp.variableBlocks();
-  const auto block = std::find_if(blocks.begin(), blocks.end(), [&](const VariableBlock& b) {
-    return b.name == v.violation.name;
-  });
-  for (const Phase* phase : problem.phases()) {
-    const PhaseLayout* l = &phase->layout;
-    if (block == blocks.end() || block->offset != l->offset) continue;  // not a phase's points
-    v.node_kind = "point";
-    v.node = v.violation.index / l->pointSize();
-    v.index = v.violation.index % l->pointSize();
-  }
-  return v;
-}
-
-std::string describe(const LocatedViolation& v) {
-  const Violation& w = v.violation;
-  if (w.name.empty()) return "none";
-  const std::string where =
-      v.node < 0 ? fmt::format("{}, {} {}", w.phase, v.part, w.index)
-                 : fmt::format("{}, {} {}, {} {}", w.phase, v.node_kind, v.node, v.part, v.index);
-  return fmt::format("{} ({}): {:.4g} outside [{:.4g}, {:.4g}] by {:.3g}", w.name, where, w.value,
-                     w.lower, w.upper, w.amount);
-}
 
 GaitSolution solveGait(const dynamics::Model& model, OcpConfig config,
                        const gaits::Trajectory& guess,

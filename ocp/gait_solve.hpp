@@ -33,24 +33,6 @@ struct GaitSolution {
   std::vector<MeshRound> history;
 };
 
-/// A constraint row or variable bound of the gait problem, located on its time grid.
-struct LocatedViolation {
-  Violation violation;    ///< set or block name, its phase ("ssp", "dsp", or "link" for the
-                          ///< touchdown, impact, periodicity, ...), index, amount, bounds
-  std::string node_kind;  ///< "point" (collocation point), "segment", or "" (not on the grid)
-  int node = -1;
-  std::string part;  ///< what `index` counts: "row" (of a constraint) or "element" (of a point)
-  int index = -1;    ///< the row or element within the node, -1 when not on the grid
-};
-
-/// The constraint row of `x` farthest outside its bounds.
-LocatedViolation worstConstraint(const GaitProblem& problem, const Eigen::VectorXd& x);
-/// The variable of `x` farthest outside its bounds.
-LocatedViolation worstBound(const GaitProblem& problem, const Eigen::VectorXd& x);
-/// One line for people, e.g. "ssp_clearance (ssp, point 12, row 0): -0.031 outside [0, inf]
-/// by 0.031"; the index within the set or block when it is not on the grid.
-std::string describe(const LocatedViolation& v);
-
 /// Solves `config` from `guess`; refines while config.refinement.tolerance > 0. A failed round
 /// ends the sequence (its result is returned). `on_round` sees each round as it finishes.
 GaitSolution solveGait(const dynamics::Model& model, OcpConfig config,

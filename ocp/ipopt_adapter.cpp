@@ -209,10 +209,10 @@ class Adapter : public Ipopt::TNLP {
   /// J, -I_d, -delta I], one slack s per inequality row d.
   void recordKktSize(SolveProfile& profile) const {
     const auto inequalities = static_cast<int>(((gu_ - gl_).array() > 0).count());
-    const int n = nlp_.variables(), m = nlp_.constraints();
-    profile.kkt_dimension = n + inequalities + m;
-    profile.kkt_nonzeros =
-        hess_.nonZeros() + n + 2 * inequalities + jac_.nonZeros() + m;  // diagonals and -I_d
+    const int variables = nlp_.variables(), rows = nlp_.constraints();
+    profile.kkt_dimension = variables + inequalities + rows;
+    // The lower triangle: W, Sigma_x, Sigma_s and -I_d, J, -delta I.
+    profile.kkt_nonzeros = hess_.nonZeros() + variables + 2 * inequalities + jac_.nonZeros() + rows;
   }
 
   static Eigen::VectorXd vec(const Number* p, Index n) {

@@ -60,11 +60,11 @@ void SparsityPattern::accumulate(const Triplets& entries, double* values) const 
 
 VariableBlock Nlp::addVariables(const std::string& name, int size, const Eigen::VectorXd& lower,
                                 const Eigen::VectorXd& upper, const Eigen::VectorXd& initial,
-                                const std::string& phase) {
+                                const std::string& phase, int point_size) {
   if (lower.size() != size || upper.size() != size || initial.size() != size)
     throw std::invalid_argument(
         fmt::format("variable block '{}': bounds and guess need {} entries", name, size));
-  const VariableBlock block{name, variables(), size, phase};
+  const VariableBlock block{name, variables(), size, phase, point_size};
   x0_ = append(x0_, initial);
   xl_ = append(xl_, lower);
   xu_ = append(xu_, upper);
@@ -72,9 +72,8 @@ VariableBlock Nlp::addVariables(const std::string& name, int size, const Eigen::
   return block;
 }
 
-void Nlp::addConstraint(std::unique_ptr<ConstraintSet> set, const std::string& phase) {
+void Nlp::addConstraint(std::unique_ptr<ConstraintSet> set) {
   sets_.push_back(std::move(set));
-  set_phases_.push_back(phase);
 }
 void Nlp::addCost(std::unique_ptr<CostTerm> term) {
   costs_.push_back(std::move(term));
@@ -150,11 +149,19 @@ Violation Nlp::worstConstraint(const Eigen::VectorXd& x) const {
   const auto [row, amount] = farthestOutside(g, lower, upper);
   if (row < 0) return {};
   int first = 0;
-  for (size_t i = 0; i < sets_.size(); ++i) {
-    const ConstraintSet& s = *sets_[i];
-    if (row < first + s.rows())
-      return {s.name(), set_phases_[i], row - first, amount, g(row), lower(row), upper(row)};
-    first += s.rows();
+  for (const auto& s : sets_) {
+    const int r = row - first;
+    if (r < s->rows())
+      return {.name = s->name(),
+              .phase = s->phase(),
+              .part = "row",
+              .index = r,
+              .node = s->nodeOf(r),
+              .amount = amount,
+              .value = g(row),
+              .lower = lower(row),
+              .upper = upper(row)};
+    first += s->rows();
   }
   throw std::logic_error("constraint row beyond the last set");
 }
@@ -162,9 +169,32 @@ Violation Nlp::worstConstraint(const Eigen::VectorXd& x) const {
 Violation Nlp::worstBound(const Eigen::VectorXd& x) const {
   const auto [i, amount] = farthestOutside(x, xl_, xu_);
   if (i < 0) return {};
-  for (const auto& b : blocks_)
-    if (i < b.offset + b.size) return {b.name, b.phase, i - b.offset, amount, x(i), xl_(i), xu_(i)};
+  for (const auto& b : blocks_) {
+    if (i >= b.offset + b.size) continue;
+    const int element = i - b.offset;
+    const GridNode node = b.point_size > 0
+                              ? GridNode{"point", element / b.point_size, element % b.point_size}
+                              : GridNode{};
+    return {.name = b.name,
+            .phase = b.phase,
+            .part = "element",
+            .index = element,
+            .node = node,
+            .amount = amount,
+            .value = x(i),
+            .lower = xl_(i),
+            .upper = xu_(i)};
+  }
   throw std::logic_error("variable beyond the last block");
+}
+
+std::string describe(const Violation& v) {
+  if (v.name.empty()) return "none";
+  const std::string where = v.node.index < 0 ? fmt::format("{}, {} {}", v.phase, v.part, v.index)
+                                             : fmt::format("{}, {} {}, {} {}", v.phase, v.node.kind,
+                                                           v.node.index, v.part, v.node.entry);
+  return fmt::format("{} ({}): {:.4g} outside [{:.4g}, {:.4g}] by {:.3g}", v.name, where, v.value,
+                     v.lower, v.upper, v.amount);
 }
 
 }  // namespace gaitopt::ocp

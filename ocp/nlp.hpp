@@ -19,7 +19,11 @@ namespace gaitopt::ocp {
 
 using Triplets = std::vector<Eigen::Triplet<double>>;
 
-/// Infinity for bounds: Ipopt reads any bound beyond 1e19 as none (nlp_upper_bound_inf).
+/// "No bound", the one definition for every bound of the NLP. Ipopt reads a bound at or beyond
+/// +-1e19 as absent (its nlp_lower_bound_inf / nlp_upper_bound_inf defaults), so 1e20 is no
+/// bound to the solver, yet finite: a failed folder's summary.json records the bounds of the
+/// worst violation, and JSON has no infinity. Values that are really infinite (a friction
+/// ratio at zero normal force, gaits/metrics.hpp) are std::numeric_limits<double>::infinity().
 inline constexpr double kInf = 1e20;
 
 /// The phase tag of sets and blocks that belong to no single phase (they link phases).
@@ -31,21 +35,28 @@ struct VariableBlock {
   int offset = 0;
   int size = 0;
   std::string phase = kLinkPhase;  ///< the phase the block belongs to (Nlp::addVariables)
+  /// > 0: the block is its phase's collocation points in time order, point_size variables
+  /// each (PhaseLayout::pointSize); 0: not on the time grid.
+  int point_size = 0;
 };
 
-/// Where a row of a constraint set sits on the time grid, for reports of failed solves.
-struct NodeOfRow {
+/// Where a constraint row or a variable sits on the time grid, for reports of failed solves.
+struct GridNode {
   const char* kind = "";  ///< "point" (a collocation point), "segment", or "" (not on the grid)
-  int index = -1;
-  int row = -1;  ///< the row among the node's rows
+  int index = -1;         ///< the point or segment
+  int entry = -1;         ///< the row (of a set) or element (of a block) within the node
 };
 
 /// A group of constraint rows g(x) with bounds lower <= g(x) <= upper.
 class ConstraintSet {
  public:
-  ConstraintSet(std::string name, int rows) : name_(std::move(name)), rows_(rows) {}
+  /// @param phase  the phase whose points the rows constrain ("ssp", "dsp"), or kLinkPhase for
+  ///               rows that link phases (touchdown, periodicity, durations)
+  ConstraintSet(std::string name, int rows, std::string phase = kLinkPhase)
+      : name_(std::move(name)), phase_(std::move(phase)), rows_(rows) {}
   virtual ~ConstraintSet() = default;
   const std::string& name() const { return name_; }
+  const std::string& phase() const { return phase_; }
   int rows() const { return rows_; }
   /// Bounds of the rows (equalities: lower == upper). Default: all zero (equalities g = 0).
   virtual Eigen::VectorXd lowerBounds() const { return Eigen::VectorXd::Zero(rows_); }
@@ -58,21 +69,30 @@ class ConstraintSet {
   virtual void hessian(const Eigen::VectorXd& x, const Eigen::VectorXd& lambda,
                        Triplets& out) const = 0;
   /// The node of row `row` in [0, rows()); default: not on the time grid.
-  virtual NodeOfRow nodeOf(int /*row*/) const { return {}; }
+  virtual GridNode nodeOf(int /*row*/) const { return {}; }
 
  private:
   std::string name_;
+  std::string phase_;
   int rows_;
 };
 
-/// The worst bound violation of a point among constraint rows or variables.
+/// The worst bound violation of a point among constraint rows or variables, located by the
+/// set's or block's own data (its phase and nodes), so reports parse no names.
 struct Violation {
-  std::string name;   ///< the constraint set or variable block ("" when nothing is violated)
-  std::string phase;  ///< its phase tag (Nlp::addConstraint, Nlp::addVariables)
-  int index = -1;     ///< row within the set, or element within the block
-  double amount = 0;  ///< distance outside [lower, upper] (0 when within)
+  std::string name;       ///< the constraint set or variable block ("" when nothing is violated)
+  std::string phase;      ///< its phase (ConstraintSet::phase, VariableBlock::phase)
+  const char* part = "";  ///< what `index` and node.entry count: "row" or "element"
+  int index = -1;         ///< row within the set, or element within the block
+  GridNode node;          ///< where that row or element sits on the time grid
+  double amount = 0;      ///< distance outside [lower, upper] (0 when within)
   double value = 0, lower = 0, upper = 0;
 };
+
+/// One line for people, e.g. "ssp_clearance (ssp, point 12, row 0): -0.031 outside [0, 1e+20]
+/// by 0.031"; the index within the set or block when it is not on the grid; "none" when nothing
+/// is violated.
+std::string describe(const Violation& v);
 
 /// A term of the objective.
 class CostTerm {
@@ -109,16 +129,13 @@ class SparsityPattern {
 
 class Nlp {
  public:
-  /// Adds a block of `size` variables of phase `phase`; returns it (offset into the decision
+  /// Adds a block of `size` variables of phase `phase`, collocation points of `point_size`
+  /// variables each when point_size > 0 (VariableBlock); returns it (offset into the decision
   /// vector).
   VariableBlock addVariables(const std::string& name, int size, const Eigen::VectorXd& lower,
                              const Eigen::VectorXd& upper, const Eigen::VectorXd& initial,
-                             const std::string& phase = kLinkPhase);
-  /// Adds a constraint set of phase `phase`, so that reports locate its rows without parsing
-  /// names.
-  void addConstraint(std::unique_ptr<ConstraintSet> set, const std::string& phase = kLinkPhase);
-  /// The phase tag of constraint set i (in the order added).
-  const std::string& constraintPhase(size_t i) const { return set_phases_[i]; }
+                             const std::string& phase = kLinkPhase, int point_size = 0);
+  void addConstraint(std::unique_ptr<ConstraintSet> set);
   void addCost(std::unique_ptr<CostTerm> term);
 
   int variables() const { return static_cast<int>(x0_.size()); }
@@ -150,7 +167,6 @@ class Nlp {
   Eigen::VectorXd x0_, xl_, xu_;
   std::vector<VariableBlock> blocks_;
   std::vector<std::unique_ptr<ConstraintSet>> sets_;
-  std::vector<std::string> set_phases_;  // parallel to sets_
   std::vector<std::unique_ptr<CostTerm>> costs_;
 };
 

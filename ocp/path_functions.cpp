@@ -106,7 +106,7 @@ void SwingHeight::hessian(const Eigen::VectorXd& v, const Eigen::VectorXd& weigh
 
 SwingClearance::SwingClearance(const dynamics::Model& model, const Phase& phase,
                                const ClearanceProfile& profile)
-    : PathConstraint(phase.name() + "_clearance", phase.layout,
+    : PathConstraint(phase.name() + "_clearance", phase.name(), phase.layout,
                      std::make_shared<SwingHeight>(model, phase.point)),
       lower_(phase.layout.points()) {
   for (int p = 0; p < phase.layout.points(); ++p) lower_(p) = profile.at(phase.layout.time(p, 1.0));

@@ -35,9 +35,9 @@ PointPattern probePattern(const PointFunction& f, int size) {
   return p;
 }
 
-PathConstraint::PathConstraint(std::string name, const PhaseLayout& layout,
+PathConstraint::PathConstraint(std::string name, std::string phase, const PhaseLayout& layout,
                                std::shared_ptr<const PointFunction> function)
-    : ConstraintSet(std::move(name), layout.points() * function->rows()),
+    : ConstraintSet(std::move(name), layout.points() * function->rows(), std::move(phase)),
       layout_(layout),
       f_(std::move(function)),
       pattern_(probePattern(*f_, layout.pointSize())) {}

@@ -39,7 +39,8 @@ PointPattern probePattern(const PointFunction& f, int size);
 /// entries of the probed pattern only (fewer nonzeros for Ipopt's linear solver).
 class PathConstraint : public ConstraintSet {
  public:
-  PathConstraint(std::string name, const PhaseLayout& layout,
+  /// @param phase  the phase the layout's points belong to (ConstraintSet)
+  PathConstraint(std::string name, std::string phase, const PhaseLayout& layout,
                  std::shared_ptr<const PointFunction> function);
   Eigen::VectorXd lowerBounds() const override;
   Eigen::VectorXd upperBounds() const override;
@@ -48,7 +49,7 @@ class PathConstraint : public ConstraintSet {
   void hessian(const Eigen::VectorXd& x, const Eigen::VectorXd& lambda,
                Triplets& out) const override;
   /// Row r is row r % function->rows() of collocation point r / function->rows().
-  NodeOfRow nodeOf(int row) const override { return {"point", row / f_->rows(), row % f_->rows()}; }
+  GridNode nodeOf(int row) const override { return {"point", row / f_->rows(), row % f_->rows()}; }
 
  private:
   PhaseLayout layout_;

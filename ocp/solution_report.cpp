@@ -59,20 +59,19 @@ nlohmann::ordered_json solverSettings(const OcpConfig& config) {
 }
 
 /// The location of a violation for summary.json; `name_key` says what the name names.
-nlohmann::ordered_json violationJson(const LocatedViolation& v, const std::string& name_key) {
-  const Violation& w = v.violation;
-  if (w.name.empty()) return nullptr;
+nlohmann::ordered_json violationJson(const Violation& v, const std::string& name_key) {
+  if (v.name.empty()) return nullptr;
   using Json = nlohmann::ordered_json;
-  const bool on_grid = v.node >= 0;
-  return {{name_key, w.name},
-          {"phase", w.phase},
-          {"node_kind", on_grid ? Json(v.node_kind) : Json()},
-          {"node", on_grid ? Json(v.node) : Json()},
-          {v.part, on_grid ? v.index : w.index},
-          {"value", w.value},
-          {"lower", w.lower},
-          {"upper", w.upper},
-          {"violation", w.amount}};
+  const bool on_grid = v.node.index >= 0;
+  return {{name_key, v.name},
+          {"phase", v.phase},
+          {"node_kind", on_grid ? Json(v.node.kind) : Json()},
+          {"node", on_grid ? Json(v.node.index) : Json()},
+          {v.part, on_grid ? v.node.entry : v.index},
+          {"value", v.value},
+          {"lower", v.lower},
+          {"upper", v.upper},
+          {"violation", v.amount}};
 }
 
 /// Why a solve failed and where: the error line (also in FAILED.txt) and summary.json's keys.
@@ -83,8 +82,8 @@ struct FailureReport {
 
 FailureReport failureReport(const GaitSolution& solution, const std::string& dir) {
   const SolveResult& r = solution.result;
-  const auto row = worstConstraint(solution.problem, r.x);
-  const auto bound = worstBound(solution.problem, r.x);
+  const Violation row = solution.problem.nlp.worstConstraint(r.x);
+  const Violation bound = solution.problem.nlp.worstBound(r.x);
   const std::string message = fmt::format(
       "solver status {} after {} iterations; worst violated constraint: {}; worst variable "
       "bound: {}; {} (max violation {:.3g}) written to {}",

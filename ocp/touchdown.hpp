@@ -23,7 +23,8 @@ class Touchdown {
  public:
   Touchdown() = default;
   /// Adds the touchdown's rows (and impact variables, guessed from the closed-form impact maps
-  /// at the strike state of the SSP's guess) to `nlp`, all tagged "touchdown".
+  /// at the strike state of the SSP's guess) to `nlp`, all of phase kLinkPhase: they tie the
+  /// SSP's last point to what follows it.
   /// @throws std::invalid_argument when the friction margin leaves no cone.
   static Touchdown add(Nlp& nlp, const dynamics::Model& model, const OcpConfig& config,
                        const Phase& ssp, double step_length);

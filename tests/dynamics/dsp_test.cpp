@@ -1,5 +1,7 @@
 // Double support: pinned tips, contact forces, momentum balance, and the reduced model (2.21),
 // against the independent floating-base KKT formulation.
+#include <numbers>
+
 #include <gtest/gtest.h>
 
 #include "dynamics/dsp_dynamics.hpp"
@@ -28,7 +30,7 @@ DspState makeDspState(const Model& m, std::mt19937& rng) {
     const Vec2d hip = dynamics::hip(m, theta);
     if (k == 1) {
       // Straight legs: the swing leg reaches the ground iff it mirrors the stance leg.
-      theta(n - 1) = M_PI - theta(0);
+      theta(n - 1) = std::numbers::pi - theta(0);
     } else {
       // Place E ahead of the hip and solve the swing thigh/shank angles (two-link IK).
       const double l1 = m.link(n - 2).length;

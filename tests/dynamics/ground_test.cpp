@@ -1,5 +1,7 @@
 // Ground reaction and ZMP: the momentum-based ZMP equals the centre of pressure of the contact
 // forces and the ankle moment, which come from a different computation (forward dynamics).
+#include <numbers>
+
 #include <gtest/gtest.h>
 
 #include "dynamics/dsp_dynamics.hpp"
@@ -72,7 +74,7 @@ TEST_P(GroundTest, OnASlopeTheWorldVerticalPostureStandsWithoutTorque) {
   for (const double gamma : {0.1, -0.2}) {
     const dynamics::Model sloped = dynamics::withSlope(model_, gamma);
     VecD theta = VecD::Constant(n, gamma);
-    for (int i = n - model_.legLinks(); i < n; ++i) theta(i) += M_PI;
+    for (int i = n - model_.legLinks(); i < n; ++i) theta(i) += std::numbers::pi;
     const double weight = model_.totalMass() * model_.gravity();
     EXPECT_LT(dynamics::sspInverseDynamics(sloped, theta, zero, zero).cwiseAbs().maxCoeff(),
               1e-12 * weight);
@@ -83,7 +85,7 @@ TEST_P(GroundTest, OnASlopeTheWorldVerticalPostureStandsWithoutTorque) {
     // Upright in the ground frame (theta = 0) is not a rest posture on the slope: gravity pulls
     // every link downhill, G_i = g_i sin(gamma).
     VecD upright = VecD::Zero(n);
-    for (int i = n - model_.legLinks(); i < n; ++i) upright(i) = M_PI;
+    for (int i = n - model_.legLinks(); i < n; ++i) upright(i) = std::numbers::pi;
     const VecD g_upright = dynamics::gravityVector(sloped, upright);
     for (int i = 0; i < n - model_.legLinks(); ++i)
       EXPECT_NEAR(g_upright(i), model_.gravityCoefficients()(i) * std::sin(gamma), 1e-9);

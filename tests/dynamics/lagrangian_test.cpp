@@ -1,4 +1,6 @@
 // D, H, G of Mu (2.8) against the numeric Lagrangian, on every shipped robot.
+#include <numbers>
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
@@ -21,7 +23,7 @@ class LagrangianTest : public ::testing::TestWithParam<std::string> {
 
 TEST_P(LagrangianTest, MassMatrixIsSymmetricPositiveDefinite) {
   for (int trial = 0; trial < 200; ++trial) {
-    const VecD theta = randomVec(rng_, model_.nLinks(), -M_PI, M_PI);
+    const VecD theta = randomVec(rng_, model_.nLinks(), -std::numbers::pi, std::numbers::pi);
     const MatD d = dynamics::massMatrix(model_, theta);
     EXPECT_EQ((d - d.transpose()).norm(), 0.0);
     const double min_eig = Eigen::SelfAdjointEigenSolver<MatD>(d).eigenvalues().minCoeff();
@@ -31,14 +33,14 @@ TEST_P(LagrangianTest, MassMatrixIsSymmetricPositiveDefinite) {
 
 TEST_P(LagrangianTest, MassMatrixEqualsNumericLagrangian) {
   for (int trial = 0; trial < 50; ++trial) {
-    const VecD theta = randomVec(rng_, model_.nLinks(), -M_PI, M_PI);
+    const VecD theta = randomVec(rng_, model_.nLinks(), -std::numbers::pi, std::numbers::pi);
     EXPECT_LT(relErr(dynamics::massMatrix(model_, theta), numericMassMatrix(model_, theta)), 1e-9);
   }
 }
 
 TEST_P(LagrangianTest, CoriolisEqualsNumericLagrangian) {
   for (int trial = 0; trial < 50; ++trial) {
-    const VecD theta = randomVec(rng_, model_.nLinks(), -M_PI, M_PI);
+    const VecD theta = randomVec(rng_, model_.nLinks(), -std::numbers::pi, std::numbers::pi);
     const VecD dtheta = randomVec(rng_, model_.nLinks(), -5, 5);
     EXPECT_LT(
         relErr(dynamics::coriolis(model_, theta, dtheta), numericCoriolis(model_, theta, dtheta)),
@@ -48,7 +50,7 @@ TEST_P(LagrangianTest, CoriolisEqualsNumericLagrangian) {
 
 TEST_P(LagrangianTest, GravityEqualsNumericLagrangianAndCatchesPrintedSign) {
   for (int trial = 0; trial < 50; ++trial) {
-    const VecD theta = randomVec(rng_, model_.nLinks(), -M_PI, M_PI);
+    const VecD theta = randomVec(rng_, model_.nLinks(), -std::numbers::pi, std::numbers::pi);
     const VecD numeric = numericGravity(model_, theta);
     EXPECT_LT(relErr(dynamics::gravityVector(model_, theta), numeric), 1e-9);
     // Mu (2.8c) as printed, G_i = +g_i sin(theta_i), is the negative: the test must reject it.
@@ -65,7 +67,7 @@ TEST_P(LagrangianTest, GravityOnASlopeEqualsNumericLagrangianOfTheRotatedPotenti
   for (const double slope : {0.2, -0.3}) {
     const Model sloped = dynamics::withSlope(model_, slope);
     for (int trial = 0; trial < 20; ++trial) {
-      const VecD theta = randomVec(rng_, model_.nLinks(), -M_PI, M_PI);
+      const VecD theta = randomVec(rng_, model_.nLinks(), -std::numbers::pi, std::numbers::pi);
       const VecD numeric = numericGravity(sloped, theta);
       EXPECT_LT(relErr(dynamics::gravityVector(sloped, theta), numeric), 1e-9) << slope;
       // The level-ground G is not the answer: the slope must matter.
@@ -77,7 +79,7 @@ TEST_P(LagrangianTest, GravityOnASlopeEqualsNumericLagrangianOfTheRotatedPotenti
 TEST_P(LagrangianTest, CoriolisPowerIsHalfDdotPower) {
   // Ddot - 2C is skew (Mu 4.7), so dtheta^T Ddot dtheta = 2 dtheta^T H dtheta.
   for (int trial = 0; trial < 20; ++trial) {
-    const VecD theta = randomVec(rng_, model_.nLinks(), -M_PI, M_PI);
+    const VecD theta = randomVec(rng_, model_.nLinks(), -std::numbers::pi, std::numbers::pi);
     const VecD dtheta = randomVec(rng_, model_.nLinks(), -3, 3);
     const double h = 1e-6;
     const MatD ddot = (dynamics::massMatrix<double>(model_, theta + h * dtheta) -

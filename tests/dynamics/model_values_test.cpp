@@ -1,5 +1,7 @@
 // Numbers of the five-link model against the values worked out from Mu's Table 3.1
 // (notes/mu2004.md sec. 2.2 and sec. 9 fact 7, I_i = 0.033 kg m^2 for every link).
+#include <numbers>
+
 #include <gtest/gtest.h>
 
 #include "dynamics/kinematics.hpp"
@@ -8,7 +10,6 @@
 
 namespace gaitopt::test {
 namespace {
-
 
 TEST(ModelValues, InertiaAndGravityCoefficientsMatchTable31) {
   const auto model = loadNamed("mu2004_five_link");
@@ -50,7 +51,7 @@ TEST(ModelValues, UprightStandingIsAnUnstableEquilibrium) {
   // Mu sec. 9 fact 5: theta = (0, 0, 0, pi, pi) is an equilibrium; leaning forward falls forward.
   const auto model = loadNamed("mu2004_five_link");
   VecD theta(5);
-  theta << 0, 0, 0, M_PI, M_PI;
+  theta << 0, 0, 0, std::numbers::pi, std::numbers::pi;
   const VecD zero = VecD::Zero(5);
   EXPECT_LT(dynamics::gravityVector(model, theta).norm(), 1e-12);
   EXPECT_LT(dynamics::sspForwardDynamics(model, theta, zero, zero).norm(), 1e-12);

@@ -1,6 +1,8 @@
 // Mu's parameter uncertainty (ch. 4) as a plant variant: every coefficient of the dynamics scales
 // as its units say (p_ij ~ m l^2, g_i ~ m l g), the total mass by (1 + e_m), and nothing else
 // changes.
+#include <numbers>
+
 #include <gtest/gtest.h>
 
 #include "dynamics/model_variation.hpp"
@@ -61,7 +63,7 @@ TEST(ModelVariation, SlopeVariantRotatesGravityOnly) {
   // The other variants keep the slope.
   EXPECT_EQ(withFriction(sloped, 0.3).slope(), 0.1);
   EXPECT_EQ(perturbedModel(sloped, muUncertaintyCase(2)).slope(), 0.1);
-  EXPECT_THROW(withSlope(nominal, M_PI / 2), std::invalid_argument);
+  EXPECT_THROW(withSlope(nominal, std::numbers::pi / 2), std::invalid_argument);
   EXPECT_THROW(withSlope(nominal, NAN), std::invalid_argument);
 }
 

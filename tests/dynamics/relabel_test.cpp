@@ -1,4 +1,6 @@
 // Relabelling (Mu 2.38, corrected) and the joint-coordinate maps (2.41-2.44).
+#include <numbers>
+
 #include <gtest/gtest.h>
 
 #include "dynamics/energy.hpp"
@@ -57,7 +59,7 @@ TEST_P(RelabelTest, JointCoordinatesAreInverseAndPreserveVirtualWork) {
   const int n = model_.nLinks();
   const MatD m = dynamics::jointMap(n);
   for (int trial = 0; trial < 100; ++trial) {
-    const VecD theta = randomVec(rng_, n, -M_PI, M_PI);
+    const VecD theta = randomVec(rng_, n, -std::numbers::pi, std::numbers::pi);
     const VecD q = dynamics::toJoint(theta);
     EXPECT_LT((q - m * theta).norm(), 1e-15);
     EXPECT_LT((dynamics::toAbsolute(q) - theta).norm(), 1e-14);

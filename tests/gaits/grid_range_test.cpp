@@ -1,22 +1,21 @@
 // Ranges "a:b:n" and "a" as the command line writes them (gaits/grid_range.hpp).
 #include <cmath>
-#include <numbers>
 
 #include <gtest/gtest.h>
 
 #include "config/config_error.hpp"
+#include "dynamics/conventions.hpp"
 #include "gaits/grid_range.hpp"
 
 namespace gaitopt::gaits {
 namespace {
 
 TEST(GridRange, ARangeScaledToInternalUnits) {
-  const double deg = std::numbers::pi / 180;
-  const GridAxis a = parseRange("1:60:60", "--knee-bias", deg);
-  EXPECT_DOUBLE_EQ(a.first, deg);
-  EXPECT_DOUBLE_EQ(a.last, 60 * deg);
+  const GridAxis a = parseRange("1:60:60", "--knee-bias", kDeg);
+  EXPECT_DOUBLE_EQ(a.first, kDeg);
+  EXPECT_DOUBLE_EQ(a.last, 60 * kDeg);
   EXPECT_EQ(a.count, 60);
-  EXPECT_DOUBLE_EQ(a.value(14), 15 * deg);
+  EXPECT_DOUBLE_EQ(a.value(14), 15 * kDeg);
 }
 
 TEST(GridRange, OneValueIsARangeOfOne) {

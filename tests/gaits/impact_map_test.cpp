@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "gaits/impact_map.hpp"
@@ -130,7 +131,7 @@ TEST_F(ImpactMapTest, ShortStepDoubleRegionGrowsWithKneeBias) {
   // Region II (Fig. 5.5) and the Hurmuzlu agreement of sec. 5.3.3: for short steps double impact
   // is more likely with large sigma and large alpha. At S_L 0.1 m the alpha where double impact
   // begins falls as sigma grows, staying above 145 deg (region II: alpha > 150).
-  double previous = M_PI;
+  double previous = std::numbers::pi;
   for (double sigma : {15.0, 30.0, 45.0, 60.0}) {
     const auto map =
         gaits::sweepImpactMap(model_, grid(one(0.05), one(sigma), {90, 180 - 1e-9, 91}), 1);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "dynamics/kinematics.hpp"
@@ -128,7 +129,8 @@ TEST_F(ImpactPostureTest, TypeAndRatiosDoNotDependOnTheApproachSpeed) {
 TEST_F(ImpactPostureTest, RejectsSingularAndUnreachablePostures) {
   EXPECT_THROW(gaits::impactPosture(model_, {0.35, 0.0, 90 * kDeg, 1}), std::invalid_argument);
   EXPECT_THROW(gaits::impactPosture(model_, {0.35, 15 * kDeg, 0.0, 1}), std::invalid_argument);
-  EXPECT_THROW(gaits::impactPosture(model_, {0.35, 15 * kDeg, M_PI, 1}), std::invalid_argument);
+  EXPECT_THROW(gaits::impactPosture(model_, {0.35, 15 * kDeg, std::numbers::pi, 1}),
+               std::invalid_argument);
   EXPECT_THROW(gaits::impactPosture(model_, {0.35, 15 * kDeg, 90 * kDeg, 0}),
                std::invalid_argument);
   const double too_long = gaits::maxImpactStepLength(model_, 15 * kDeg);

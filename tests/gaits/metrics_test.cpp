@@ -1,6 +1,7 @@
 // Gait metrics on synthetic trajectories whose answers are known in closed form.
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -21,8 +22,6 @@ namespace {
 using gaits::Knot;
 using gaits::Phase;
 using gaits::Trajectory;
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 Knot restKnot(double t, Phase phase, int n = 5) {
   Knot k;
@@ -135,7 +134,9 @@ TEST(GaitMetrics, MaxFrictionRatioUsesOnlyTipsInContact) {
   knots.resize(7);
   EXPECT_DOUBLE_EQ(gaits::maxFrictionRatio(Trajectory("test", 0.35, knots)), 30.0 / 240);
   knots[3].force_stance.y() = 0;  // B touching without load: no finite friction suffices
-  EXPECT_EQ(gaits::maxFrictionRatio(Trajectory("test", 0.35, knots)), kInf);
+  // The ratio itself is infinite (IEEE), not a bound: ocp::kInf (1e20) would be a wrong answer.
+  EXPECT_EQ(gaits::maxFrictionRatio(Trajectory("test", 0.35, knots)),
+            std::numeric_limits<double>::infinity());
 }
 
 // --- ZMP -------------------------------------------------------------------------------------
@@ -182,7 +183,7 @@ class Touchdown : public ::testing::Test {
   /// Stance leg leaning forward, swing leg mirrored so that E is on the ground.
   VecD theta() const {
     VecD th(5);
-    th << 0.3, 0.3, 0.1, M_PI - 0.3, M_PI - 0.3;
+    th << 0.3, 0.3, 0.1, std::numbers::pi - 0.3, std::numbers::pi - 0.3;
     return th;
   }
   /// dtheta with the component that moves the swing tip removed: the null space of J (2.23c).

@@ -1,5 +1,7 @@
 // The polynomial gait of Mu (2004) ch. 3: boundary conditions (3.2-3.23), inverse kinematics
 // (3.24) against Table 4.1, continuity and periodicity, and zero touchdown velocity.
+#include <numbers>
+
 #include <gtest/gtest.h>
 
 #include "dynamics/kinematics.hpp"
@@ -77,8 +79,8 @@ TEST_F(PolynomialGaitTest, InverseKinematicsReproducesTable41) {
   const auto swing = gaits::legInverseKinematics(0.302, 0.332, tip, gaits::KneeDirection::kForward);
   EXPECT_NEAR(stance.theta(0) / kDeg, 1.18, 0.01);
   EXPECT_NEAR(stance.theta(1) / kDeg, -31.29, 0.01);
-  EXPECT_NEAR(dynamics::wrapAngle(swing.theta(0), M_PI) / kDeg, 190.19, 0.01);
-  EXPECT_NEAR(dynamics::wrapAngle(swing.theta(1), M_PI) / kDeg, 208.14, 0.01);
+  EXPECT_NEAR(dynamics::wrapAngle(swing.theta(0), std::numbers::pi) / kDeg, 190.19, 0.01);
+  EXPECT_NEAR(dynamics::wrapAngle(swing.theta(1), std::numbers::pi) / kDeg, 208.14, 0.01);
 }
 
 TEST_F(PolynomialGaitTest, RatesAndAccelerationsAreExactDerivativesOfTheAngles) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -54,7 +55,8 @@ std::string join(const std::vector<std::string>& parts, char sep) {
 /// the 17-digit round trip is really exercised: SSP on [0, 0.6], DSP on [0.6, 0.7].
 Trajectory syntheticStep(const dynamics::Model& model) {
   const Eigen::VectorXd posture =
-      (Eigen::VectorXd(5) << 0.2, 0.15, 0.05, M_PI - 0.25, M_PI - 0.3).finished();
+      (Eigen::VectorXd(5) << 0.2, 0.15, 0.05, std::numbers::pi - 0.25, std::numbers::pi - 0.3)
+          .finished();
   const Eigen::ArrayXd phase = Eigen::ArrayXd::LinSpaced(5, 0.0, 1.0);
   std::vector<Knot> knots;
   const auto add = [&](double t, Phase p) {

@@ -59,8 +59,7 @@ Nlp buildProblem(const PhaseLayout& layout) {
     nlp.addVariables("duration", 1, Eigen::VectorXd::Constant(1, 0.5),
                      Eigen::VectorXd::Constant(1, 2.0), Eigen::VectorXd::Constant(1, 1.0));
   const int n = layout.variables();
-  const double inf = 1e20;
-  Eigen::VectorXd lo = Eigen::VectorXd::Constant(n, -inf), hi = Eigen::VectorXd::Constant(n, inf);
+  Eigen::VectorXd lo = Eigen::VectorXd::Constant(n, -kInf), hi = Eigen::VectorXd::Constant(n, kInf);
   const int last = layout.points() - 1;
   auto fix = [&](int p, int i, double value) {  // boundary conditions as bounds (ifopt style)
     lo(layout.x(p, i) - layout.offset) = hi(layout.x(p, i) - layout.offset) = value;
@@ -70,9 +69,9 @@ Nlp buildProblem(const PhaseLayout& layout) {
   fix(last, 0, 1);
   fix(last, 1, 0);
   nlp.addVariables("points", n, lo, hi, Eigen::VectorXd::Zero(n));
-  nlp.addConstraint(std::make_unique<CollocationDefects>(layout));
-  nlp.addConstraint(
-      std::make_unique<PathConstraint>("dynamics", layout, std::make_shared<DoubleIntegrator>()));
+  nlp.addConstraint(std::make_unique<CollocationDefects>("defects", "move", layout));
+  nlp.addConstraint(std::make_unique<PathConstraint>("dynamics", "move", layout,
+                                                     std::make_shared<DoubleIntegrator>()));
   nlp.addCost(std::make_unique<QuadratureCost>("effort", layout, std::make_shared<Effort>()));
   return nlp;
 }

@@ -1,5 +1,6 @@
 // One contract over every constraint set and cost term of the shipped gait problems
-// (configs/ocp/*.yaml, on a coarse mesh: the sets are the same code whatever the segments):
+// (configs/ocp/*.yaml, on a coarse mesh: the sets are the same code whatever the segments, and
+// the five-link walk with an impactless touchdown, which no shipped config uses):
 // outputs fully written, derivatives against the set's own central differences, the same
 // sparsity at three random points (tests/support/set_contract.hpp). Each set is its own test,
 // named config_set, so a failure names the set. A last test shows that the contract catches one
@@ -10,6 +11,7 @@
 #include <map>
 #include <memory>
 #include <random>
+#include <set>
 
 #include <gtest/gtest.h>
 
@@ -30,22 +32,29 @@ struct Shipped {
 
 constexpr int kSegments = 3;  // per phase
 
+std::unique_ptr<Shipped> coarseProblem(OcpConfig config) {
+  for (auto& phase : config.phases) {
+    phase.segments = kSegments;
+    phase.mesh.clear();
+  }
+  const dynamics::Model model = problemModel(config);
+  auto s = std::make_unique<Shipped>(Shipped{config, model, {}});
+  s->problem = buildGaitProblem(s->model, s->config, initialGuess(s->model, s->config));
+  return s;
+}
+
 const std::map<std::string, std::unique_ptr<Shipped>>& shippedProblems() {
   static const auto problems = [] {
     std::map<std::string, std::unique_ptr<Shipped>> all;
     const std::filesystem::path dir = std::filesystem::path(GAITOPT_SOURCE_DIR) / "configs/ocp";
-    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-      if (entry.path().extension() != ".yaml") continue;
-      OcpConfig config = loadOcpConfig(entry.path().string());
-      for (auto& phase : config.phases) {
-        phase.segments = kSegments;
-        phase.mesh.clear();
-      }
-      const dynamics::Model model = problemModel(config);
-      auto s = std::make_unique<Shipped>(Shipped{config, model, {}});
-      s->problem = buildGaitProblem(s->model, s->config, initialGuess(s->model, s->config));
-      all.emplace(entry.path().stem().string(), std::move(s));
-    }
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+      if (entry.path().extension() == ".yaml")
+        all.emplace(entry.path().stem().string(),
+                    coarseProblem(loadOcpConfig(entry.path().string())));
+    // The touchdown at rest of Mu ch. 3 (touchdown_at_rest in place of the impact's sets).
+    OcpConfig impactless = loadOcpConfig((dir / "mu2004_walk.yaml").string());
+    impactless.impact = ImpactModel::kImpactless;
+    all.emplace("mu2004_walk_impactless", coarseProblem(impactless));
     return all;
   }();
   return problems;
@@ -117,12 +126,30 @@ INSTANTIATE_TEST_SUITE_P(ShippedProblems, SetContract, ::testing::ValuesIn(allSe
                            return info.param.config + "_" + info.param.name;
                          });
 
+/// Every set and cost term that gait_problem.cpp and touchdown.cpp can add, in each phase it
+/// can appear in, is among those the contract runs over.
+TEST(SetContractCoverage, EverySetOfTheGaitProblemIsChecked) {
+  std::set<std::string> checked;
+  for (const SetCase& c : allSets()) checked.insert(c.name);
+  for (const char* name :
+       {"ssp_defects",        "ssp_dynamics",       "ssp_knees",      "ssp_ground_contact",
+        "ssp_clearance",      "ssp_work_split",     "dsp_defects",    "dsp_dynamics",
+        "dsp_knees",          "dsp_ground_contact", "dsp_work_split", "touchdown_position",
+        "touchdown_at_rest",  "strike_downward",    "impact",         "impulse_cones",
+        "touchdown_to_dsp",   "periodicity",        "step_duration",  "ssp_torque_squared",
+        "dsp_torque_squared", "ssp_abs_work",       "dsp_abs_work"})
+    EXPECT_TRUE(checked.count(name)) << name << " is in no problem of the contract";
+}
+
 /// A set whose Jacobian has one entry off by `delta`: what a slip in a hand-written derivative
 /// looks like.
 class PerturbedJacobian : public ConstraintSet {
  public:
   PerturbedJacobian(const ConstraintSet& set, size_t entry, double delta)
-      : ConstraintSet(set.name(), set.rows()), set_(&set), entry_(entry), delta_(delta) {}
+      : ConstraintSet(set.name(), set.rows(), set.phase()),
+        set_(&set),
+        entry_(entry),
+        delta_(delta) {}
   Eigen::VectorXd lowerBounds() const override { return set_->lowerBounds(); }
   Eigen::VectorXd upperBounds() const override { return set_->upperBounds(); }
   void values(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> g) const override {

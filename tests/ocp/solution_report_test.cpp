@@ -117,8 +117,8 @@ TEST_F(FailedResult, IsMarkedAndNamesItsWorstViolation) {
   EXPECT_EQ(summary.at("converged"), false);
   EXPECT_EQ(summary.at("config"), "cfg.yaml");
   const auto& worst = summary.at("worst_violation");
-  const LocatedViolation expected = worstConstraint(r.solution.problem, r.solution.result.x);
-  EXPECT_EQ(worst.at("constraint"), expected.violation.name);
+  const Violation expected = r.solution.problem.nlp.worstConstraint(r.solution.result.x);
+  EXPECT_EQ(worst.at("constraint"), expected.name);
   EXPECT_GT(worst.at("violation").get<double>(), 0);
   EXPECT_TRUE(std::filesystem::exists(failed + "/trajectory.csv"));
 }

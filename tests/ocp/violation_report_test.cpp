@@ -4,7 +4,6 @@
 
 #include "dynamics/robot_config.hpp"
 #include "ocp/gait_problem.hpp"
-#include "ocp/gait_solve.hpp"
 #include "ocp/initial_guess.hpp"
 
 namespace gaitopt::ocp {
@@ -39,14 +38,15 @@ TEST_F(RabbitViolations, AVariableBeyondItsBoundIsNamedByBlockPointAndElement) {
   const int point = 5, element = 2;  // theta3 (torso) at point 5
   const int i = l.pointOffset(point) + element;
   x(i) = problem_->nlp.upperBounds()(i) + 1e4;  // beyond any violation of the guess
-  const LocatedViolation v = worstBound(*problem_, x);
-  EXPECT_EQ(v.violation.name, "ssp_points");
-  EXPECT_EQ(v.violation.phase, "ssp");
-  EXPECT_EQ(v.node_kind, "point");
-  EXPECT_EQ(v.node, point);
-  EXPECT_EQ(v.part, "element");
-  EXPECT_EQ(v.index, element);
-  EXPECT_NEAR(v.violation.amount, 1e4, 1e-9);
+  const Violation v = problem_->nlp.worstBound(x);
+  EXPECT_EQ(v.name, "ssp_points");
+  EXPECT_EQ(v.phase, "ssp");
+  EXPECT_STREQ(v.node.kind, "point");
+  EXPECT_EQ(v.node.index, point);
+  EXPECT_STREQ(v.part, "element");
+  EXPECT_EQ(v.node.entry, element);
+  EXPECT_EQ(v.index, point * l.pointSize() + element);
+  EXPECT_NEAR(v.amount, 1e4, 1e-9);
   EXPECT_EQ(describe(v).rfind("ssp_points (ssp, point 5, element 2): ", 0), 0u) << describe(v);
 }
 
@@ -56,14 +56,14 @@ TEST_F(RabbitViolations, AConstraintRowIsNamedBySetPhaseNodeAndRow) {
   // A huge stance-shank acceleration at point 6 breaks the dynamics there (D a, D ~ 1 kg m^2)
   // far more than the defects of the segments around it (h T a / 6 ~ 0.03 a).
   x(l.xdot(6, l.nq)) += 1e6;
-  const LocatedViolation v = worstConstraint(*problem_, x);
-  EXPECT_EQ(v.violation.name, "ssp_dynamics");
-  EXPECT_EQ(v.violation.phase, "ssp");
-  EXPECT_EQ(v.node_kind, "point");
-  EXPECT_EQ(v.node, 6);
-  EXPECT_EQ(v.part, "row");
-  EXPECT_EQ(v.violation.index, 6 * model_->nLinks() + v.index);  // n dynamics rows per point
-  EXPECT_GT(v.violation.amount, 1e5);
+  const Violation v = problem_->nlp.worstConstraint(x);
+  EXPECT_EQ(v.name, "ssp_dynamics");
+  EXPECT_EQ(v.phase, "ssp");
+  EXPECT_STREQ(v.node.kind, "point");
+  EXPECT_EQ(v.node.index, 6);
+  EXPECT_STREQ(v.part, "row");
+  EXPECT_EQ(v.index, 6 * model_->nLinks() + v.node.entry);  // n dynamics rows per point
+  EXPECT_GT(v.amount, 1e5);
 }
 
 TEST_F(RabbitViolations, ADefectIsNamedBySegment) {
@@ -73,11 +73,29 @@ TEST_F(RabbitViolations, ADefectIsNamedBySegment) {
   // Hermite defect of that segment by as much; the dynamics see it through sines and cosines
   // only.
   x(l.x(5, 0)) += 1e3;
-  const LocatedViolation v = worstConstraint(*problem_, x);
-  EXPECT_EQ(v.violation.name, "ssp_defects");
-  EXPECT_EQ(v.node_kind, "segment");
-  EXPECT_EQ(v.node, 2);
-  EXPECT_EQ(v.index, l.nx);  // the Hermite row of theta1: after the nx Simpson rows
+  const Violation v = problem_->nlp.worstConstraint(x);
+  EXPECT_EQ(v.name, "ssp_defects");
+  EXPECT_EQ(v.phase, "ssp");
+  EXPECT_STREQ(v.node.kind, "segment");
+  EXPECT_EQ(v.node.index, 2);
+  EXPECT_EQ(v.node.entry, l.nx);  // the Hermite row of theta1: after the nx Simpson rows
+}
+
+TEST_F(RabbitViolations, AnImpactVariableIsNamedByItsElementOffTheGrid) {
+  ASSERT_TRUE(problem_->touchdown.impact().has_value());  // RABBIT: a rigid single impact
+  const ImpactLayout& impact = *problem_->touchdown.impact();
+  Eigen::VectorXd x = problem_->nlp.initialGuess();
+  // trailing_lifts: the old stance tip's vertical velocity after the strike is >= 0.
+  const int i = impact.inDecision(impact.base_velocity)[1];
+  x(i) = -1e4;
+  const Violation v = problem_->nlp.worstBound(x);
+  EXPECT_EQ(v.name, "impact");
+  EXPECT_EQ(v.phase, kLinkPhase);
+  EXPECT_STREQ(v.node.kind, "");
+  EXPECT_EQ(v.node.index, -1);
+  EXPECT_EQ(v.index, impact.base_velocity[1]);
+  EXPECT_NEAR(v.amount, 1e4, 1e-9);
+  EXPECT_EQ(describe(v).rfind("impact (link, element 1): ", 0), 0u) << describe(v);
 }
 
 }  // namespace

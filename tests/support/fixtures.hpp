@@ -1,5 +1,6 @@
 #pragma once
 /// Shared test helpers: robot files, reproducible random states.
+#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
@@ -35,7 +36,8 @@ inline VecD randomVec(std::mt19937& rng, int n, double lo, double hi) {
 /// A random walking-like posture: stance leg and torso near upright, swing leg near pi.
 inline VecD randomPosture(std::mt19937& rng, const dynamics::Model& model) {
   VecD theta = randomVec(rng, model.nLinks(), -0.6, 0.6);
-  for (int i = model.nLinks() - model.legLinks(); i < model.nLinks(); ++i) theta(i) += 3.14159;
+  for (int i = model.nLinks() - model.legLinks(); i < model.nLinks(); ++i)
+    theta(i) += std::numbers::pi;
   return theta;
 }
 
