@@ -9,14 +9,14 @@ Usage: scripts/plots/fidelity_plots.py RESULT_DIR   (reads DIR/fidelity.csv, wri
 import os
 
 import matplotlib
+import plot_style as style
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+plt = style.pyplot()
 import numpy as np  # noqa: E402
 
 import plot_io  # noqa: E402
 
-DPI = 110
+DPI = style.DPI
 NAMES = ["speed", "robot", "cot", "peak", "time"]
 QUANTITIES = [("cot", "cost of transport"), ("peak", "peak joint torque [N m]"),
               ("time", "solve time [s]")]

@@ -12,14 +12,14 @@ import os
 import sys
 
 import matplotlib
+import plot_style as style
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+plt = style.pyplot()
 import numpy as np  # noqa: E402
 
 import plot_io  # noqa: E402
 
-DPI = 110
+DPI = style.DPI
 NAMES = ["ground", "variant", "time_step", "steps", "failure", "hip_deviation_m", "timing_s",
          "wall_s"]
 STRINGS = ("ground", "variant", "failure")

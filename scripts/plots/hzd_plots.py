@@ -11,9 +11,9 @@ printing its path:
 A missing file, column or key, or a malformed value, ends the script with exit code 1.
 """
 import matplotlib
+import plot_style as style
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+plt = style.pyplot()
 import numpy as np  # noqa: E402
 
 import plot_io  # noqa: E402

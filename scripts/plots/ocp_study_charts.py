@@ -16,14 +16,14 @@ import os
 import sys
 
 import matplotlib
+import plot_style as style
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+plt = style.pyplot()
 import numpy as np  # noqa: E402
 
 import plot_io  # noqa: E402
 
-DPI = 110
+DPI = style.DPI
 # Points of the finest meshes the convergence order is fitted over (the asymptotic part).
 FIT_POINTS = 4
 # Theoretical orders (Betts 2010, sec. 4.5; Kelly 2017, sec. 4): global error at the end of the

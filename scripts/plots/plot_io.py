@@ -122,6 +122,54 @@ def check_increasing(path, name, values):
 
 
 # ---------------------------------------------------------------------------------------------
+# trajectory.csv (DESIGN.md sec. 5)
+
+
+class Trajectory:
+    """One step of a gait result folder's trajectory.csv.
+
+    col: column name -> float array for every column but 'phase'; phase: str array (SSP rows,
+    then DSP rows); n: links (theta1..thetaN); n_tau: joint torques (tau0..); t; dsp: bool array
+    of the DSP rows; t_touchdown: the first DSP time (the last time without DSP rows)."""
+
+    def __init__(self, path, col, phase, n, n_tau):
+        self.path, self.col, self.phase, self.n, self.n_tau = path, col, phase, n, n_tau
+        self.t = col["t"]
+        self.dsp = phase == "DSP"
+        self.t_touchdown = self.t[self.dsp][0] if self.dsp.any() else self.t[-1]
+
+    def stack(self, prefix, first, count):
+        """Columns prefix<first> .. prefix<first+count-1> side by side (rows x count)."""
+        return np.column_stack([self.col[f"{prefix}{i}"] for i in range(first, first + count)])
+
+
+def read_trajectory(path, need=()):
+    """The one reader of trajectory.csv: a Trajectory of every column in the file.
+
+    Requires t, phase, theta1..thetaN (N >= 2, the contiguous run from theta1) and the columns
+    in `need`; every row must have the header's number of fields (a torn row is an error naming
+    its line), every value but the phase a finite number, phase SSP rows then DSP rows, and t
+    non-decreasing."""
+    header, rows = read_rows(path, "trajectory", min_rows=2)
+    require_columns(path, header, ["t", "phase", "theta1"])
+    thetas = numbered_names(header, "theta", 1)
+    if len(thetas) < 2:
+        raise InputError(f"{path}: missing column 'theta2' (a biped has at least two links)")
+    require_columns(path, header, list(need))
+    names = list(dict.fromkeys(name for name in header if name))
+    col = columns(path, header, rows, names, strings={"phase"})
+    phase = col.pop("phase")
+    check_phases(path, phase)
+    check_increasing(path, "t", col["t"])
+    return Trajectory(path, col, phase, len(thetas), len(numbered_names(header, "tau", 0)))
+
+
+def wrap(angle):
+    """Angle wrapped to (-pi, pi]."""
+    return -((-angle + np.pi) % (2 * np.pi) - np.pi)
+
+
+# ---------------------------------------------------------------------------------------------
 # summary.json
 
 
@@ -174,7 +222,9 @@ def require_type(path, s, key, kind, label, prefix=""):
 def panel_figure(draw, data, title, figsize, fontsize=9):
     """A figure of one panel, drawn by draw(ax, data) under `title`. pyplot is imported here,
     after the calling script has chosen its backend."""
-    import matplotlib.pyplot as plt
+    import plot_style
+
+    plt = plot_style.pyplot()
 
     fig, ax = plt.subplots(figsize=figsize)
     draw(ax, data)

@@ -15,15 +15,15 @@ import math
 import os
 
 import matplotlib
+import plot_style as style
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+plt = style.pyplot()
 import numpy as np  # noqa: E402
 
 import plot_io  # noqa: E402
 from plot_io import InputError  # noqa: E402
 
-DPI = 110
+DPI = style.DPI
 WALK_COLOUR = "tab:green"
 FALL_COLOUR = "tab:red"
 MULTIPLIER_COLOUR = "tab:purple"
