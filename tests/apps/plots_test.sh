@@ -151,6 +151,25 @@ plot stability_plots.py "$TMP/stab"
 [[ "$(cat "$TMP/out")" == "$TMP/stab/stability.png" && -s "$TMP/stab/stability.png" ]] ||
   fail "(c) output: $(cat "$TMP/out")"
 
+# (c2) the words and axes of a sweep: a geometric sweep (0.1, 0.3, 0.9) on a log axis, a linear
+# one not; no walking interval around the nominal value reads "falls at the nominal ..." when
+# other values walked and "falls at every tested value" when none did; the title names the gait.
+cp -r "$TMP/stab" "$TMP/stab2"
+edit "$TMP/stab2/sweep_friction.csv" "text = text.replace('\n0.2,', '\n0.1,').replace('\n0.4,', '\n0.3,').replace('\n0.6,', '\n0.9,')"
+edit "$TMP/stab2/summary.json" "import json; d = json.loads(text); d['reference'] = 'results/gait_x'; d['sweeps']['push'].update(walks_from=None, walks_to=None); d['sweeps']['friction'].update(walks_from=None, walks_to=None, nominal=0.1); text = json.dumps(d)"
+edit "$TMP/stab2/sweep_push.csv" "text = text.replace('0,10,10,0,,', '0,2,10,1,fell,')"
+(cd "$PLOTS" && "$PY" - "$TMP/stab2" <<'PY') || fail "(c2) sweep words and axes"
+import sys
+import stability_plots as sp
+s, (friction, push) = sp.read_sweeps(sys.argv[1])
+assert friction.log_spaced() and not push.log_spaced()
+assert friction.interval_text() == "falls at the nominal 0.1; walks at 2 of 3 values (0.3 .. 0.9)", friction.interval_text()
+assert push.interval_text() == "falls at every tested value (3 values)", push.interval_text()
+assert sp.headline(s).startswith("Stability sweeps: gait gait_x, computed_torque controller"), sp.headline(s)
+PY
+plot stability_plots.py "$TMP/stab2"
+[[ $RC -eq 0 ]] || fail "(c2) stability_plots.py exited $RC: $(cat "$TMP/err")"
+
 # (d) broken walk folders.
 make_walk "$TMP/good_walk" 2 0
 W="$TMP/w"
