@@ -93,6 +93,7 @@ echo "  poly_vs_opt_mu2004.md, poly_vs_cot_mu2004.md  the comparison tables abov
 echo "  library_*/              gait libraries: index.csv, index.json, library.png, points/"
 echo "  compare_poly_opt_mu2004/  comparison.md and overlaid angles, torques, forces, ZMP"
 echo "  walk_*/                 closed-loop walks: summary.json, steps.csv, walk_overview.png"
+echo "  poincare_multipliers.png  the walks' Poincare multipliers on the unit circle"
 echo "  stability_*/            sweeps: sweep_*.csv, summary.json, stability.png"
 echo "  ground_bench.md, ground_speed_accuracy.png  speed against accuracy of the grounds"
 echo "  */report.html           one self-contained page per result; walk_*/walk.gif"

@@ -215,6 +215,18 @@ def require_type(path, s, key, kind, label, prefix=""):
         raise InputError(f"{path}: key '{prefix}{key}': expected {label}, got {s[key]!r}")
 
 
+def read_multipliers(path, value):
+    """poincare_multipliers as a complex array, or None when null."""
+    if value is None:
+        return None
+    if not (isinstance(value, list) and all(isinstance(z, list) and len(z) == 2
+                                            and all(is_number(v) for v in z)
+                                            for z in value)):
+        raise InputError(f"{path}: key 'poincare_multipliers': expected a list of [re, im] "
+                         f"pairs or null")
+    return np.array([complex(re_, im) for re_, im in value], dtype=complex)
+
+
 # ---------------------------------------------------------------------------------------------
 # Figures
 

@@ -27,6 +27,7 @@ import plot_style as style
 plt = style.pyplot()
 import numpy as np  # noqa: E402
 
+import multipliers_plot  # noqa: E402
 import plot_io  # noqa: E402
 from plot_io import InputError  # noqa: E402
 
@@ -120,18 +121,6 @@ def read_stick(path, n):
     return frames
 
 
-def read_multipliers(path, value):
-    """poincare_multipliers as a complex array, or None when null."""
-    if value is None:
-        return None
-    if not (isinstance(value, list) and all(isinstance(z, list) and len(z) == 2
-                                            and all(plot_io.is_number(v) for v in z)
-                                            for z in value)):
-        raise InputError(f"{path}: key 'poincare_multipliers': expected a list of [re, im] "
-                         f"pairs or null")
-    return np.array([complex(re_, im) for re_, im in value], dtype=complex)
-
-
 def read_summary(path):
     s = plot_io.read_json(path, "summary")
     plot_io.require_keys(path, s, SUMMARY_STRINGS[:4] + [
@@ -144,7 +133,7 @@ def read_summary(path):
     plot_io.require_type(path, s, "fell", bool, "true or false")
     if "friction" in s:
         plot_io.require_numbers(path, s, ["friction"])
-    s["multipliers"] = read_multipliers(path, s["poincare_multipliers"])
+    s["multipliers"] = plot_io.read_multipliers(path, s["poincare_multipliers"])
     return s
 
 
@@ -389,25 +378,15 @@ def draw_friction(ax, w):
 
 def draw_poincare(ax, w):
     """Multipliers of the step-to-step (Poincare) map in the complex plane with the unit
-    circle: all inside means the cycle is locally stable."""
+    circle (multipliers_plot.draw_unit_circle): all inside means the cycle is locally stable."""
     z = w.s["multipliers"]
-    circle = np.linspace(0, 2 * math.pi, 361)
-    ax.plot(np.cos(circle), np.sin(circle), color="0.4", lw=1, label="unit circle")
-    inside = np.abs(z) < 1
-    for pick, colour, label in ((inside, "tab:green", "|λ| < 1"),
-                                (~inside, "tab:red", "|λ| ≥ 1")):
-        if pick.any():
-            ax.plot(z.real[pick], z.imag[pick], "o", color=colour, ms=7, label=label)
-    ax.axhline(0, color="0.7", lw=0.8)
-    ax.axvline(0, color="0.7", lw=0.8)
-    r = 1.15 * max(1.0, np.max(np.abs(z), initial=0))
-    ax.set_xlim(-r, r)
-    ax.set_ylim(-r, r)
-    ax.set_aspect("equal")
+    multipliers_plot.draw_unit_circle(ax, [(f"multipliers ({len(z)})", z, style.MULTIPLIER,
+                                            "o")])
     largest = w.s["poincare_max_multiplier"]
     verdict = "" if largest is None else (f": largest |λ| = {largest:.4g} "
                                           f"({'stable' if largest < 1 else 'unstable'})")
-    finish(ax, "Re λ", "Im λ", f"Poincaré multipliers ({len(z)}){verdict}", loc="upper left")
+    ax.set_title(f"Poincaré multipliers ({len(z)}){verdict}")
+    ax.legend(loc="upper left")
 
 
 # ---------------------------------------------------------------------------------------------

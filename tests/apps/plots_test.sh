@@ -345,4 +345,26 @@ make_gait "$G"
 edit "$G/trajectory.csv" "h, rest = text.split('\n', 1); text = h.replace('tau2', 'x_tau2', 1) + '\n' + rest"
 expect_error "(h) no tau2" gait_plots.py "$G" "$G/trajectory.csv: missing column 'tau2'"
 
+# (i) multipliers_plot.py: the walks with multipliers on the unit circle, a walk that fell named
+# as having none; a malformed multiplier list is an error naming the file and key.
+plot_multipliers() {
+  "$PY" "$PLOTS/multipliers_plot.py" "$@" >"$TMP/out" 2>"$TMP/err"
+  RC=$?
+}
+plot_multipliers "$TMP/mult.png" "$TMP/walk" "$TMP/fell"
+[[ $RC -eq 0 && -s "$TMP/mult.png" ]] && grep -qx "$TMP/mult.png" "$TMP/out" ||
+  fail "(i) multipliers_plot.py exited $RC: $(cat "$TMP/err")"
+(cd "$PLOTS" && "$PY" - "$TMP/walk" "$TMP/fell" <<'PY') || fail "(i) walks read"
+import sys
+import multipliers_plot as mp
+(label, z, _), (_, none, outcome) = mp.read_walk(sys.argv[1]), mp.read_walk(sys.argv[2])
+assert label == "ref, computed_torque, rigid ground" and len(z) == 3 and abs(abs(z).max() - 0.5) < 1e-12
+assert none is None and outcome.startswith("fell: fell: hip below"), outcome
+PY
+cp -r "$TMP/walk" "$TMP/badmult"
+edit "$TMP/badmult/summary.json" "import json; d = json.loads(text); d['poincare_multipliers'] = [[1]]; text = json.dumps(d)"
+plot_multipliers "$TMP/m2.png" "$TMP/badmult"
+[[ $RC -eq 1 ]] && grep -q "^error: $TMP/badmult/summary.json: key 'poincare_multipliers'" "$TMP/err" ||
+  fail "(i) bad multipliers: $RC $(cat "$TMP/err")"
+
 echo "plots_test: all checks passed"
