@@ -353,7 +353,7 @@ def draw_torques(ax, g, legend=True):
     total = g.s.get("torque_squared")
     cost = f", ∫Στ² dt = {total:.4g} N²m²s" if plot_io.is_number(total) else ""
     finish(ax, "time [s]", "joint torque [N m]", f"Joint torques (dots: peak |τ|){cost}",
-           legend=legend, ncol=2, loc="best")
+           legend=legend, ncol=3, loc="best", fontsize=7)
 
 
 def draw_clearance(ax, g):
@@ -384,12 +384,13 @@ def draw_zmp_foot(ax, g):
     support, the worst point is marked with its distance."""
     zmp = g.col["zmp_x"]
     back, front = g.support()
-    what = ("foot" if g.foot is not None and any(g.foot) else "tip (point foot)")
+    has_foot = g.foot is not None and any(g.foot)
+    what = "foot" if has_foot else "tip (point foot)"
     ax.fill_between(g.t, back, front, **style.SUPPORT_SHADE,
                     label=f"support: B's {what}; DSP: B to E")
-    ax.plot(g.t, back, color="0.35", lw=1.1, label="heel of B" if g.foot else "tip B")
+    ax.plot(g.t, back, color="0.35", lw=1.1, label="heel of B" if has_foot else "tip B")
     ax.plot(g.t, front, color="0.35", lw=1.1, ls="--",
-            label="toe of B, then of E" if g.foot else "front tip")
+            label="toe of B, then of E" if has_foot else "tip B, then tip E")
     ax.plot(g.t, zmp, color=style.ZMP, lw=1.9, label="ZMP (CoP) x")
     margin = g.zmp_margin()
     k = int(np.argmin(margin))
@@ -398,6 +399,9 @@ def draw_zmp_foot(ax, g):
         text = (f"ZMP leaves the {what} by {-margin[k]:.3f} m\n"
                 f"(past the {edge}, t = {g.t[k]:.3f} s)")
         colour = style.FAIL
+    elif np.ptp(back) == 0 and np.all(front - back < 1e-12) and np.all(np.abs(margin) < 1e-9):
+        text = "ZMP on the point foot all step (no ankle torque)"
+        colour = "0.3"
     else:
         text = f"closest to an edge: {1000 * margin[k]:.0f} mm"
         colour = "0.3"
@@ -408,13 +412,14 @@ def draw_zmp_foot(ax, g):
     mark_phases(ax, g, steps=1)
     ax.set_xlim(g.t[0], g.t[-1])
     lo, hi = min(np.min(zmp), np.min(back)), max(np.max(zmp), np.max(front))
-    ax.set_ylim(lo - 0.15 * (hi - lo), hi + 0.45 * (hi - lo))
+    span = max(hi - lo, 0.1)
+    ax.set_ylim(lo - 0.15 * span, hi + 0.45 * span)
     foot = ("" if g.foot is None else
             f"heel {g.foot[0]:g} m, toe {g.foot[1]:g} m ({g.foot_source})")
     finish(ax, "time [s]", "x (from B) [m]",
            f"ZMP against the support, both phases; min margin (summary) "
            f"{g.s['min_zmp_margin']:.3f} m\n{foot or g.foot_source}",
-           loc="upper left", ncol=3)
+           loc="upper left", ncol=2)
 
 
 def stick_frames(g):
@@ -534,7 +539,7 @@ def overview_figure(g):
     draw_zmp_foot(axes[3, 0], g)
     draw_stick(axes[3, 1], g)
     fig.suptitle(headline(g))
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0, 1, 0.985))
     return fig
 
 
