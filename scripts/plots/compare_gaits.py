@@ -330,7 +330,7 @@ def title(fig, what, gaits):
 def save(fig, gaits, path, bottom):
     style_legend(fig, gaits)
     fig.tight_layout(rect=(0, bottom, 1, 1))
-    fig.savefig(path, dpi=style.DPI)
+    style.save(fig, path)
     print(path)
 
 
@@ -400,7 +400,6 @@ def report(a_dir, b_dir, out_dir):
     for name, make in PICTURES:
         fig, bottom = make(plt, gaits)
         save(fig, gaits, os.path.join(out_dir, name), bottom)
-        plt.close(fig)
 
 
 def is_folder_target(arg):

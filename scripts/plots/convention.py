@@ -56,7 +56,7 @@ def main(src: str, out: str) -> None:
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
     fig.tight_layout()
-    fig.savefig(out, dpi=style.DPI)
+    style.save(fig, out)
 
 
 if __name__ == "__main__":

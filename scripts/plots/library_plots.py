@@ -28,7 +28,6 @@ from plot_io import InputError
 # second to import, and bad input should fail fast.
 plt = Rectangle = blended_transform_factory = None
 
-DPI = plot_style.DPI
 EXIT_BAD_INPUT = 2
 FAIL_COLOUR = plot_style.FAIL
 AXES = ("speed", "step_length", "slope")
@@ -285,8 +284,7 @@ def main(library_dir):
     load_matplotlib()
     fig = library_figure(d, axes, points)
     path = os.path.join(library_dir, "library.png")
-    fig.savefig(path, dpi=DPI)
-    plt.close(fig)
+    plot_style.save(fig, path)
     print(path)
 
 

@@ -85,8 +85,23 @@ def finish(ax, xlabel, ylabel, title=None, legend=True, **legend_kw):
 
 
 def save(fig, path, dpi=DPI):
-    """Writes the figure and closes it."""
+    """Writes the figure and closes it; a PNG is then stored with a 256-colour palette (a
+    third of the bytes of matplotlib's RGBA for line charts, no visible change), when Pillow
+    is there."""
     import matplotlib.pyplot as plt
 
     fig.savefig(path, dpi=dpi)
     plt.close(fig)
+    if str(path).endswith(".png"):
+        shrink_png(path)
+
+
+def shrink_png(path):
+    """Rewrites a PNG with an adaptive 256-colour palette; leaves it alone without Pillow."""
+    try:
+        from PIL import Image
+    except ImportError:
+        return
+    with Image.open(path) as im:
+        rgb = im.convert("RGB")
+    rgb.quantize(colors=256).save(path, optimize=True)

@@ -31,7 +31,6 @@ import multipliers_plot  # noqa: E402
 import plot_io  # noqa: E402
 from plot_io import InputError  # noqa: E402
 
-DPI = style.DPI
 PHASES = ("SSP", "DSP")
 IMPACTS = ("double", "single", "compliant", "lcp", "")
 WALK_TAIL = ["fb_x", "fb_y", "fe_x", "fe_y", "hip_x", "hip_y"]
@@ -475,8 +474,7 @@ def main(result_dir):
     for name, make in pictures(w):
         fig = make(w)
         path = os.path.join(result_dir, name)
-        fig.savefig(path, dpi=DPI)
-        plt.close(fig)
+        style.save(fig, path)
         print(path)
 
 
