@@ -295,9 +295,9 @@ def draw_walk_stick(ax, w, colorbar=True):
         ax.figure.colorbar(matplotlib.cm.ScalarMappable(norm, cmap), ax=ax, label="time [s]",
                            shrink=0.8, pad=0.01)
     finish(ax, "x (world) [m]", "y [m]",
-           f"Stick diagram of the walk, {len(frames)} of {len(w.frames)} frames (up to "
-           f"{frames_per_phase(w)[0]} per single and {frames_per_phase(w)[1]} per double "
-           f"support)", loc="upper left", ncol=4)
+           f"Stick diagram, {len(frames)} of {len(w.frames)} frames (≤ {frames_per_phase(w)[0]} "
+           f"per SSP, {frames_per_phase(w)[1]} per DSP)", loc="upper center",
+           bbox_to_anchor=(0.5, -0.12), ncol=4)
 
 
 def draw_tracking(ax, w, legend=True):
