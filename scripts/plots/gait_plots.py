@@ -108,12 +108,10 @@ class Gait:
 
     def __init__(self, result_dir):
         csv_path = os.path.join(result_dir, "trajectory.csv")
-        header_n = plot_io.read_rows(csv_path, "trajectory", min_rows=2)[0]
-        n = len(plot_io.numbered_names(header_n, "theta", 1))
-        need = ([f"dtheta{i}" for i in range(1, n + 1)] + [f"tau{j}" for j in range(n)]
-                + TAIL_COLUMNS)
-        self.traj = plot_io.read_trajectory(csv_path, need)
+        self.traj = plot_io.read_trajectory(csv_path, TAIL_COLUMNS)
         self.col, self.phase, self.n = self.traj.col, self.traj.phase, self.traj.n
+        self.traj.require([f"dtheta{i}" for i in range(1, self.n + 1)]
+                          + [f"tau{j}" for j in range(self.n)])
         self.s = read_summary(os.path.join(result_dir, "summary.json"), self.n)
         self.t = self.traj.t
         self.theta = self.traj.stack("theta", 1, self.n)
@@ -563,7 +561,7 @@ def main(result_dir):
         print(f"note: ZMP drawn against point tips: {g.foot_source}", file=sys.stderr)
     for name, make in pictures(g):
         path = os.path.join(result_dir, name)
-        style.save(make(g), path, dpi=90 if name == "overview.png" else style.DPI)
+        style.save(make(g), path, dpi=style.PAGE_DPI if name == "overview.png" else style.DPI)
         print(path)
 
 

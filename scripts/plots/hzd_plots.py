@@ -70,7 +70,7 @@ def main(result_dir):
     fig.suptitle(f"{s['robot']} under HZD: {s['steps_completed']} steps", fontsize=10)
     fig.tight_layout()
     out = f"{result_dir}/hzd.png"
-    style.save(fig, out, dpi=90)
+    style.save(fig, out, dpi=style.PAGE_DPI)
     print(out)
 
 

@@ -132,11 +132,16 @@ class Trajectory:
     then DSP rows); n: links (theta1..thetaN); n_tau: joint torques (tau0..); t; dsp: bool array
     of the DSP rows; t_touchdown: the first DSP time (the last time without DSP rows)."""
 
-    def __init__(self, path, col, phase, n, n_tau):
-        self.path, self.col, self.phase, self.n, self.n_tau = path, col, phase, n, n_tau
+    def __init__(self, path, header, col, phase, n, n_tau):
+        self.path, self.header, self.col, self.phase = path, header, col, phase
+        self.n, self.n_tau = n, n_tau
         self.t = col["t"]
         self.dsp = phase == "DSP"
         self.t_touchdown = self.t[self.dsp][0] if self.dsp.any() else self.t[-1]
+
+    def require(self, names):
+        """Raises for the first of `names` missing from the file (columns that depend on n)."""
+        require_columns(self.path, self.header, names)
 
     def stack(self, prefix, first, count):
         """Columns prefix<first> .. prefix<first+count-1> side by side (rows x count)."""
@@ -161,7 +166,8 @@ def read_trajectory(path, need=()):
     phase = col.pop("phase")
     check_phases(path, phase)
     check_increasing(path, "t", col["t"])
-    return Trajectory(path, col, phase, len(thetas), len(numbered_names(header, "tau", 0)))
+    return Trajectory(path, header, col, phase, len(thetas),
+                      len(numbered_names(header, "tau", 0)))
 
 
 def wrap(angle):

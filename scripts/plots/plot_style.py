@@ -6,6 +6,8 @@ same in every picture. save(fig, path) writes at DPI and closes the figure.
 """
 
 DPI = 110
+# Many-panel pages (a gait overview, the HZD pair) are drawn large and stored coarser.
+PAGE_DPI = 90
 # Font sizes and resolution for every figure (matplotlib rcParams).
 RC = {
     "font.size": 10,
