@@ -344,6 +344,38 @@ expect_error "(h) torn row" gait_plots.py "$G" "$G/trajectory.csv:5: 42 fields, 
 make_gait "$G"
 edit "$G/trajectory.csv" "h, rest = text.split('\n', 1); text = h.replace('tau2', 'x_tau2', 1) + '\n' + rest"
 expect_error "(h) no tau2" gait_plots.py "$G" "$G/trajectory.csv: missing column 'tau2'"
+make_gait "$G"
+edit "$G/trajectory.csv" "lines = text.split('\n'); lines[6] = '0.001' + lines[6][lines[6].index(','):]; text = '\n'.join(lines)"
+expect_error "(h) time backwards" gait_plots.py "$G" "$G/trajectory.csv:7: column 't': time goes backwards"
+make_gait "$G"
+edit "$G/trajectory.csv" "lines = text.split('\n'); lines[3] = lines[3].replace('SSP', 'DSP'); text = '\n'.join(lines)"
+expect_error "(h) DSP before SSP" gait_plots.py "$G" "$G/trajectory.csv: column 'phase': expected SSP rows followed by DSP rows"
+
+# (j) ground_chart.py: a failed walk with a path value is drawn at its own wall time (no note);
+# one without an end time is named in the note of the timing panel; the table is printed.
+mkdir -p "$TMP/ground"
+cat >"$TMP/ground/bench.csv" <<'CSV'
+ground,variant,time_step,steps,failure,hip_deviation_m,timing_s,wall_s
+rigid,RK4,0.01,10,,1e-06,1e-04,0.006
+rigid,RK4,0.005,10,,5e-07,1e-05,0.011
+soft,floor,0.001,0,"step 1: diverged: too long",1e-04,nan,0.002
+soft,floor,0.0005,10,,1e-03,2e-01,0.2
+CSV
+"$PY" "$PLOTS/ground_chart.py" "$TMP/ground/bench.csv" >"$TMP/out" 2>"$TMP/err" &&
+  [[ -s "$TMP/ground/ground_speed_accuracy.png" ]] && grep -q "^| soft | floor | 0.001 | 0 |" "$TMP/out" ||
+  fail "(j) ground_chart.py: $(cat "$TMP/err")"
+(cd "$PLOTS" && "$PY" - "$TMP/ground/bench.csv" <<'PY') || fail "(j) failed walk placement"
+import sys
+import ground_chart as gc
+import plot_io
+rows = plot_io.read_csv(sys.argv[1], "ground bench", gc.NAMES, strings=gc.STRINGS, finite=False)
+fig, (a, b) = gc.plt.subplots(1, 2)
+assert gc.draw(a, rows, "hip_deviation_m", "path: y") == []
+notes = gc.draw(b, rows, "timing_s", "timing: y")
+assert notes == ["soft (floor), h = 0.001 s failed: step 1: diverged: no timing value to draw"], notes
+xs = [x for line in a.lines for x in line.get_xdata() if line.get_marker() == "X"]
+assert 0.002 in xs, xs
+PY
 
 # (i) multipliers_plot.py: the walks with multipliers on the unit circle, a walk that fell named
 # as having none; a malformed multiplier list is an error naming the file and key.
