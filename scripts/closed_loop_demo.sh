@@ -20,6 +20,11 @@ for ground in impedance lcp; do
     --out "results/walk_opt_mu2004_${ground}" --quiet
 done
 
+echo "== Poincare multipliers of the walks on the unit circle (results/poincare_multipliers.png)"
+walks=(results/walk_{poly,opt}_mu2004_{computed_torque,sliding_mode} results/walk_opt_mu2004_{impedance,lcp})
+[[ -f results/walk_rabbit_hzd/summary.json ]] && walks+=(results/walk_rabbit_hzd)
+/usr/bin/python3 scripts/plots/multipliers_plot.py results/poincare_multipliers.png "${walks[@]}"
+
 echo "== gaitopt stability: where walking stops (10 steps per point)"
 sweeps=(--sweep push=-3:12:16 --sweep mass_error=-0.3:0.5:17 --sweep length_error=-0.1:0.1:11
   --sweep friction=0.1:0.6:11 --sweep gain_scale=0.2:3:15)

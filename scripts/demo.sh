@@ -66,6 +66,10 @@ if [[ "$full" == --full ]]; then
   echo "== gaitopt compare: polynomial versus optimal gait, table and overlaid plots"
   "$bin" compare results/poly_mu2004 results/opt_mu2004 --out results/compare_poly_opt_mu2004
 
+  echo "== gaitopt impact-map: single or double impact over Mu's ch. 5 grid (Fig. 5.3)"
+  "$bin" impact-map --robot configs/robots/mu2004_five_link.yaml --out results/impact_map_mu2004 \
+    --quiet
+
   bash scripts/closed_loop_demo.sh "$build"
 
   # Gait libraries resume: points already in results/library_*/index.csv are not solved again.
@@ -92,7 +96,9 @@ echo "  opt_mu2004/, opt_rabbit/, opt_cot_mu2004/  optimal gaits, same files"
 echo "  poly_vs_opt_mu2004.md, poly_vs_cot_mu2004.md  the comparison tables above"
 echo "  library_*/              gait libraries: index.csv, index.json, library.png, points/"
 echo "  compare_poly_opt_mu2004/  comparison.md and overlaid angles, torques, forces, ZMP"
+echo "  impact_map_mu2004/      impact type over step length x approach angle (Mu Fig. 5.3)"
 echo "  walk_*/                 closed-loop walks: summary.json, steps.csv, walk_overview.png"
+echo "  poincare_multipliers.png  the walks' Poincare multipliers on the unit circle"
 echo "  stability_*/            sweeps: sweep_*.csv, summary.json, stability.png"
 echo "  ground_bench.md, ground_speed_accuracy.png  speed against accuracy of the grounds"
 echo "  */report.html           one self-contained page per result; walk_*/walk.gif"

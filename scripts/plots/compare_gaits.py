@@ -24,6 +24,7 @@ import os
 import sys
 
 import plot_io
+import plot_style as style
 from plot_io import InputError
 
 ROWS = [
@@ -44,8 +45,6 @@ RATIO_MIN_A = 1e-9
 MIN_LOADED_FORCE = 1.0
 FORCE_COLUMNS = ["fb_x", "fb_y", "fe_x", "fe_y", "zmp_x"]
 JOINT_NAMES_5 = ["stance ankle", "stance knee", "stance hip", "swing hip", "swing knee"]
-DPI = 110
-TOUCHDOWN_COLOUR = "0.45"
 
 # ---------------------------------------------------------------------------------------------
 # Table
@@ -118,23 +117,11 @@ class Gait:
     def __init__(self, folder, tag, ls):
         self.folder, self.tag, self.ls = folder.rstrip("/") or folder, tag, ls
         self.s = load(folder)
-        path = os.path.join(folder, "trajectory.csv")
-        header, rows = plot_io.read_rows(path, "trajectory", min_rows=2)
-        plot_io.require_columns(path, header, ["t", "phase", "theta1", "tau0"] + FORCE_COLUMNS)
-        thetas = plot_io.numbered_names(header, "theta", 1)
-        taus = plot_io.numbered_names(header, "tau", 0)
-        if len(thetas) < 2:
-            raise InputError(f"{path}: missing column 'theta2' (a biped has at least two links)")
-        optional = ["swing_x"] if "swing_x" in header else []
-        col = plot_io.columns(path, header, rows, ["t", "phase"] + thetas + taus + FORCE_COLUMNS
-                              + optional, strings={"phase"})
-        self.phase = col.pop("phase")
-        plot_io.check_phases(path, self.phase)
-        plot_io.check_increasing(path, "t", col["t"])
-        self.col, self.t = col, col["t"]
-        self.n, self.n_tau = len(thetas), len(taus)
-        self.dsp = self.phase == "DSP"
-        self.t_touchdown = self.t[self.dsp][0] if self.dsp.any() else self.t[-1]
+        traj = plot_io.read_trajectory(os.path.join(folder, "trajectory.csv"),
+                                       ["tau0"] + FORCE_COLUMNS)
+        self.col, self.t, self.phase = traj.col, traj.t, traj.phase
+        self.n, self.n_tau = traj.n, traj.n_tau
+        self.dsp, self.t_touchdown = traj.dsp, traj.t_touchdown
         summary = os.path.join(folder, "summary.json")
         for key in ("friction", "step_length"):
             if key in self.s:
@@ -184,10 +171,7 @@ class Gait:
 
 
 def pyplot():
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    return plt
+    return style.pyplot()
 
 
 def colour(i):
@@ -196,14 +180,14 @@ def colour(i):
 
 def mark_phases(ax, gaits):
     for g in gaits:
-        ax.axvline(g.t_touchdown, color=TOUCHDOWN_COLOUR, ls=g.ls, lw=1)
+        ax.axvline(g.t_touchdown, color=style.TOUCHDOWN, ls=g.ls, lw=1)
 
 
 def style_legend(fig, gaits, ncol=2):
     """Figure legend naming the folders (line styles) and their touchdowns."""
     from matplotlib.lines import Line2D
     handles = [Line2D([], [], color="k", ls=g.ls, lw=1.6, label=g.label()) for g in gaits]
-    handles += [Line2D([], [], color=TOUCHDOWN_COLOUR, ls=g.ls, lw=1, label=g.touchdown_label())
+    handles += [Line2D([], [], color=style.TOUCHDOWN, ls=g.ls, lw=1, label=g.touchdown_label())
                 for g in gaits]
     fig.legend(handles=handles, loc="lower center", ncol=ncol, fontsize=8)
 
@@ -269,11 +253,11 @@ def draw_all_torques(ax, gaits):
 
 def draw_normal_forces(ax, gaits):
     for g in gaits:
-        ax.plot(g.t, g.col["fb_y"], color="tab:blue", ls=g.ls, lw=1.5)
-        ax.plot(g.t, g.col["fe_y"], color="tab:orange", ls=g.ls, lw=1.5)
+        ax.plot(g.t, g.col["fb_y"], color=style.TIP_B, ls=g.ls, lw=1.5)
+        ax.plot(g.t, g.col["fe_y"], color=style.TIP_E, ls=g.ls, lw=1.5)
     mark_phases(ax, gaits)
-    colour_legend(ax, [("tab:blue", "fb_y, tip B (stance/trailing)"),
-                       ("tab:orange", "fe_y, tip E (swing/leading)")], loc="best")
+    colour_legend(ax, [(style.TIP_B, "fb_y, tip B (stance/trailing)"),
+                       (style.TIP_E, "fe_y, tip E (swing/leading)")], loc="best")
     finish(ax, "time [s]", "normal force [N]", "Normal ground forces")
 
 
@@ -281,12 +265,12 @@ def draw_friction(ax, gaits):
     import numpy as np
     top = 0.0
     for g in gaits:
-        for tip, c in (("b", "tab:blue"), ("e", "tab:orange")):
+        for tip, c in (("b", style.TIP_B), ("e", style.TIP_E)):
             r = g.friction_ratio(tip)
             ax.plot(g.t, r, color=c, ls=g.ls, lw=1.5)
             if np.any(np.isfinite(r)):
                 top = max(top, float(np.nanmax(r)))
-    entries = [("tab:blue", "|fb_x|/fb_y"), ("tab:orange", "|fe_x|/fe_y")]
+    entries = [(style.TIP_B, "|fb_x|/fb_y"), (style.TIP_E, "|fe_x|/fe_y")]
     mus = [g for g in gaits if g.mu is not None]
     for g in mus:
         ax.axhline(g.mu, color="k", ls=g.ls, lw=1.1)
@@ -304,7 +288,7 @@ def draw_friction(ax, gaits):
 
 
 def draw_zmp(ax, gaits):
-    entries = [("tab:red", "zmp_x")]
+    entries = [(style.ZMP, "zmp_x")]
     ax.axhline(0, color="0.3", lw=1)
     entries.append(("0.3", "stance/trailing tip B, x = 0"))
     shaded = False
@@ -321,7 +305,7 @@ def draw_zmp(ax, gaits):
     if shaded:
         entries.append(("0.6", "DSP support B..E (A filled, B hatched)"))
     for g in gaits:
-        ax.plot(g.t, g.col["zmp_x"], color="tab:red", ls=g.ls, lw=1.6)
+        ax.plot(g.t, g.col["zmp_x"], color=style.ZMP, ls=g.ls, lw=1.6)
     mark_phases(ax, gaits)
     colour_legend(ax, entries, loc="best")
     finish(ax, "time [s]", "x (from tip B) [m]", "ZMP and support interval")
@@ -346,7 +330,7 @@ def title(fig, what, gaits):
 def save(fig, gaits, path, bottom):
     style_legend(fig, gaits)
     fig.tight_layout(rect=(0, bottom, 1, 1))
-    fig.savefig(path, dpi=DPI)
+    style.save(fig, path)
     print(path)
 
 
@@ -416,7 +400,6 @@ def report(a_dir, b_dir, out_dir):
     for name, make in PICTURES:
         fig, bottom = make(plt, gaits)
         save(fig, gaits, os.path.join(out_dir, name), bottom)
-        plt.close(fig)
 
 
 def is_folder_target(arg):

@@ -10,9 +10,9 @@ import math
 import sys
 
 import matplotlib
+import plot_style as style
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+plt = style.pyplot()
 
 
 def main(src: str, out: str) -> None:
@@ -56,7 +56,7 @@ def main(src: str, out: str) -> None:
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
     fig.tight_layout()
-    fig.savefig(out, dpi=110)
+    style.save(fig, out)
 
 
 if __name__ == "__main__":

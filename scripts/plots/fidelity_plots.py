@@ -9,14 +9,13 @@ Usage: scripts/plots/fidelity_plots.py RESULT_DIR   (reads DIR/fidelity.csv, wri
 import os
 
 import matplotlib
+import plot_style as style
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+plt = style.pyplot()
 import numpy as np  # noqa: E402
 
 import plot_io  # noqa: E402
 
-DPI = 110
 NAMES = ["speed", "robot", "cot", "peak", "time"]
 QUANTITIES = [("cot", "cost of transport"), ("peak", "peak joint torque [N m]"),
               ("time", "solve time [s]")]
@@ -59,7 +58,7 @@ def main(result_dir):
     fig.suptitle("Model no more than a scene needs: Mu's five-link robot and its reductions, "
                  "torque-squared optimum at a 0.35 m step", fontsize=11)
     fig.tight_layout()
-    fig.savefig(os.path.join(result_dir, "fidelity.png"), dpi=DPI)
+    style.save(fig, os.path.join(result_dir, "fidelity.png"))
 
 
 if __name__ == "__main__":

@@ -8,56 +8,47 @@ and writes into RESULT_DIR, printing one line per picture written:
   paths.png         hip and tip positions over two steps, swing-tip path (Fig. 3.2)
   dsp_zmp.png       CoM, hip and ZMP in the double support phase (Fig. 3.4; needs DSP rows)
   forces.png        vertical tip forces and the friction they need (Fig. 3.5)
-  stick.png         stick diagram of the step (Fig. 3.6)
-  overview.png      the main panels of the above on one page
+  torques.png       joint torques over the step
+  zmp.png           ZMP (centre of pressure) against the heel and toe of the foot, both phases
+  stick.png         stick diagram of the step (Fig. 3.6), about a dozen frames per phase
+  overview.png      angles, positions, torques, swing clearance, forces, friction, ZMP against
+                    the foot and the stick diagram on one page
 Angles follow dynamics/conventions.hpp: u_i = (sin theta_i, cos theta_i), theta from the upward
 vertical, clockwise positive. Step 2 is step 1 with the legs swapped (link i <-> link N+1-i, leg
 links turned by pi, the torso unchanged), so both steps come from the one step in the file.
+The foot (heel and toe around each tip) comes from summary.json's `foot` key, or else from the
+robot file in configs/robots/ that the summary names; without either the tips are points.
 A missing file, column or key, or a malformed value, ends the script with exit code 1.
 """
+import glob
 import math
 import os
 import re
 import sys
 
 import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import plot_io
+import plot_style as style
+from plot_io import InputError
 
-import plot_io  # noqa: E402
-from plot_io import InputError  # noqa: E402
+plt = style.pyplot()
 
-DPI = 110
-DSP_SHADE = {"color": "tab:purple", "alpha": 0.12, "lw": 0}
-# Columns used besides t, phase, theta<i> and dtheta<i>.
+# Columns used besides t, phase, theta<i>, dtheta<i> and tau<j>.
 TAIL_COLUMNS = ["fb_x", "fb_y", "fe_x", "fe_y", "zmp_x", "hip_x", "swing_x", "swing_y", "com_x",
                 "com_y"]
 SUMMARY_NUMBERS = ["step_length", "duration", "speed", "friction", "min_normal_force",
                    "max_friction_ratio", "min_zmp_margin", "energy_J", "cost_of_transport"]
 # Link lengths must reproduce swing_x/swing_y from theta to this tolerance [m].
 KINEMATICS_TOLERANCE = 1e-6
+# Stick-diagram frames per phase (the DSP gets fewer: it is a sixth of the step or less).
+SSP_FRAMES, DSP_FRAMES = 12, 4
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
 # ---------------------------------------------------------------------------------------------
 # Reading
-
-
-def read_csv(path):
-    """Returns (columns: name -> float array, phase: str array, n_links)."""
-    header, rows = plot_io.read_rows(path, "trajectory", min_rows=2)
-    n = sum(1 for name in header if re.fullmatch(r"theta[1-9][0-9]*", name))
-    needed = (["t", "phase"] + [f"theta{i}" for i in range(1, n + 1)]
-              + [f"dtheta{i}" for i in range(1, n + 1)] + TAIL_COLUMNS)
-    plot_io.require_columns(path, header, needed)
-    if n < 2:
-        raise InputError(f"{path}: found {n} theta<i> columns, a biped has at least two links")
-    cols = plot_io.columns(path, header, rows, needed, strings={"phase"})
-    phase = cols.pop("phase")
-    plot_io.check_phases(path, phase)
-    plot_io.check_increasing(path, "t", cols["t"])
-    return cols, phase, n
 
 
 def read_summary(path, n):
@@ -73,7 +64,43 @@ def read_summary(path, n):
                 and isinstance(link.get("length"), (int, float))
                 and isinstance(link.get("continues"), bool)):
             raise InputError(f"{path}: key 'links[{i}]': expected {{name, length, continues}}")
+    if "foot" in s:
+        plot_io.require_type(path, s, "foot", dict, "an object {heel, toe}")
+        plot_io.require_numbers(path, s["foot"], ["heel", "toe"], prefix="foot.")
     return s
+
+
+def robot_file_foot(text):
+    """(heel, toe) from a robot YAML text's `foot: {heel: .., toe: ..}`, or None."""
+    try:
+        import yaml
+        foot = (yaml.safe_load(text) or {}).get("foot")
+        if isinstance(foot, dict) and all(plot_io.is_number(foot.get(k)) for k in ("heel", "toe")):
+            return float(foot["heel"]), float(foot["toe"])
+        return None
+    except ImportError:
+        m = re.search(r"^foot:\s*\{\s*heel:\s*([-+.\deE]+)\s*,\s*toe:\s*([-+.\deE]+)\s*\}",
+                      text, re.M)
+        return (float(m[1]), float(m[2])) if m else None
+
+
+def robot_foot(s):
+    """((heel, toe) [m], where it came from), or (None, reason) when unknown."""
+    if "foot" in s:
+        return (float(s["foot"]["heel"]), float(s["foot"]["toe"])), "summary.json"
+    files = ([os.path.join(ROOT, s["robot_file"])] if isinstance(s.get("robot_file"), str)
+             else sorted(glob.glob(os.path.join(ROOT, "configs", "robots", "*.yaml"))))
+    for path in files:
+        try:
+            with open(path, encoding="utf-8") as f:
+                text = f.read()
+        except OSError:
+            continue
+        if re.search(rf"^name:\s*{re.escape(str(s['robot']))}\s*$", text, re.M):
+            foot = robot_file_foot(text)
+            if foot is not None:
+                return foot, os.path.relpath(path, ROOT)
+    return None, f"no foot in summary.json or in a robot file named {s['robot']}"
 
 
 class Gait:
@@ -81,20 +108,25 @@ class Gait:
 
     def __init__(self, result_dir):
         csv_path = os.path.join(result_dir, "trajectory.csv")
-        self.col, self.phase, self.n = read_csv(csv_path)
+        self.traj = plot_io.read_trajectory(csv_path, TAIL_COLUMNS)
+        self.col, self.phase, self.n = self.traj.col, self.traj.phase, self.traj.n
+        self.traj.require([f"dtheta{i}" for i in range(1, self.n + 1)]
+                          + [f"tau{j}" for j in range(self.n)])
         self.s = read_summary(os.path.join(result_dir, "summary.json"), self.n)
-        self.t = self.col["t"]
-        self.theta = np.column_stack([self.col[f"theta{i}"] for i in range(1, self.n + 1)])
-        self.dtheta = np.column_stack([self.col[f"dtheta{i}"] for i in range(1, self.n + 1)])
-        self.dsp = self.phase == "DSP"
+        self.t = self.traj.t
+        self.theta = self.traj.stack("theta", 1, self.n)
+        self.dtheta = self.traj.stack("dtheta", 1, self.n)
+        self.tau = self.traj.stack("tau", 0, self.n)
+        self.dsp = self.traj.dsp
         self.L = self.s["step_length"]
         self.T = self.s["duration"]
-        self.t_touchdown = self.t[self.dsp][0] if self.dsp.any() else self.t[-1]
+        self.t_touchdown = self.traj.t_touchdown
         self.torso = np.array([not link["continues"] for link in self.s["links"]])
         self.swap = np.arange(self.n)[::-1]
         if np.any(self.torso != self.torso[self.swap]):
             raise InputError("summary.json: key 'links': the torso (continues = false) must sit "
                              "in the middle of the chain for the leg swap")
+        self.foot, self.foot_source = robot_foot(self.s)
         self.check_kinematics(csv_path)
 
     def link_points(self, k):
@@ -124,14 +156,30 @@ class Gait:
         cot = self.s["cost_of_transport"]
         return self.s["energy_J"] / (cot * self.L) if cot > 0 else None
 
+    def support(self):
+        """(back, front) edges of the support region at every row [m from B]: the foot around
+        B in the SSP, from B's heel to E's toe in the DSP; point tips without a foot."""
+        heel, toe = self.foot if self.foot is not None else (0.0, 0.0)
+        back = np.full(len(self.t), -heel)
+        return back, np.where(self.dsp, self.L + toe, toe)
+
+    def zmp_margin(self):
+        """Distance of the ZMP inside the support region at every row [m], negative outside
+        (what summary.json's min_zmp_margin is the minimum of)."""
+        back, front = self.support()
+        zmp = self.col["zmp_x"]
+        return np.minimum(zmp - back, front - zmp)
+
+    def joint_names(self):
+        joints = self.s.get("joints")
+        if (isinstance(joints, list) and len(joints) == self.n
+                and all(isinstance(j, dict) and isinstance(j.get("name"), str) for j in joints)):
+            return [j["name"].replace("_", " ") for j in joints]
+        return [f"joint {j}" for j in range(self.n)]
+
 
 # ---------------------------------------------------------------------------------------------
 # Two steps from one: physical legs A (stance in step 1) and B
-
-
-def wrap(angle):
-    """Angle wrapped to (-pi, pi]."""
-    return -((-angle + math.pi) % (2 * math.pi) - math.pi)
 
 
 def physical_links(g):
@@ -141,8 +189,8 @@ def physical_links(g):
     swing, so a link keeps its curve through the leg swap."""
     shift = np.where(g.torso, 0.0, math.pi)
     mid = (g.n - 1) / 2
-    step1 = wrap(g.theta - np.where(np.arange(g.n) > mid, shift, 0.0))
-    step2 = wrap(g.theta[:, g.swap] - np.where(np.arange(g.n) < mid, shift, 0.0))
+    step1 = plot_io.wrap(g.theta - np.where(np.arange(g.n) > mid, shift, 0.0))
+    step2 = plot_io.wrap(g.theta[:, g.swap] - np.where(np.arange(g.n) < mid, shift, 0.0))
     t = np.concatenate([g.t, g.t + g.T])
     names = [link["name"].replace("stance_", "").replace("swing_", "") for link in g.s["links"]]
     labels = [name if g.torso[i] else f"leg {'A' if i < mid else 'B'} {name}".removesuffix(" leg")
@@ -151,13 +199,7 @@ def physical_links(g):
 
 
 def link_colours(g):
-    mid = (g.n - 1) / 2
-    colours = []
-    for i in range(g.n):
-        depth = abs(i - mid) / max(mid, 1)  # 1 at the tips (shanks), smaller toward the hip
-        cmap = plt.cm.Blues if i < mid else plt.cm.Oranges
-        colours.append("0.25" if g.torso[i] or i == mid else cmap(0.45 + 0.5 * depth))
-    return colours
+    return style.link_colours(g.n, g.torso)
 
 
 def jumps(g, angles, rates):
@@ -168,7 +210,7 @@ def jumps(g, angles, rates):
     else:
         first = int(np.argmax(g.dsp))
         pairs = {"touchdown": (first - 1, first), "leg swap": (k - 1, k)}
-    return {name: (math.degrees(np.max(np.abs(wrap(angles[j] - angles[i])))),
+    return {name: (math.degrees(np.max(np.abs(plot_io.wrap(angles[j] - angles[i])))),
                    np.max(np.abs(rates[j] - rates[i]))) for name, (i, j) in pairs.items()}
 
 
@@ -177,7 +219,7 @@ def mark_phases(ax, g, steps=2):
     for s in range(steps):
         offset = s * g.T
         if g.dsp.any():
-            ax.axvspan(offset + g.t_touchdown, offset + g.t[-1], **DSP_SHADE,
+            ax.axvspan(offset + g.t_touchdown, offset + g.t[-1], **style.DSP_SHADE,
                        label="DSP" if s == 0 else None)
         ax.axvline(offset + g.t_touchdown, color="k", ls="--", lw=0.8,
                    label="touchdown" if s == 0 else None)
@@ -185,14 +227,7 @@ def mark_phases(ax, g, steps=2):
             ax.axvline(offset, color="k", ls=":", lw=0.8, label="leg swap")
 
 
-def finish(ax, xlabel, ylabel, title=None, legend=True, **legend_kw):
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel(ylabel)
-    if title:
-        ax.set_title(title, fontsize=10)
-    ax.grid(True, alpha=0.4)
-    if legend:
-        ax.legend(fontsize=8, **legend_kw)
+finish = style.finish
 
 
 # ---------------------------------------------------------------------------------------------
@@ -303,10 +338,102 @@ def draw_friction(ax, g):
            loc="best", ncol=2)
 
 
-def draw_stick(ax, g, frames=12):
-    cmap = matplotlib.colors.ListedColormap(plt.cm.viridis_r(np.linspace(0.12, 1, 256)))
-    norm = matplotlib.colors.Normalize(g.t[0], g.t[-1])
-    picks = [int(np.argmin(np.abs(g.t - tk))) for tk in np.linspace(g.t[0], g.t[-1], frames)]
+def draw_torques(ax, g, legend=True):
+    """Joint torques tau0..tau{N-1} over the step, the largest |tau| of each joint marked."""
+    names = g.joint_names()
+    for j in range(g.n):
+        line, = ax.plot(g.t, g.tau[:, j], color=f"C{j}", lw=1.6, label=f"τ{j} {names[j]}")
+        k = int(np.argmax(np.abs(g.tau[:, j])))
+        ax.plot(g.t[k], g.tau[k, j], "o", color=line.get_color(), ms=4)
+    ax.axhline(0, color="0.5", lw=0.8)
+    mark_phases(ax, g, steps=1)
+    ax.set_xlim(g.t[0], g.t[-1])
+    total = g.s.get("torque_squared")
+    cost = f", ∫Στ² dt = {total:.4g} N²m²s" if plot_io.is_number(total) else ""
+    finish(ax, "time [s]", "joint torque [N m]", f"Joint torques (dots: peak |τ|){cost}",
+           legend=legend, ncol=3, loc="best", fontsize=7)
+
+
+def draw_clearance(ax, g):
+    """Height of the swing tip E above the ground over the step, its apex marked; E is on the
+    ground in the DSP."""
+    y = g.col["swing_y"]
+    ax.plot(g.t, 1000 * y, color=style.TIP_E, lw=1.8, label="swing tip E height")
+    ax.axhline(0, color="0.4", lw=1.2, label="ground")
+    k = int(np.argmax(y))
+    ax.plot(g.t[k], 1000 * y[k], "o", color=style.TIP_E, ms=5)
+    ax.annotate(f"apex {1000 * y[k]:.0f} mm at x = {g.col['swing_x'][k]:.3f} m",
+                (g.t[k], 1000 * y[k]), xytext=(0, -14), textcoords="offset points",
+                ha="center", fontsize=8)
+    below = y < -1e-6
+    if below.any():
+        ax.fill_between(g.t, 1000 * y, 0, where=below, color=style.FAIL, alpha=0.3,
+                        label=f"below the ground (down to {1000 * np.min(y):.1f} mm)")
+    mark_phases(ax, g, steps=1)
+    ax.set_xlim(g.t[0], g.t[-1])
+    ax.set_ylim(min(-0.1 * 1000 * y[k], 1000 * np.min(y) * 1.2), 1000 * y[k] * 1.35)
+    finish(ax, "time [s]", "swing tip height [mm]", "Swing-tip clearance", loc="upper right",
+           ncol=2)
+
+
+def draw_zmp_foot(ax, g):
+    """ZMP (centre of pressure) x over the whole step against the support region: the foot
+    [-heel, toe] around B in the SSP, B's heel to E's toe in the DSP. Where the ZMP leaves the
+    support, the worst point is marked with its distance."""
+    zmp = g.col["zmp_x"]
+    back, front = g.support()
+    has_foot = g.foot is not None and any(g.foot)
+    what = "foot" if has_foot else "tip (point foot)"
+    ax.fill_between(g.t, back, front, **style.SUPPORT_SHADE,
+                    label=f"support: B's {what}; DSP: B to E")
+    ax.plot(g.t, back, color="0.35", lw=1.1, label="heel of B" if has_foot else "tip B")
+    ax.plot(g.t, front, color="0.35", lw=1.1, ls="--",
+            label="toe of B, then of E" if has_foot else "tip B, then tip E")
+    ax.plot(g.t, zmp, color=style.ZMP, lw=1.9, label="ZMP (CoP) x")
+    margin = g.zmp_margin()
+    k = int(np.argmin(margin))
+    if margin[k] < 0:
+        edge = "heel" if zmp[k] < back[k] else "toe"
+        text = (f"ZMP leaves the {what} by {-margin[k]:.3f} m\n"
+                f"(past the {edge}, t = {g.t[k]:.3f} s)")
+        colour = style.FAIL
+    elif np.ptp(back) == 0 and np.all(front - back < 1e-12) and np.all(np.abs(margin) < 1e-9):
+        text = "ZMP on the point foot all step (no ankle torque)"
+        colour = "0.3"
+    else:
+        text = f"closest to an edge: {1000 * margin[k]:.0f} mm"
+        colour = "0.3"
+    ax.plot(g.t[k], zmp[k], "o", color=style.ZMP, mfc="none", ms=10, mew=1.5)
+    ax.annotate(text, (g.t[k], zmp[k]), xytext=(0.03, 0.04), textcoords="axes fraction",
+                fontsize=8, color=colour, bbox={"fc": "w", "ec": colour},
+                arrowprops={"arrowstyle": "->", "color": colour})
+    mark_phases(ax, g, steps=1)
+    ax.set_xlim(g.t[0], g.t[-1])
+    lo, hi = min(np.min(zmp), np.min(back)), max(np.max(zmp), np.max(front))
+    span = max(hi - lo, 0.1)
+    ax.set_ylim(lo - 0.15 * span, hi + 0.45 * span)
+    foot = ("" if g.foot is None else
+            f"heel {g.foot[0]:g} m, toe {g.foot[1]:g} m ({g.foot_source})")
+    finish(ax, "time [s]", "x (from B) [m]",
+           f"ZMP against the support, both phases; min margin (summary) "
+           f"{g.s['min_zmp_margin']:.3f} m\n{foot or g.foot_source}",
+           loc="upper left", ncol=2)
+
+
+def stick_frames(g):
+    """Rows drawn in the stick diagram: SSP_FRAMES spread over the SSP, DSP_FRAMES over the
+    DSP (each phase's first and last row included)."""
+    picks = []
+    for rows, count in ((np.flatnonzero(~g.dsp), SSP_FRAMES), (np.flatnonzero(g.dsp), DSP_FRAMES)):
+        if len(rows):
+            picks += [int(rows[int(round(x))])
+                      for x in np.linspace(0, len(rows) - 1, min(count, len(rows)))]
+    return list(dict.fromkeys(picks))
+
+
+def draw_stick(ax, g):
+    cmap, norm = style.time_colours(g.t[0], g.t[-1])
+    picks = stick_frames(g)
     for k in picks:
         colour = cmap(norm(g.t[k]))
         proximal, distal = g.link_points(k)
@@ -314,6 +441,9 @@ def draw_stick(ax, g, frames=12):
         for p, q in zip(proximal, distal):
             ax.plot([p[0], q[0]], [p[1], q[1]], ls=ls, color=colour, lw=1.5)
         ax.plot(g.col["com_x"][k], g.col["com_y"][k], "*", color=colour, ms=9)
+    if g.foot is not None and any(g.foot):
+        ax.plot([-g.foot[0], g.foot[1]], [0, 0], color="k", lw=4, solid_capstyle="butt",
+                label="foot of B")
     ax.axhline(0, color="0.4", lw=1.2)
     ax.plot([], [], "k-", label="SSP")
     ax.plot([], [], "k--", label="DSP")
@@ -321,8 +451,10 @@ def draw_stick(ax, g, frames=12):
     ax.set_aspect("equal")
     ax.figure.colorbar(matplotlib.cm.ScalarMappable(norm, cmap), ax=ax, label="time [s]",
                        shrink=0.8)
-    finish(ax, "x [m]", "y [m]", f"Stick diagram of the step (Mu Fig. 3.6), {frames} frames",
-           loc="best")
+    n_dsp = int(np.sum(g.dsp[picks]))
+    frames = f"{len(picks) - n_dsp} SSP" + (f" + {n_dsp} DSP" if n_dsp else "")
+    finish(ax, "x [m]", "y [m]", f"Stick diagram (Mu Fig. 3.6), {frames} frames",
+           loc="upper left", fontsize=7)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -346,7 +478,7 @@ def joint_angles_figure(g):
                      for name, (a, r) in jumps(g, angles, rates).items())
     fig.suptitle(f"Link angles and rates of {g.s['robot']} over two steps (Mu Fig. 3.3), "
                  f"legs swapped in step 2\nContinuity, largest jump at {text}", fontsize=10)
-    fig.legend(*ax1.get_legend_handles_labels(), loc="lower center", ncol=4, fontsize=8)
+    fig.legend(*ax1.get_legend_handles_labels(), loc="lower center", ncol=4)
     fig.tight_layout(rect=(0, 0.055, 1, 1))
     return fig
 
@@ -363,6 +495,14 @@ def paths_figure(g):
 
 def dsp_zmp_figure(g):
     return plot_io.panel_figure(draw_dsp_zmp, g, headline(g), (8.2, 5.2))
+
+
+def zmp_figure(g):
+    return plot_io.panel_figure(draw_zmp_foot, g, headline(g), (8.2, 5.2))
+
+
+def torques_figure(g):
+    return plot_io.panel_figure(draw_torques, g, headline(g), (8.2, 5.2))
 
 
 def stick_figure(g):
@@ -385,16 +525,19 @@ def forces_figure(g):
 
 
 def overview_figure(g):
-    fig, axes = plt.subplots(3, 2, figsize=(12, 11))
+    fig, axes = plt.subplots(4, 2, figsize=(12, 15.5),
+                             gridspec_kw={"height_ratios": [1, 1, 1, 1.35]})
     draw_angles(axes[0, 0], g, legend=False)
-    axes[0, 0].legend(fontsize=8, ncol=4, loc="upper center", bbox_to_anchor=(0.5, -0.17))
+    axes[0, 0].legend(ncol=4, loc="upper center", bbox_to_anchor=(0.5, -0.17))
     draw_positions(axes[0, 1], g)
-    draw_vertical_forces(axes[1, 0], g)
-    draw_friction(axes[1, 1], g)
-    (draw_dsp_zmp if g.dsp.any() else draw_swing_path)(axes[2, 0], g)
-    draw_stick(axes[2, 1], g)
-    fig.suptitle(headline(g), fontsize=11)
-    fig.tight_layout()
+    draw_torques(axes[1, 0], g)
+    draw_clearance(axes[1, 1], g)
+    draw_vertical_forces(axes[2, 0], g)
+    draw_friction(axes[2, 1], g)
+    draw_zmp_foot(axes[3, 0], g)
+    draw_stick(axes[3, 1], g)
+    fig.suptitle(headline(g))
+    fig.tight_layout(rect=(0, 0, 1, 0.985))
     return fig
 
 
@@ -404,6 +547,8 @@ def pictures(g):
     if g.dsp.any():
         out.append(("dsp_zmp.png", dsp_zmp_figure))
     return out + [("forces.png", forces_figure),
+                  ("torques.png", torques_figure),
+                  ("zmp.png", zmp_figure),
                   ("stick.png", stick_figure),
                   ("overview.png", overview_figure)]
 
@@ -412,11 +557,11 @@ def main(result_dir):
     g = Gait(result_dir)
     if not g.dsp.any():
         print("dsp_zmp.png skipped: the trajectory has no DSP rows", file=sys.stderr)
+    if g.foot is None:
+        print(f"note: ZMP drawn against point tips: {g.foot_source}", file=sys.stderr)
     for name, make in pictures(g):
-        fig = make(g)
         path = os.path.join(result_dir, name)
-        fig.savefig(path, dpi=DPI)
-        plt.close(fig)
+        style.save(make(g), path, dpi=style.PAGE_DPI if name == "overview.png" else style.DPI)
         print(path)
 
 

@@ -2,53 +2,84 @@
 """Speed against accuracy of the three grounds, from bench/ground_bench's CSV.
 
 Usage: ground_chart.py BENCH_CSV   (writes BENCH_CSV's folder/ground_speed_accuracy.png)
-One line per ground (and variant) through its time steps, x the wall time of a 10-step walk;
-left, y the largest difference of hip height at equal hip x from the tight rigid reference (the
-path); right, the difference of the walk's end time (the timing). A time step whose walk failed
-(diverged, slipped, fell) is a cross on the band at the top, labelled with the step.
+The ground models overlaid in one picture, one line per ground (and variant) through its time
+steps, x the wall time of a 10-step walk; left, y the largest difference of hip height at equal
+hip x from the tight rigid reference (the path); right, the difference of the walk's end time
+(the timing). A time step whose walk failed (diverged, slipped, fell) is a red-edged X at its
+own wall time and value, labelled with the step and the failure; where the value does not exist
+(no end time) or the wall time is not positive (too short to show on the log axis), the failure
+is a left-pointing marker on the axis edge and named in the note under the panel. The legend
+sits under the panels, so it hides no point.
 Prints the picture's path, then a markdown table of the rows.
 """
 import os
 import sys
+import textwrap
 
 import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import plot_io
+import plot_style as style
 
-import plot_io  # noqa: E402
+plt = style.pyplot()
 
-DPI = 110
 NAMES = ["ground", "variant", "time_step", "steps", "failure", "hip_deviation_m", "timing_s",
          "wall_s"]
 STRINGS = ("ground", "variant", "failure")
 
 
+def short_failure(text, width=38):
+    """The failure without its long tail: 'step 1: diverged' from 'step 1: diverged: ...'."""
+    return textwrap.shorten(": ".join(text.split(": ")[:2]), width, placeholder="...")
+
+
 def draw(ax, rows, column, ylabel):
-    """`column` against wall time per (ground, variant); failures on the top band."""
+    """`column` against wall time per (ground, variant); failed runs marked where they are.
+    Returns the notes on failures that have no point on this panel."""
     keys = list(dict.fromkeys(zip(rows["ground"], rows["variant"])))
     ok = rows["failure"] == ""
-    top = 3 * np.max(rows[column][ok]) if np.any(ok) else 1.0
+    notes = []
+    edge = []  # (y, colour, text) of failures drawn on the left edge
     for ground, variant in keys:
         sel = (rows["ground"] == ground) & (rows["variant"] == variant)
         good = sel & ok
         line, = ax.loglog(rows["wall_s"][good], rows[column][good], "o-",
                           label=f"{ground} ({variant})")
+        colour = line.get_color()
         for x, y, h in zip(rows["wall_s"][good], rows[column][good],
                            rows["time_step"][good]):
             ax.annotate(f"{h:g}", (x, y), textcoords="offset points", xytext=(4, 4), fontsize=7,
-                        color=line.get_color())
-        for x, h in zip(rows["wall_s"][sel & ~ok], rows["time_step"][sel & ~ok]):
-            x = max(x, 1e-3)
-            ax.plot(x, top, "x", color=line.get_color(), ms=9, mew=2)
-            ax.annotate(f"h={h:g} fails", (x, top), textcoords="offset points", xytext=(4, -10),
-                        fontsize=7, color=line.get_color())
-    ax.axhline(top / 1.5, color="0.6", lw=0.8, ls=":")
+                        color=colour)
+        for i in np.flatnonzero(sel & ~ok):
+            x, y, h = rows["wall_s"][i], rows[column][i], rows["time_step"][i]
+            what = f"h = {h:g} s failed: {short_failure(rows['failure'][i])}"
+            if np.isfinite(y) and y > 0 and x > 0:
+                ax.plot(x, y, "X", color=colour, mec=style.FAIL, mew=1.5, ms=11, zorder=4)
+                ax.annotate(what, (x, y), textcoords="offset points", xytext=(7, -3),
+                            fontsize=7, color=style.FAIL)
+            elif np.isfinite(y) and y > 0:
+                edge.append((y, colour, f"h = {h:g} s: {short_failure(rows['failure'][i])}\n"
+                                        f"wall time {x:.3g} s (off the log axis)"))
+            else:
+                notes.append(f"{ground} ({variant}), {what}: no {ylabel.split(':')[0]} "
+                             f"value to draw")
+    if edge:
+        ax.autoscale_view()
+        left = ax.get_xlim()[0]
+        for y, colour, text in edge:
+            ax.plot(left, y, "<", color=colour, mec=style.FAIL, mew=1.5, ms=10, zorder=4,
+                    clip_on=False)
+            ax.annotate(text, (left, y), textcoords="offset points", xytext=(9, -6),
+                        fontsize=7, color=style.FAIL, va="top",
+                        bbox={"fc": "w", "ec": "none", "alpha": 0.85, "pad": 1})
+        ax.set_xlim(left=left)
+    ax.plot([], [], "X", color="0.6", mec=style.FAIL, mew=1.5, ms=9, ls="none",
+            label="walk failed (at its wall time)")
     ax.set_xlabel("wall time of a 10-step walk [s]")
     ax.set_ylabel(ylabel)
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8, loc="lower left")
+    return notes
 
 
 def table(rows):
@@ -66,14 +97,20 @@ def table(rows):
 
 def main(path):
     rows = plot_io.read_csv(path, "ground bench", NAMES, strings=STRINGS, finite=False)
-    fig, (path_ax, time_ax) = plt.subplots(1, 2, figsize=(14, 6))
-    draw(path_ax, rows, "hip_deviation_m", "path: max hip height difference at equal hip x [m]")
-    draw(time_ax, rows, "timing_s", "timing: end time difference after 10 steps [s]")
+    fig, (path_ax, time_ax) = plt.subplots(1, 2, figsize=(13, 6.2))
+    notes = draw(path_ax, rows, "hip_deviation_m",
+                 "path: max hip height difference at equal hip x [m]")
+    notes += draw(time_ax, rows, "timing_s", "timing: end time difference after 10 steps [s]")
+    handles, labels = path_ax.get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=len(labels))
+    if notes:
+        fig.text(0.5, 0.065, "; ".join(dict.fromkeys(notes)), ha="center",
+                 fontsize=8, color=style.FAIL)
     fig.suptitle("Speed against accuracy of the ground models, against a tight rigid reference "
-                 "(labels: time step [s]; crosses: walk failed)", fontsize=11)
+                 "(labels: time step [s])")
     out = os.path.join(os.path.dirname(os.path.abspath(path)), "ground_speed_accuracy.png")
-    fig.tight_layout()
-    fig.savefig(out, dpi=DPI)
+    fig.tight_layout(rect=(0, 0.09 if notes else 0.06, 1, 1))
+    style.save(fig, out)
     print(f"wrote {os.path.basename(out)}", file=sys.stderr)
     print(table(rows))
 

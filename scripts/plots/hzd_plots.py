@@ -11,9 +11,9 @@ printing its path:
 A missing file, column or key, or a malformed value, ends the script with exit code 1.
 """
 import matplotlib
+import plot_style as style
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+plt = style.pyplot()
 import numpy as np  # noqa: E402
 
 import plot_io  # noqa: E402
@@ -70,7 +70,7 @@ def main(result_dir):
     fig.suptitle(f"{s['robot']} under HZD: {s['steps_completed']} steps", fontsize=10)
     fig.tight_layout()
     out = f"{result_dir}/hzd.png"
-    fig.savefig(out, dpi=90)
+    style.save(fig, out, dpi=style.PAGE_DPI)
     print(out)
 
 

@@ -14,9 +14,9 @@ malformed value, ends the script with exit code 1.
 import os
 
 import matplotlib
+import plot_style as style
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+plt = style.pyplot()
 import numpy as np  # noqa: E402
 from matplotlib.colors import ListedColormap  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
@@ -24,7 +24,6 @@ from matplotlib.patches import Patch  # noqa: E402
 import plot_io  # noqa: E402
 from plot_io import InputError  # noqa: E402
 
-DPI = 110
 TYPES = ["single", "double", "either", "neither"]
 TYPE_COLOURS = ["#9ecae1", "#fd8d3c", "#74c476", "#969696"]
 TYPE_LABELS = ["single", "double", "either (P_ly > 0 and ydot_b > 0)",
@@ -114,8 +113,7 @@ def main(result_dir):
     axes, cube = read_map(os.path.join(result_dir, "impact_map.csv"))
     fig = draw(axes, cube)
     path = os.path.join(result_dir, "impact_map.png")
-    fig.savefig(path, dpi=DPI)
-    plt.close(fig)
+    style.save(fig, path)
     print(path)
 
 

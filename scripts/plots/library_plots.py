@@ -21,15 +21,15 @@ import sys
 import numpy as np
 
 import plot_io
+import plot_style
 from plot_io import InputError
 
 # matplotlib is imported by load_matplotlib() once the input has been checked: it takes a
 # second to import, and bad input should fail fast.
 plt = Rectangle = blended_transform_factory = None
 
-DPI = 110
 EXIT_BAD_INPUT = 2
-FAIL_COLOUR = "tab:red"
+FAIL_COLOUR = plot_style.FAIL
 AXES = ("speed", "step_length", "slope")
 AXIS_LABELS = {"speed": "speed [m/s]", "step_length": "step length [m]", "slope": "slope [rad]"}
 POINT_NUMBERS = ("speed", "step_length", "slope")
@@ -270,8 +270,7 @@ def library_figure(d, axes, points):
 
 def load_matplotlib():
     global plt, Rectangle, blended_transform_factory
-    import matplotlib
-    matplotlib.use("Agg")
+    plot_style.pyplot()
     import matplotlib.pyplot
     import matplotlib.patches
     import matplotlib.transforms
@@ -285,8 +284,7 @@ def main(library_dir):
     load_matplotlib()
     fig = library_figure(d, axes, points)
     path = os.path.join(library_dir, "library.png")
-    fig.savefig(path, dpi=DPI)
-    plt.close(fig)
+    plot_style.save(fig, path)
     print(path)
 
 

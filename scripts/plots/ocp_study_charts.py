@@ -16,14 +16,13 @@ import os
 import sys
 
 import matplotlib
+import plot_style as style
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+plt = style.pyplot()
 import numpy as np  # noqa: E402
 
 import plot_io  # noqa: E402
 
-DPI = 110
 # Points of the finest meshes the convergence order is fitted over (the asymptotic part).
 FIT_POINTS = 4
 # Theoretical orders (Betts 2010, sec. 4.5; Kelly 2017, sec. 4): global error at the end of the
@@ -51,8 +50,7 @@ def save(fig, folder, name):
     """Writes `fig` to folder/name, closes it and prints the path."""
     fig.tight_layout()
     out = os.path.join(folder, name)
-    fig.savefig(out, dpi=DPI)
-    plt.close(fig)
+    style.save(fig, out)
     print(out)
 
 def keys(rows, *names):
@@ -181,10 +179,14 @@ def problem_label(robot, scheme, ssp, dsp):
 
 
 def derivatives_chart(folder, rows):
+    """Wall time per problem and derivative mode as points on a log axis (bars would start at
+    an arbitrary floor there), one marker per mode; a solve that did not converge is a
+    red-edged X labelled with its status."""
     problems = keys(rows, "robot", "scheme", "ssp_segments", "dsp_segments")
     modes = list(MODE_LABEL)
-    fig, ax = plt.subplots(figsize=(13, 6))
-    width = 0.8 / len(modes)
+    markers = ["o", "s", "D", "^"]
+    fig, ax = plt.subplots(figsize=(12, 5.6))
+    width = 0.6 / max(len(modes) - 1, 1)
     for m, (hessian, jacobian) in enumerate(modes):
         for p, (robot, scheme, ssp, dsp) in enumerate(problems):
             sel = select(rows, robot=robot, scheme=scheme, ssp_segments=ssp, dsp_segments=dsp,
@@ -194,24 +196,29 @@ def derivatives_chart(folder, rows):
             i = int(np.argmax(sel))
             x = p + (m - (len(modes) - 1) / 2) * width
             ok = rows["converged"][i] == 1
-            ax.bar(x, rows["wall_s"][i], width, color=f"C{m}", hatch=None if ok else "//",
-                   edgecolor="black" if not ok else None,
-                   label=MODE_LABEL[(hessian, jacobian)] if p == 0 else None)
+            y = rows["wall_s"][i]
+            ax.plot(x, y, markers[m % len(markers)] if ok else "X", color=f"C{m}", ms=9 if ok else 13,
+                    mec="black" if ok else style.FAIL, mew=0.8 if ok else 2, ls="none",
+                    label=MODE_LABEL[(hessian, jacobian)] if p == 0 else None)
             text = f"{int(rows['iterations'][i])} it."
             if not ok:
-                ax.plot(x, rows["wall_s"][i], "x", color="black", ms=12, mew=2.5)
-                text += f"\n{rows['status'][i]}"
-            ax.annotate(text, (x, rows["wall_s"][i]), textcoords="offset points",
-                        xytext=(0, 4), ha="center", fontsize=7, rotation=90 if not ok else 0)
+                text += f"\n{rows['status'][i].replace('_', ' ')}"
+            ax.annotate(text, (x, y), textcoords="offset points", xytext=(0, 9), ha="center",
+                        va="bottom", fontsize=7, color="black" if ok else style.FAIL)
+    for p in range(1, len(problems)):
+        ax.axvline(p - 0.5, color="0.8", lw=0.8)
+    ax.plot([], [], "X", color="0.6", mec=style.FAIL, mew=2, ms=10, ls="none",
+            label="did not converge (status above)")
     ax.set_yscale("log")
+    ax.set_xlim(-0.5, len(problems) - 0.5)
     ax.set_xticks(range(len(problems)))
     ax.set_xticklabels([problem_label(*p) for p in problems], fontsize=8)
-    ax.set_ylabel("wall time (median) [s]")
-    ax.set_ylim(top=ax.get_ylim()[1] * 30)
+    ax.set_ylabel("wall time (median of the solves) [s]")
+    ax.set_ylim(ax.get_ylim()[0] / 1.5, ax.get_ylim()[1] * 6)
     ax.grid(True, axis="y", which="both", alpha=0.3)
-    ax.legend(fontsize=8, loc="upper left")
+    ax.legend(loc="upper left")
     ax.set_title("Derivatives handed to Ipopt: wall time from the polynomial guess "
-                 "(labels: iterations; crossed and hatched: did not converge)", fontsize=11)
+                 "(labels: iterations)")
     save(fig, folder, "derivatives.png")
 
 
@@ -283,7 +290,7 @@ def guesses_chart(folder, rows):
             rate_ax.bar(x, same / n, width, **kw)
             rate_ax.annotate(f"{same}/{conv}/{n}", (x, conv / n), textcoords="offset points",
                              xytext=(0, 3), ha="center", va="bottom", fontsize=7, rotation=90)
-            time_ax.bar(x, wall, width, **kw)
+            time_ax.plot(x, wall, "o", ms=8, mec="black", mew=0.8, ls="none", **kw)
     for ax in (rate_ax, time_ax):
         ax.set_xticks(range(len(labels)))
         ax.set_xticklabels(labels, fontsize=8, rotation=20)
@@ -292,7 +299,9 @@ def guesses_chart(folder, rows):
     rate_ax.set_ylim(0, 1.3)
     rate_ax.set_ylabel("fraction of attempts: solid same optimum, light converged elsewhere\n"
                        "(labels: same / converged / attempts)")
-    time_ax.set_yscale("log")
+    time_ax.set_yscale("log")  # points, not bars: a bar on a log axis starts nowhere
+    time_ax.set_xlim(-0.5, len(labels) - 0.5)
+    time_ax.grid(True, axis="y", which="both", alpha=0.3)
     time_ax.set_ylabel("median wall time over all attempts [s]")
     fig.suptitle("Initial guesses: polynomial gait, straight line (Kelly 2017), perturbed optimum "
                  "(uniform angle noise, fixed seeds)", fontsize=11)

@@ -122,6 +122,60 @@ def check_increasing(path, name, values):
 
 
 # ---------------------------------------------------------------------------------------------
+# trajectory.csv (DESIGN.md sec. 5)
+
+
+class Trajectory:
+    """One step of a gait result folder's trajectory.csv.
+
+    col: column name -> float array for every column but 'phase'; phase: str array (SSP rows,
+    then DSP rows); n: links (theta1..thetaN); n_tau: joint torques (tau0..); t; dsp: bool array
+    of the DSP rows; t_touchdown: the first DSP time (the last time without DSP rows)."""
+
+    def __init__(self, path, header, col, phase, n, n_tau):
+        self.path, self.header, self.col, self.phase = path, header, col, phase
+        self.n, self.n_tau = n, n_tau
+        self.t = col["t"]
+        self.dsp = phase == "DSP"
+        self.t_touchdown = self.t[self.dsp][0] if self.dsp.any() else self.t[-1]
+
+    def require(self, names):
+        """Raises for the first of `names` missing from the file (columns that depend on n)."""
+        require_columns(self.path, self.header, names)
+
+    def stack(self, prefix, first, count):
+        """Columns prefix<first> .. prefix<first+count-1> side by side (rows x count)."""
+        return np.column_stack([self.col[f"{prefix}{i}"] for i in range(first, first + count)])
+
+
+def read_trajectory(path, need=()):
+    """The one reader of trajectory.csv: a Trajectory of every column in the file.
+
+    Requires t, phase, theta1..thetaN (N >= 2, the contiguous run from theta1) and the columns
+    in `need`; every row must have the header's number of fields (a torn row is an error naming
+    its line), every value but the phase a finite number, phase SSP rows then DSP rows, and t
+    non-decreasing."""
+    header, rows = read_rows(path, "trajectory", min_rows=2)
+    require_columns(path, header, ["t", "phase", "theta1"])
+    thetas = numbered_names(header, "theta", 1)
+    if len(thetas) < 2:
+        raise InputError(f"{path}: missing column 'theta2' (a biped has at least two links)")
+    require_columns(path, header, list(need))
+    names = list(dict.fromkeys(name for name in header if name))
+    col = columns(path, header, rows, names, strings={"phase"})
+    phase = col.pop("phase")
+    check_phases(path, phase)
+    check_increasing(path, "t", col["t"])
+    return Trajectory(path, header, col, phase, len(thetas),
+                      len(numbered_names(header, "tau", 0)))
+
+
+def wrap(angle):
+    """Angle wrapped to (-pi, pi]."""
+    return -((-angle + np.pi) % (2 * np.pi) - np.pi)
+
+
+# ---------------------------------------------------------------------------------------------
 # summary.json
 
 
@@ -167,6 +221,18 @@ def require_type(path, s, key, kind, label, prefix=""):
         raise InputError(f"{path}: key '{prefix}{key}': expected {label}, got {s[key]!r}")
 
 
+def read_multipliers(path, value):
+    """poincare_multipliers as a complex array, or None when null."""
+    if value is None:
+        return None
+    if not (isinstance(value, list) and all(isinstance(z, list) and len(z) == 2
+                                            and all(is_number(v) for v in z)
+                                            for z in value)):
+        raise InputError(f"{path}: key 'poincare_multipliers': expected a list of [re, im] "
+                         f"pairs or null")
+    return np.array([complex(re_, im) for re_, im in value], dtype=complex)
+
+
 # ---------------------------------------------------------------------------------------------
 # Figures
 
@@ -174,7 +240,9 @@ def require_type(path, s, key, kind, label, prefix=""):
 def panel_figure(draw, data, title, figsize, fontsize=9):
     """A figure of one panel, drawn by draw(ax, data) under `title`. pyplot is imported here,
     after the calling script has chosen its backend."""
-    import matplotlib.pyplot as plt
+    import plot_style
+
+    plt = plot_style.pyplot()
 
     fig, ax = plt.subplots(figsize=figsize)
     draw(ax, data)

@@ -15,19 +15,18 @@ import math
 import os
 
 import matplotlib
+import plot_style as style
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+plt = style.pyplot()
 import numpy as np  # noqa: E402
 
 import plot_io  # noqa: E402
 from plot_io import InputError  # noqa: E402
 
-DPI = 110
-WALK_COLOUR = "tab:green"
-FALL_COLOUR = "tab:red"
-MULTIPLIER_COLOUR = "tab:purple"
-WALK_SHADE = {"color": "tab:green", "alpha": 0.12, "lw": 0}
+WALK_COLOUR = style.OK
+FALL_COLOUR = style.FAIL
+MULTIPLIER_COLOUR = style.MULTIPLIER
+WALK_SHADE = style.WALK_SHADE
 SWEEP_COLUMNS = ["value", "steps_completed", "steps_requested", "fell", "failure",
                  "max_tracking_error", "max_multiplier", "mean_advance", "wall_time_s"]
 # Columns that may be empty (not computed, or no completed step).
@@ -101,6 +100,31 @@ class Sweep:
         self.walked = ~self.col["fell"] & (self.col["steps_completed"]
                                            >= self.col["steps_requested"])
 
+    def log_spaced(self):
+        """True for positive values with a constant ratio (a geometric sweep, such as the
+        ground stiffness), drawn on a log axis."""
+        v = self.value
+        if len(v) < 3 or np.any(v <= 0):
+            return False
+        ratios = v[1:] / v[:-1]
+        return bool(np.all(ratios > 1.5) and np.ptp(np.log(ratios)) < 1e-6 * np.log(ratios[0]) + 1e-9)
+
+    def interval_text(self):
+        """The walking interval in words: empty, a single value, or from .. to."""
+        if self.walks is None:
+            if not self.walked.any():
+                return f"falls at every tested value ({len(self.value)} values)"
+            v = self.value[self.walked]
+            span = self.format(v[0]) if len(v) == 1 else (f"{v[0]:g} .. "
+                                                             f"{self.format(v[-1])}")
+            return (f"falls at the nominal {self.format(self.nominal)}; walks at {len(v)} of "
+                    f"{len(self.value)} values ({span})")
+        lo, hi = self.walks
+        if hi == lo:
+            where = "the nominal value" if lo == self.nominal else "one value"
+            return f"walks only at {where} {self.format(lo)}"
+        return f"walks from {self.format(lo)} to {self.format(hi)}"
+
     def label(self):
         """Axis label: the parameter and its unit."""
         return f"{self.name} [{self.unit}]" if self.unit else self.name
@@ -143,9 +167,9 @@ def draw_sweep(ax, sw):
         lo, hi = sw.walks
         ax.axvspan(lo, hi, **WALK_SHADE,
                    label=f"walks: {sw.format(lo)} .. {sw.format(hi)}" if hi > lo
-                   else f"walks: {sw.format(lo)}")
+                   else f"walks only at {sw.format(lo)}")
         if hi == lo:
-            ax.axvline(lo, color="tab:green", lw=3, alpha=0.3)
+            ax.axvline(lo, color=WALK_COLOUR, lw=3, alpha=0.3)
     ax.plot(sw.value, sw.col["steps_completed"], color="0.6", lw=1)
     for pick, colour, label in ((sw.walked, WALK_COLOUR, "walked"),
                                 (~sw.walked, FALL_COLOUR, "fell")):
@@ -164,11 +188,11 @@ def draw_sweep(ax, sw):
         more = twin.get_legend_handles_labels()
         handles, labels = handles + more[0], labels + more[1]
     (twin or ax).legend(handles, labels, fontsize=7, loc="upper center", ncol=3)
-    interval = ("no walking interval" if sw.walks is None
-                else f"walks over {sw.format(sw.walks[0])} .. {sw.format(sw.walks[1])}")
-    ax.set_xlabel(sw.label())
+    if sw.log_spaced():
+        ax.set_xscale("log")
+    ax.set_xlabel(sw.label() + (" (log scale)" if sw.log_spaced() else ""))
     ax.set_ylabel("steps completed")
-    ax.set_title(f"{sw.name}: {interval}", fontsize=10)
+    ax.set_title(f"{sw.name}: {sw.interval_text()}")
     ax.grid(True, alpha=0.4)
 
 
@@ -177,11 +201,20 @@ def draw_sweep(ax, sw):
 
 
 def headline(s):
-    """What was swept around, from the summary keys that are present."""
-    parts = [str(s[k]) for k in ("robot", "controller") if isinstance(s.get(k), str)]
+    """What was swept around, from the summary keys that are present: the gait (the reference
+    folder's name), the controller, the robot and the ground."""
+    parts = []
+    if isinstance(s.get("reference"), str):
+        parts.append(f"gait {os.path.basename(s['reference'].rstrip('/'))}")
+    if isinstance(s.get("controller"), str):
+        parts.append(f"{s['controller']} controller")
+    if isinstance(s.get("robot"), str):
+        parts.append(s["robot"])
     if isinstance(s.get("ground"), str):
         parts.append(f"{s['ground']} ground")
-    return "Stability sweeps" + (f": {', '.join(parts)}" if parts else "")
+    steps = s.get("steps_requested")
+    tail = f" ({steps:g} steps per run)" if plot_io.is_number(steps) else ""
+    return "Stability sweeps" + (f": {', '.join(parts)}" if parts else "") + tail
 
 
 def stability_figure(s, sweeps):
@@ -193,8 +226,8 @@ def stability_figure(s, sweeps):
         draw_sweep(ax, sw)
     for ax in axes.flat[len(sweeps):]:
         ax.set_visible(False)
-    fig.suptitle(headline(s), fontsize=11)
-    fig.tight_layout()
+    fig.suptitle(headline(s))
+    fig.tight_layout(rect=(0, 0, 1, 0.97 if rows > 1 else 0.94))
     return fig
 
 
@@ -202,8 +235,7 @@ def main(result_dir):
     s, sweeps = read_sweeps(result_dir)
     fig = stability_figure(s, sweeps)
     path = os.path.join(result_dir, "stability.png")
-    fig.savefig(path, dpi=DPI)
-    plt.close(fig)
+    style.save(fig, path)
     print(path)
 
 

@@ -10,9 +10,9 @@ robot is seen to walk across. A missing or malformed file ends the script with e
 import os
 
 import matplotlib
+import plot_style as style
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+plt = style.pyplot()
 import numpy as np  # noqa: E402
 from matplotlib import animation  # noqa: E402
 

@@ -22,16 +22,15 @@ import sys
 import textwrap
 
 import matplotlib
+import plot_style as style
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+plt = style.pyplot()
 import numpy as np  # noqa: E402
 
+import multipliers_plot  # noqa: E402
 import plot_io  # noqa: E402
 from plot_io import InputError  # noqa: E402
 
-DPI = 110
-DSP_SHADE = {"color": "tab:purple", "alpha": 0.12, "lw": 0}
 PHASES = ("SSP", "DSP")
 IMPACTS = ("double", "single", "compliant", "lcp", "")
 WALK_TAIL = ["fb_x", "fb_y", "fe_x", "fe_y", "hip_x", "hip_y"]
@@ -43,6 +42,8 @@ SUMMARY_STRINGS = ["robot", "reference", "controller", "ground", "failure"]
 # hip, hip, knee as Mu 2.39); other robots get numbered names.
 FIVE_LINKS = ["stance shank", "stance thigh", "torso", "swing thigh", "swing shank"]
 FIVE_JOINTS = ["stance ankle", "stance knee", "stance hip", "swing hip", "swing knee"]
+# Single-support stick frames drawn over a whole walk (a dozen per phase for a short walk).
+MAX_FRAMES = 60
 # A tip pushing less than this on the ground counts as unloaded for the friction ratio [N].
 LOADED_N = 1.0
 
@@ -119,18 +120,6 @@ def read_stick(path, n):
     return frames
 
 
-def read_multipliers(path, value):
-    """poincare_multipliers as a complex array, or None when null."""
-    if value is None:
-        return None
-    if not (isinstance(value, list) and all(isinstance(z, list) and len(z) == 2
-                                            and all(plot_io.is_number(v) for v in z)
-                                            for z in value)):
-        raise InputError(f"{path}: key 'poincare_multipliers': expected a list of [re, im] "
-                         f"pairs or null")
-    return np.array([complex(re_, im) for re_, im in value], dtype=complex)
-
-
 def read_summary(path):
     s = plot_io.read_json(path, "summary")
     plot_io.require_keys(path, s, SUMMARY_STRINGS[:4] + [
@@ -143,7 +132,7 @@ def read_summary(path):
     plot_io.require_type(path, s, "fell", bool, "true or false")
     if "friction" in s:
         plot_io.require_numbers(path, s, ["friction"])
-    s["multipliers"] = read_multipliers(path, s["poincare_multipliers"])
+    s["multipliers"] = plot_io.read_multipliers(path, s["poincare_multipliers"])
     return s
 
 
@@ -162,7 +151,7 @@ class Walk:
         self.theta_ref = self.stack("theta_ref", 1)
         self.tau = self.stack("tau", 0)
         self.tau_ref = self.stack("tau_ref", 0)
-        self.error = wrap(self.theta - self.theta_ref)
+        self.error = plot_io.wrap(self.theta - self.theta_ref)
 
     def stack(self, prefix, first):
         return np.column_stack([self.col[f"{prefix}{i}"] for i in range(first, first + self.n)])
@@ -195,33 +184,21 @@ class Walk:
 # Helpers
 
 
-def wrap(angle):
-    """Angle wrapped to (-pi, pi]."""
-    return -((-angle + math.pi) % (2 * math.pi) - math.pi)
-
-
 def link_colours(n):
     """Stance side blue, swing side orange, darker toward the tips; the middle link grey."""
-    mid = (n - 1) / 2
-    colours = []
-    for i in range(n):
-        depth = abs(i - mid) / max(mid, 1)
-        cmap = plt.cm.Blues if i < mid else plt.cm.Oranges
-        colours.append("0.25" if i == mid else cmap(0.45 + 0.5 * depth))
-    return colours
+    return style.link_colours(n)
 
 
 def time_colours(w):
     """(colormap, norm) over the walk's time: later frames darker."""
-    cmap = matplotlib.colors.ListedColormap(plt.cm.viridis_r(np.linspace(0.12, 1, 256)))
-    return cmap, matplotlib.colors.Normalize(w.t[0], w.t[-1])
+    return style.time_colours(w.t[0], w.t[-1])
 
 
 def mark_steps(ax, w, labels=True):
     """Shades DSP intervals and dots step starts, labelled with the step number and the impact
     that began it; a red line at the end of a walk that fell."""
     for k, (a, b) in enumerate(w.dsp_intervals()):
-        ax.axvspan(a, b, **DSP_SHADE, label="DSP" if k == 0 else None)
+        ax.axvspan(a, b, **style.DSP_SHADE, label="DSP" if k == 0 else None)
     for k, (step, t) in enumerate(w.step_starts()):
         ax.axvline(t, color="k", ls=":", lw=0.8, label="step start" if k == 0 else None)
         if labels:
@@ -233,14 +210,7 @@ def mark_steps(ax, w, labels=True):
         ax.axvline(w.t[-1], color="tab:red", lw=1.2, label="fall")
 
 
-def finish(ax, xlabel, ylabel, title=None, legend=True, **legend_kw):
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel(ylabel)
-    if title:
-        ax.set_title(title, fontsize=10)
-    ax.grid(True, alpha=0.4)
-    if legend:
-        ax.legend(fontsize=8, **legend_kw)
+finish = style.finish
 
 
 def fall_text(w, width=60):
@@ -264,12 +234,37 @@ def headline(w):
 # Panels (each draws on one axes)
 
 
+def frames_per_phase(w):
+    """Stick frames drawn per (single, double) support phase: about a dozen in a short walk,
+    fewer as the walk gets longer (MAX_FRAMES single-support frames in all)."""
+    steps = max(1, len({step for _, step, _, _ in w.frames}))
+    ssp = int(np.clip(MAX_FRAMES // steps, 2, 12))
+    return ssp, max(1, ssp // 3)
+
+
+def thin_frames(w):
+    """The stick.csv frames drawn: per step and phase, frames_per_phase() spread evenly in
+    time (the phase's first and last included)."""
+    groups = {}
+    for frame in w.frames:
+        k = min(int(np.searchsorted(w.t, frame[0])), len(w.t) - 1)
+        groups.setdefault((frame[1], bool(w.dsp[k])), []).append(frame)
+    ssp, dsp = frames_per_phase(w)
+    out = []
+    for (_, in_dsp), frames in groups.items():
+        count = min(dsp if in_dsp else ssp, len(frames))
+        picks = np.unique(np.round(np.linspace(0, len(frames) - 1, count)).astype(int))
+        out += [frames[i] for i in picks]
+    return sorted(out, key=lambda f: f[0])
+
+
 def draw_walk_stick(ax, w, colorbar=True):
     """Every stick.csv frame in the world frame coloured by time (DSP frames dashed), the hip
     path, each step's stance tip with the step number and the impact that began the step, the
     ground line and, if the walk fell, a red X at the last hip position with the failure."""
     cmap, norm = time_colours(w)
-    for t, _, starts, ends in w.frames:
+    frames = thin_frames(w)
+    for t, _, starts, ends in frames:
         k = min(int(np.searchsorted(w.t, t)), len(w.t) - 1)
         ls = "--" if w.dsp[k] else "-"
         for p, q in zip(starts, ends):
@@ -300,7 +295,9 @@ def draw_walk_stick(ax, w, colorbar=True):
         ax.figure.colorbar(matplotlib.cm.ScalarMappable(norm, cmap), ax=ax, label="time [s]",
                            shrink=0.8, pad=0.01)
     finish(ax, "x (world) [m]", "y [m]",
-           f"Stick diagram of the walk, {len(w.frames)} frames", loc="upper left", ncol=4)
+           f"Stick diagram, {len(frames)} of {len(w.frames)} frames (≤ {frames_per_phase(w)[0]} "
+           f"per SSP, {frames_per_phase(w)[1]} per DSP)", loc="upper center",
+           bbox_to_anchor=(0.5, -0.12), ncol=4)
 
 
 def draw_tracking(ax, w, legend=True):
@@ -380,25 +377,15 @@ def draw_friction(ax, w):
 
 def draw_poincare(ax, w):
     """Multipliers of the step-to-step (Poincare) map in the complex plane with the unit
-    circle: all inside means the cycle is locally stable."""
+    circle (multipliers_plot.draw_unit_circle): all inside means the cycle is locally stable."""
     z = w.s["multipliers"]
-    circle = np.linspace(0, 2 * math.pi, 361)
-    ax.plot(np.cos(circle), np.sin(circle), color="0.4", lw=1, label="unit circle")
-    inside = np.abs(z) < 1
-    for pick, colour, label in ((inside, "tab:green", "|λ| < 1"),
-                                (~inside, "tab:red", "|λ| ≥ 1")):
-        if pick.any():
-            ax.plot(z.real[pick], z.imag[pick], "o", color=colour, ms=7, label=label)
-    ax.axhline(0, color="0.7", lw=0.8)
-    ax.axvline(0, color="0.7", lw=0.8)
-    r = 1.15 * max(1.0, np.max(np.abs(z), initial=0))
-    ax.set_xlim(-r, r)
-    ax.set_ylim(-r, r)
-    ax.set_aspect("equal")
+    multipliers_plot.draw_unit_circle(ax, [(f"multipliers ({len(z)})", z, style.MULTIPLIER,
+                                            "o")])
     largest = w.s["poincare_max_multiplier"]
     verdict = "" if largest is None else (f": largest |λ| = {largest:.4g} "
                                           f"({'stable' if largest < 1 else 'unstable'})")
-    finish(ax, "Re λ", "Im λ", f"Poincaré multipliers ({len(z)}){verdict}", loc="upper left")
+    ax.set_title(f"Poincaré multipliers ({len(z)}){verdict}")
+    ax.legend(loc="upper left")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -487,8 +474,7 @@ def main(result_dir):
     for name, make in pictures(w):
         fig = make(w)
         path = os.path.join(result_dir, name)
-        fig.savefig(path, dpi=DPI)
-        plt.close(fig)
+        style.save(fig, path)
         print(path)
 
 

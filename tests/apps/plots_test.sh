@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Checks of scripts/plots/walk_plots.py and stability_plots.py on small made-up result folders:
-# the pictures they print, and "error: <file>: ..." with exit code 1 for broken inputs. Also
-# checks that gait_plots.py and impact_map.py report broken inputs through plot_io the same way.
+# Checks of scripts/plots/walk_plots.py, stability_plots.py and gait_plots.py on small made-up
+# result folders: the pictures they print, and "error: <file>: ..." with exit code 1 for broken
+# inputs. Also checks that gait_plots.py, compare_gaits.py and impact_map.py report broken inputs
+# through plot_io the same way.
 # Needs Debian's python3-matplotlib; skips (exit 0) without it.
 # Usage: plots_test.sh <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
@@ -150,6 +151,25 @@ plot stability_plots.py "$TMP/stab"
 [[ "$(cat "$TMP/out")" == "$TMP/stab/stability.png" && -s "$TMP/stab/stability.png" ]] ||
   fail "(c) output: $(cat "$TMP/out")"
 
+# (c2) the words and axes of a sweep: a geometric sweep (0.1, 0.3, 0.9) on a log axis, a linear
+# one not; no walking interval around the nominal value reads "falls at the nominal ..." when
+# other values walked and "falls at every tested value" when none did; the title names the gait.
+cp -r "$TMP/stab" "$TMP/stab2"
+edit "$TMP/stab2/sweep_friction.csv" "text = text.replace('\n0.2,', '\n0.1,').replace('\n0.4,', '\n0.3,').replace('\n0.6,', '\n0.9,')"
+edit "$TMP/stab2/summary.json" "import json; d = json.loads(text); d['reference'] = 'results/gait_x'; d['sweeps']['push'].update(walks_from=None, walks_to=None); d['sweeps']['friction'].update(walks_from=None, walks_to=None, nominal=0.1); text = json.dumps(d)"
+edit "$TMP/stab2/sweep_push.csv" "text = text.replace('0,10,10,0,,', '0,2,10,1,fell,')"
+(cd "$PLOTS" && "$PY" - "$TMP/stab2" <<'PY') || fail "(c2) sweep words and axes"
+import sys
+import stability_plots as sp
+s, (friction, push) = sp.read_sweeps(sys.argv[1])
+assert friction.log_spaced() and not push.log_spaced()
+assert friction.interval_text() == "falls at the nominal 0.1; walks at 2 of 3 values (0.3 .. 0.9)", friction.interval_text()
+assert push.interval_text() == "falls at every tested value (3 values)", push.interval_text()
+assert sp.headline(s).startswith("Stability sweeps: gait gait_x, computed_torque controller"), sp.headline(s)
+PY
+plot stability_plots.py "$TMP/stab2"
+[[ $RC -eq 0 ]] || fail "(c2) stability_plots.py exited $RC: $(cat "$TMP/err")"
+
 # (d) broken walk folders.
 make_walk "$TMP/good_walk" 2 0
 W="$TMP/w"
@@ -241,5 +261,142 @@ json.dump(d, open(sys.argv[1], 'w'))" "$TMP/hzd/summary.json"
 expect_error "(g) bad multiplier" hzd_plots.py "$TMP/hzd" \
   "$TMP/hzd/summary.json: key 'hzd.restricted_multiplier': expected a number"
 expect_error "(g) no hzd block" hzd_plots.py "$TMP/walk" "$TMP/walk/summary.json: missing key 'hzd'"
+
+# (h) gait_plots.py on a made-up gait folder (five links, 0.6 s SSP then 0.1 s DSP, ZMP 0.15 m
+# behind the heel at t = 0): every picture, the stick diagram thinned to 12 SSP + 4 DSP frames,
+# the ZMP margin drawn equal to the summary's; the foot from summary.json or, without the key,
+# no foot (point tips, a note on stderr). Then the one trajectory reader (plot_io) rejects a
+# torn row and a missing torque column, the same in gait_plots.py and compare_gaits.py.
+make_gait() {
+  "$PY" - "$@" <<'PY'
+import csv, json, math, os, sys
+out = sys.argv[1]; foot = sys.argv[2] if len(sys.argv) > 2 else "summary"
+os.makedirs(out, exist_ok=True)
+n, L, T, Ts = 5, 0.35, 0.7, 0.6
+lengths, cont = [0.332, 0.302, 0.486, 0.302, 0.332], [1, 1, 0, 1, 1]
+def pose(s):
+    a = 0.5 * (s - 0.5)
+    lift = 0.25 * math.sin(math.pi * min(s / (Ts / T), 1))
+    return [a - 0.05, a + 0.05, 0.1, math.pi - a + 0.05 - lift, math.pi - a - 0.05 + lift]
+def tips(th):
+    p = [0.0, 0.0]
+    for i in range(n):
+        q = [p[0] + lengths[i] * math.sin(th[i]), p[1] + lengths[i] * math.cos(th[i])]
+        if cont[i]: p = q
+    return p, q
+rows = []
+for k in range(71):
+    t = k / 100; s = t / T; dsp = t > Ts + 1e-9
+    th = pose(s); dth = [0.0] * n; ddth = [0.0] * n
+    hip, sw = tips(th)
+    hipp = [lengths[0]*math.sin(th[0])+lengths[1]*math.sin(th[1]), lengths[0]*math.cos(th[0])+lengths[1]*math.cos(th[1])]
+    tau = [20 * math.sin(2 * math.pi * s + j) for j in range(n)]
+    fb = [10.0, 150.0 if dsp else 290.0]; fe = [-5.0, 140.0] if dsp else [0.0, 0.0]
+    zmp = (0.3 * s - 0.2) if not dsp else 0.18
+    q = th[:]; dq = [0.0]*n
+    rows.append([t, "DSP" if dsp else "SSP"] + th + dth + ddth + q + dq + tau + fb + fe
+                + [zmp, hipp[0], hipp[1], sw[0], sw[1], hipp[0], hipp[1] + 0.1])
+with open(f"{out}/trajectory.csv", "w", newline="") as f:
+    w = csv.writer(f, lineterminator="\n")
+    w.writerow(["t", "phase"] + [f"theta{i}" for i in range(1, 6)] + [f"dtheta{i}" for i in range(1, 6)]
+               + [f"ddtheta{i}" for i in range(1, 6)] + [f"q{j}" for j in range(5)] + [f"dq{j}" for j in range(5)]
+               + [f"tau{j}" for j in range(5)] + ["fb_x", "fb_y", "fe_x", "fe_y", "zmp_x", "hip_x", "hip_y",
+               "swing_x", "swing_y", "com_x", "com_y"])
+    w.writerows(rows)
+names = ["stance_shank", "stance_thigh", "torso", "swing_thigh", "swing_shank"]
+s = {"robot": "made_up", "status": "designed", "step_length": L, "duration": T, "speed": L / T, "friction": 0.6,
+     "min_normal_force": 140.0, "max_friction_ratio": 0.05, "min_zmp_margin": -0.15,
+     "energy_J": 30.0, "cost_of_transport": 0.3, "torque_squared": 100.0,
+     "links": [{"name": a, "length": l, "continues": bool(c)} for a, l, c in zip(names, lengths, cont)],
+     "joints": [{"name": j} for j in ["stance_ankle", "stance_knee", "stance_hip", "swing_hip", "swing_knee"]]}
+if foot == "summary":
+    s["foot"] = {"heel": 0.05, "toe": 0.15}
+json.dump(s, open(f"{out}/summary.json", "w"))
+PY
+}
+make_gait "$TMP/gait"
+plot gait_plots.py "$TMP/gait"
+[[ $RC -eq 0 ]] || fail "(h) gait_plots.py exited $RC: $(cat "$TMP/err")"
+for name in joint_angles paths dsp_zmp forces torques zmp stick overview; do
+  grep -qx "$TMP/gait/$name.png" "$TMP/out" && [[ -s "$TMP/gait/$name.png" ]] ||
+    fail "(h) $name.png"
+done
+[[ $(wc -l <"$TMP/out") -eq 8 && ! -s "$TMP/err" ]] || fail "(h) output: $(cat "$TMP/out" "$TMP/err")"
+(cd "$PLOTS" && "$PY" - "$TMP/gait" <<'PY') || fail "(h) frames or ZMP margin"
+import sys
+import gait_plots
+g = gait_plots.Gait(sys.argv[1])
+frames = gait_plots.stick_frames(g)
+assert (len(frames) - sum(g.dsp[frames]), sum(g.dsp[frames])) == (12, 4), frames
+assert g.foot == (0.05, 0.15) and g.foot_source == "summary.json", (g.foot, g.foot_source)
+assert abs(g.zmp_margin().min() - g.s["min_zmp_margin"]) < 1e-9, g.zmp_margin().min()
+PY
+make_gait "$TMP/pointfoot" none
+plot gait_plots.py "$TMP/pointfoot"
+[[ $RC -eq 0 ]] && grep -q "ZMP drawn against point tips" "$TMP/err" || fail "(h) no foot: $(cat "$TMP/err")"
+G="$TMP/torn"
+make_gait "$G"
+edit "$G/trajectory.csv" "lines = text.split('\n'); lines[4] = lines[4].rsplit(',', 1)[0]; text = '\n'.join(lines)"
+expect_error "(h) torn row" gait_plots.py "$G" "$G/trajectory.csv:5: 42 fields, the header has 43"
+"$PY" "$PLOTS/compare_gaits.py" "$TMP/gait" "$G" "$TMP/cmp" >/dev/null 2>"$TMP/err"
+[[ $? -eq 1 ]] && grep -qx "error: $G/trajectory.csv:5: 42 fields, the header has 43" "$TMP/err" ||
+  fail "(h) compare_gaits.py torn row: $(cat "$TMP/err")"
+make_gait "$G"
+edit "$G/trajectory.csv" "h, rest = text.split('\n', 1); text = h.replace('tau2', 'x_tau2', 1) + '\n' + rest"
+expect_error "(h) no tau2" gait_plots.py "$G" "$G/trajectory.csv: missing column 'tau2'"
+make_gait "$G"
+edit "$G/trajectory.csv" "lines = text.split('\n'); lines[6] = '0.001' + lines[6][lines[6].index(','):]; text = '\n'.join(lines)"
+expect_error "(h) time backwards" gait_plots.py "$G" "$G/trajectory.csv:7: column 't': time goes backwards"
+make_gait "$G"
+edit "$G/trajectory.csv" "lines = text.split('\n'); lines[3] = lines[3].replace('SSP', 'DSP'); text = '\n'.join(lines)"
+expect_error "(h) DSP before SSP" gait_plots.py "$G" "$G/trajectory.csv: column 'phase': expected SSP rows followed by DSP rows"
+
+# (j) ground_chart.py: a failed walk with a path value is drawn at its own wall time (no note);
+# one without an end time is named in the note of the timing panel; the table is printed.
+mkdir -p "$TMP/ground"
+cat >"$TMP/ground/bench.csv" <<'CSV'
+ground,variant,time_step,steps,failure,hip_deviation_m,timing_s,wall_s
+rigid,RK4,0.01,10,,1e-06,1e-04,0.006
+rigid,RK4,0.005,10,,5e-07,1e-05,0.011
+soft,floor,0.001,0,"step 1: diverged: too long",1e-04,nan,0.002
+soft,floor,0.0005,10,,1e-03,2e-01,0.2
+CSV
+"$PY" "$PLOTS/ground_chart.py" "$TMP/ground/bench.csv" >"$TMP/out" 2>"$TMP/err" &&
+  [[ -s "$TMP/ground/ground_speed_accuracy.png" ]] && grep -q "^| soft | floor | 0.001 | 0 |" "$TMP/out" ||
+  fail "(j) ground_chart.py: $(cat "$TMP/err")"
+(cd "$PLOTS" && "$PY" - "$TMP/ground/bench.csv" <<'PY') || fail "(j) failed walk placement"
+import sys
+import ground_chart as gc
+import plot_io
+rows = plot_io.read_csv(sys.argv[1], "ground bench", gc.NAMES, strings=gc.STRINGS, finite=False)
+fig, (a, b) = gc.plt.subplots(1, 2)
+assert gc.draw(a, rows, "hip_deviation_m", "path: y") == []
+notes = gc.draw(b, rows, "timing_s", "timing: y")
+assert notes == ["soft (floor), h = 0.001 s failed: step 1: diverged: no timing value to draw"], notes
+xs = [x for line in a.lines for x in line.get_xdata() if line.get_marker() == "X"]
+assert 0.002 in xs, xs
+PY
+
+# (i) multipliers_plot.py: the walks with multipliers on the unit circle, a walk that fell named
+# as having none; a malformed multiplier list is an error naming the file and key.
+plot_multipliers() {
+  "$PY" "$PLOTS/multipliers_plot.py" "$@" >"$TMP/out" 2>"$TMP/err"
+  RC=$?
+}
+plot_multipliers "$TMP/mult.png" "$TMP/walk" "$TMP/fell"
+[[ $RC -eq 0 && -s "$TMP/mult.png" ]] && grep -qx "$TMP/mult.png" "$TMP/out" ||
+  fail "(i) multipliers_plot.py exited $RC: $(cat "$TMP/err")"
+(cd "$PLOTS" && "$PY" - "$TMP/walk" "$TMP/fell" <<'PY') || fail "(i) walks read"
+import sys
+import multipliers_plot as mp
+(label, z, _), (_, none, outcome) = mp.read_walk(sys.argv[1]), mp.read_walk(sys.argv[2])
+assert label == "ref, computed_torque, rigid ground" and len(z) == 3 and abs(abs(z).max() - 0.5) < 1e-12
+assert none is None and outcome.startswith("fell: fell: hip below"), outcome
+PY
+cp -r "$TMP/walk" "$TMP/badmult"
+edit "$TMP/badmult/summary.json" "import json; d = json.loads(text); d['poincare_multipliers'] = [[1]]; text = json.dumps(d)"
+plot_multipliers "$TMP/m2.png" "$TMP/badmult"
+[[ $RC -eq 1 ]] && grep -q "^error: $TMP/badmult/summary.json: key 'poincare_multipliers'" "$TMP/err" ||
+  fail "(i) bad multipliers: $RC $(cat "$TMP/err")"
 
 echo "plots_test: all checks passed"
