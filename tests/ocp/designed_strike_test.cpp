@@ -17,12 +17,10 @@
 #include "dynamics/floating_base.hpp"
 #include "dynamics/impact.hpp"
 #include "dynamics/kinematics.hpp"
-#include "dynamics/robot_config.hpp"
 #include "gaits/metrics.hpp"
 #include "ocp/gait_problem.hpp"
-#include "ocp/initial_guess.hpp"
-#include "ocp/ipopt_adapter.hpp"
 #include "ocp/resimulation.hpp"
+#include "support/solved_config.hpp"
 
 namespace gaitopt::ocp {
 namespace {
@@ -103,39 +101,23 @@ TEST(DesignedStrikeConfig, BadRangesAndUnknownKeysAreErrorsNamingFileAndKey) {
 
 class DesignedStrike : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
-    config_ = new OcpConfig(loadOcpConfig(kConfig));
-    model_ = new dynamics::Model(dynamics::loadRobot(config_->robot_path));
-    problem_ =
-        new GaitProblem(buildGaitProblem(*model_, *config_, polynomialGuess(*model_, *config_)));
-    result_ = new SolveResult(solveWithIpopt(problem_->nlp, config_->solver));
-  }
-  static void TearDownTestSuite() {
-    delete result_;
-    delete problem_;
-    delete model_;
-    delete config_;
-  }
+  static void SetUpTestSuite() { solved_ = new test::SolvedConfig(loadOcpConfig(kConfig)); }
+  static void TearDownTestSuite() { delete solved_; }
   /// The solution's strike state (last SSP point).
   static ChainState strikeState() {
-    return sspPointState(*problem_, result_->x, problem_->ssp.layout.points() - 1);
+    return sspPointState(solved_->problem, solved_->result.x,
+                         solved_->problem.ssp.layout.points() - 1);
   }
-  static OcpConfig* config_;
-  static dynamics::Model* model_;
-  static GaitProblem* problem_;
-  static SolveResult* result_;
+  static test::SolvedConfig* solved_;
 };
-OcpConfig* DesignedStrike::config_ = nullptr;
-dynamics::Model* DesignedStrike::model_ = nullptr;
-GaitProblem* DesignedStrike::problem_ = nullptr;
-SolveResult* DesignedStrike::result_ = nullptr;
+test::SolvedConfig* DesignedStrike::solved_ = nullptr;
 
 TEST_F(DesignedStrike, ConvergesWithTheStrikeInsideItsRanges) {
-  ASSERT_EQ(result_->status, "Solve_Succeeded");
-  RecordProperty("cost", fmt::format("{:.4f}", result_->cost));
-  RecordProperty("iterations", result_->iterations);
+  ASSERT_EQ(solved_->result.status, "Solve_Succeeded");
+  RecordProperty("cost", fmt::format("{:.4f}", solved_->result.cost));
+  RecordProperty("iterations", solved_->result.iterations);
   const auto [theta, dtheta] = strikeState();
-  const Vec2d v = dynamics::pointVelocity<double>(model_->tipWeights(), theta, dtheta);
+  const Vec2d v = dynamics::pointVelocity<double>(solved_->model.tipWeights(), theta, dtheta);
   const double alpha = std::atan2(-v.y(), -v.x());  // Xdot_e^- = -V_e (cos a, sin a)
   RecordProperty("normal_velocity", fmt::format("{:.4f}", -v.y()));
   RecordProperty("strike_angle_deg", fmt::format("{:.2f}", alpha / kDeg));
@@ -145,8 +127,8 @@ TEST_F(DesignedStrike, ConvergesWithTheStrikeInsideItsRanges) {
   EXPECT_LE(alpha, 140 * kDeg + 1e-6);
   // A real impact now: the double impact's loss, 1/2 dq-^T D dq- - 1/2 dq+^T D dq+ with the
   // floating-base D (q = (x_b, y_b, theta)), is positive and the NLP's own account agrees.
-  const auto impact = dynamics::doubleImpact(*model_, theta, dtheta);
-  const Eigen::MatrixXd d = dynamics::floatingBaseMassMatrix<double>(*model_, theta);
+  const auto impact = dynamics::doubleImpact(solved_->model, theta, dtheta);
+  const Eigen::MatrixXd d = dynamics::floatingBaseMassMatrix<double>(solved_->model, theta);
   Eigen::VectorXd before = Eigen::VectorXd::Zero(d.rows()), after = before;
   before.tail(theta.size()) = dtheta;
   after.tail(theta.size()) = impact.dtheta_plus;
@@ -155,35 +137,36 @@ TEST_F(DesignedStrike, ConvergesWithTheStrikeInsideItsRanges) {
   // Mu's refined criterion (sec. 5.3) on the strike state: the double impact the config models
   // is the one the state admits.
   RecordProperty("impact_admitted",
-                 dynamics::toString(dynamics::classifyImpact(*model_, theta, dtheta)));
-  EXPECT_EQ(dynamics::classifyImpact(*model_, theta, dtheta), dynamics::ImpactType::kDouble);
+                 dynamics::toString(dynamics::classifyImpact(solved_->model, theta, dtheta)));
+  EXPECT_EQ(dynamics::classifyImpact(solved_->model, theta, dtheta), dynamics::ImpactType::kDouble);
   EXPECT_GT(loss, 1e-3);
-  EXPECT_NEAR(*problem_->touchdown.energyLoss(*model_, result_->x), loss, 1e-5 * (1 + loss));
+  EXPECT_NEAR(*solved_->problem.touchdown.energyLoss(solved_->model, solved_->result.x), loss,
+              1e-5 * (1 + loss));
 }
 
 TEST_F(DesignedStrike, ReSimulatedSwingTipLandsWithTheConfiguredVelocity) {
 #ifndef NDEBUG
   GTEST_SKIP() << "a solve and a re-simulation: optimised builds only";
 #endif
-  ASSERT_EQ(result_->status, "Solve_Succeeded");
+  ASSERT_EQ(solved_->result.status, "Solve_Succeeded");
   // From the solution's state at the start of the last SSP segment, under the scheme's own
   // torques (held at their last value past the end), until the tip crosses y = 0.
-  const PhaseLayout& l = problem_->ssp.layout;
-  const double total = l.durationAt(result_->x);
+  const PhaseLayout& l = solved_->problem.ssp.layout;
+  const double total = l.durationAt(solved_->result.x);
   const int first = l.pointsPerSegment() * (l.segments - 1);
   const double t0 = l.time(first, total);
-  const auto [theta0, dtheta0] = sspPointState(*problem_, result_->x, first);
-  const auto torque = sspTorque(*problem_, result_->x);
+  const auto [theta0, dtheta0] = sspPointState(solved_->problem, solved_->result.x, first);
+  const auto torque = sspTorque(solved_->problem, solved_->result.x);
   std::vector<double> times;
   const int samples = 2000;
   for (int i = 0; i <= samples; ++i) times.push_back(i * (total - t0 + 0.02) / samples);
   double prev_y = 1, prev_t = 0, t_cross = NAN, v_cross = NAN;
   Vec2d prev_v = Vec2d::Zero();
   simulateSsp(
-      *model_, theta0, dtheta0, [&](double t) { return torque(t0 + t); }, times, 1e-12,
+      solved_->model, theta0, dtheta0, [&](double t) { return torque(t0 + t); }, times, 1e-12,
       [&](double t, const VecD& th, const VecD& dth) {
-        const double y = dynamics::swingTip<double>(*model_, th).y();
-        const Vec2d v = dynamics::pointVelocity<double>(model_->tipWeights(), th, dth);
+        const double y = dynamics::swingTip<double>(solved_->model, th).y();
+        const Vec2d v = dynamics::pointVelocity<double>(solved_->model.tipWeights(), th, dth);
         if (std::isnan(t_cross) && prev_y > 0 && y <= 0) {
           const double s = prev_y / (prev_y - y);  // linear in between the samples
           t_cross = t0 + prev_t + s * (t - prev_t);
@@ -200,7 +183,8 @@ TEST_F(DesignedStrike, ReSimulatedSwingTipLandsWithTheConfiguredVelocity) {
   EXPECT_GE(v_cross, 0.05 - 1e-3);
   EXPECT_LE(v_cross, 0.3 + 1e-3);
   const auto [theta, dtheta] = strikeState();
-  EXPECT_NEAR(v_cross, -dynamics::pointVelocity<double>(model_->tipWeights(), theta, dtheta).y(),
+  EXPECT_NEAR(v_cross,
+              -dynamics::pointVelocity<double>(solved_->model.tipWeights(), theta, dtheta).y(),
               1e-3);
 }
 

@@ -15,28 +15,13 @@
 #include "dynamics/impact.hpp"
 #include "dynamics/robot_config.hpp"
 #include "ocp/gait_problem.hpp"
-#include "ocp/initial_guess.hpp"
-#include "ocp/ipopt_adapter.hpp"
+#include "support/solved_config.hpp"
 
 namespace gaitopt::ocp {
 namespace {
 
-std::string shipped(const std::string& name) {
-  return std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/" + name + ".yaml";
-}
-
-/// A shipped config solved in place (the problem's sets point to the model: never moved).
-struct Solved {
-  explicit Solved(OcpConfig c)
-      : config(std::move(c)),
-        model(problemModel(config)),
-        problem(buildGaitProblem(model, config, initialGuess(model, config))),
-        result(solveWithIpopt(problem.nlp, config.solver)) {}
-  OcpConfig config;
-  dynamics::Model model;
-  GaitProblem problem;
-  SolveResult result;
-};
+using test::shippedOcpConfig;
+using Solved = test::SolvedConfig;
 
 TEST(SingleImpactCone, CompassGaitHeelStrikeNeedsNoMoreFrictionThanTheGroundHas) {
 #ifndef NDEBUG
@@ -44,7 +29,7 @@ TEST(SingleImpactCone, CompassGaitHeelStrikeNeedsNoMoreFrictionThanTheGroundHas)
 #endif
   // The shipped config leaves the impulse out of its cone: its optimum strikes with
   // |P_x| / P_y = 1.05 against mu = 0.8. With the cone on, the strike keeps within it.
-  OcpConfig c = loadOcpConfig(shipped("compass_gait_walk"));
+  OcpConfig c = loadOcpConfig(shippedOcpConfig("compass_gait_walk"));
   ASSERT_FALSE(c.impact_friction);
   c.impact_friction = true;
   const Solved s(c);
@@ -64,7 +49,7 @@ TEST(DspFootCentreOfPressure, StaysOnTheTorqueCarryingFootBetweenTheNodes) {
 #ifndef NDEBUG
   GTEST_SKIP() << "a solve: optimised builds only";
 #endif
-  const Solved s(loadOcpConfig(shipped("mu2004_walk")));
+  const Solved s(loadOcpConfig(shippedOcpConfig("mu2004_walk")));
   ASSERT_EQ(s.result.status, "Solve_Succeeded");
   const auto dense = reconstructDense(s.problem, s.model, s.result.x, 1000);
   const dynamics::Foot& foot = s.model.foot();
@@ -100,8 +85,8 @@ TEST(JointVelocityLimits, BindTheKneesOfTheDefaultGaitAtTheRobotsLimit) {
 #endif
   // The default problem bounds absolute link rates only; its knees then turn faster than the
   // robot file allows. With the robot's joint limits on, every 1 kHz sample keeps within them.
-  const Solved free_rates(loadOcpConfig(shipped("mu2004_walk")));
-  OcpConfig c = loadOcpConfig(shipped("mu2004_walk"));
+  const Solved free_rates(loadOcpConfig(shippedOcpConfig("mu2004_walk")));
+  OcpConfig c = loadOcpConfig(shippedOcpConfig("mu2004_walk"));
   c.joint_velocity_limits = true;
   const Solved limited(c);
   ASSERT_EQ(free_rates.result.status, "Solve_Succeeded");
