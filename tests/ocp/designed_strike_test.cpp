@@ -7,7 +7,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <numbers>
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -27,7 +26,6 @@ namespace {
 
 const std::string kConfig =
     std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/mu2004_walk_strike.yaml";
-constexpr double kDeg = std::numbers::pi / 180;
 
 /// The message of loading the shipped strike config with `from` replaced by `to` ("" when it
 /// loads).
