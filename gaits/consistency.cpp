@@ -4,6 +4,7 @@
 
 #include "dynamics/dsp_dynamics.hpp"
 #include "dynamics/relabel.hpp"
+#include "gaits/metrics.hpp"
 
 namespace gaitopt::gaits {
 
@@ -24,8 +25,12 @@ double maxDynamicsResidual(const Trajectory& traj, const dynamics::Model& model)
 double periodicityError(const Trajectory& traj, const dynamics::Model& model) {
   const Knot& first = traj.knots().front();
   const Knot& last = traj.knots().back();
+  // An SSP-only step ends just before its strike: the next step starts after the single impact.
+  VecD end_rates = last.dtheta;
+  if (const auto impact = touchdownImpact(traj, model); impact && !impact->double_impact)
+    end_rates = impact->dtheta_plus;
   const VecD theta = dynamics::relabelAngles<double>(model, last.theta);
-  const VecD dtheta = dynamics::relabelRates<double>(last.dtheta);
+  const VecD dtheta = dynamics::relabelRates<double>(end_rates);
   return (theta - VecD(first.theta)).cwiseAbs().maxCoeff() +
          (dtheta - VecD(first.dtheta)).cwiseAbs().maxCoeff();
 }

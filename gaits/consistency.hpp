@@ -12,7 +12,8 @@ namespace gaitopt::gaits {
 double maxDynamicsResidual(const Trajectory& traj, const dynamics::Model& model);
 
 /// |relabel(theta_end) - theta_start|_inf + |relabel(dtheta_end) - dtheta_start|_inf (Mu 2.38):
-/// zero for a gait that repeats step after step.
+/// zero for a gait that repeats step after step. A step without a DSP ends at its strike, so
+/// dtheta_end is taken after the single impact (Mu 2.36a, metrics.hpp touchdownImpact).
 double periodicityError(const Trajectory& traj, const dynamics::Model& model);
 
 }  // namespace gaitopt::gaits

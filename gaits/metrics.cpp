@@ -123,27 +123,25 @@ double minZmpMargin(const Trajectory& traj, const dynamics::Model& model) {
   return lowest;
 }
 
-namespace {
-
-/// The state before touchdown and the rates after the rigid double impact (Mu 2.27-2.28) that
-/// the DSP would have to start from if the swing tip hit the ground with that state's
-/// velocity; empty without a DSP.
-struct TouchdownImpact {
-  VecD theta, dtheta_minus, dtheta_plus;
-};
-
 std::optional<TouchdownImpact> touchdownImpact(const Trajectory& traj,
                                                const dynamics::Model& model) {
   requireSameRobot(traj, model);
+  const auto& knots = traj.knots();
   const auto k = touchdownKnot(traj);
-  if (!k) return std::nullopt;
-  const Knot& pre = traj.knots()[*k];
-  TouchdownImpact t{pre.theta, pre.dtheta, {}};
-  t.dtheta_plus = dynamics::doubleImpact(model, t.theta, t.dtheta_minus).dtheta_plus;
+  // An SSP-only step ends at its strike: a single impact (no DSP follows).
+  if (!k && (knots.empty() || knots.back().phase != Phase::kSsp)) return std::nullopt;
+  TouchdownImpact t;
+  t.knot = k ? *k : knots.size() - 1;
+  t.double_impact = k.has_value();
+  const Knot& pre = knots[t.knot];
+  t.theta = pre.theta;
+  t.dtheta_minus = pre.dtheta;
+  const auto impact = t.double_impact ? dynamics::doubleImpact(model, t.theta, t.dtheta_minus)
+                                      : dynamics::singleImpact(model, t.theta, t.dtheta_minus);
+  t.dtheta_plus = impact.dtheta_plus;
+  t.trailing_velocity = impact.trailing_velocity;
   return t;
 }
-
-}  // namespace
 
 double touchdownVelocityJump(const Trajectory& traj, const dynamics::Model& model) {
   const auto t = touchdownImpact(traj, model);
@@ -153,8 +151,9 @@ double touchdownVelocityJump(const Trajectory& traj, const dynamics::Model& mode
 double impactEnergyLoss(const Trajectory& traj, const dynamics::Model& model) {
   const auto t = touchdownImpact(traj, model);
   if (!t) return 0.0;
+  // After a single impact B moves (Mu 2.36b): its velocity carries kinetic energy too.
   return dynamics::kineticEnergy<double>(model, t->theta, t->dtheta_minus) -
-         dynamics::kineticEnergy<double>(model, t->theta, t->dtheta_plus);
+         dynamics::kineticEnergy<double>(model, t->theta, t->dtheta_plus, t->trailing_velocity);
 }
 
 }  // namespace gaitopt::gaits

@@ -3,6 +3,8 @@
 /// Gait metrics, one function each, shared by the polynomial gait and the optimiser's reports
 /// (DESIGN.md sec. 5, summary.json). Integrals use the trapezoidal rule over the knots of each
 /// phase (a zero-length interval at a phase switch contributes nothing).
+#include <optional>
+
 #include <Eigen/Core>
 
 #include "dynamics/model.hpp"
@@ -28,10 +30,24 @@ double zmpX(const Knot& knot, double step_length);
 /// Smallest signed distance from the ZMP to the support boundary [m]: SSP support
 /// [-heel, toe] around B; DSP support [-heel, step_length + toe]. Negative when outside.
 double minZmpMargin(const Trajectory& traj, const dynamics::Model& model);
-/// Norm of the jump in dtheta that the rigid double impact (Mu 2.28) would cause at touchdown,
-/// from the last SSP knot [rad/s]; zero for a trajectory without a DSP.
+/// The touchdown of a step: the last SSP knot before the DSP meets the rigid double impact
+/// (Mu 2.27-2.28); an SSP-only step ends at its strike and meets the single impact (2.34-2.36,
+/// the old stance tip B lifts off with trailing_velocity).
+struct TouchdownImpact {
+  size_t knot = 0;            ///< index of the pre-impact knot
+  bool double_impact = true;  ///< else single
+  VecD theta, dtheta_minus, dtheta_plus;
+  Vec2d trailing_velocity = Vec2d::Zero();  ///< Xdot_b^+ [m/s], zero for a double impact
+};
+/// The impact at touchdown; empty for a step that neither has a DSP nor ends in the SSP.
+/// @throws std::invalid_argument when trajectory and robot differ in links.
+std::optional<TouchdownImpact> touchdownImpact(const Trajectory& traj,
+                                               const dynamics::Model& model);
+/// Norm of the jump in dtheta that this impact causes [rad/s] (zero when the swing tip
+/// arrives at rest).
 double touchdownVelocityJump(const Trajectory& traj, const dynamics::Model& model);
-/// Kinetic energy lost in that impact [J].
+/// Kinetic energy lost in that impact, 1/2 dq-^T D dq- - 1/2 dq+^T D dq+ with q = (x_b, y_b,
+/// theta) [J].
 double impactEnergyLoss(const Trajectory& traj, const dynamics::Model& model);
 
 }  // namespace gaitopt::gaits

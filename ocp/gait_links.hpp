@@ -41,6 +41,26 @@ struct StrikeVelocity {
   }
 };
 
+/// y = (theta_end, dtheta_end): the strike angle alpha of the swing tip's velocity (Mu ch. 5,
+/// Xdot_e^- = -V_e (cos alpha, sin alpha), alpha in [0, pi] for a descending tip) kept in
+/// [lo, hi] without an inverse trigonometric function: with d = -Xdot_e^- = V_e (cos alpha,
+/// sin alpha), g0 = u(lo) x d = V_e sin(alpha - lo) and g1 = d x u(hi) = V_e sin(hi - alpha),
+/// both >= 0 exactly when lo <= alpha <= hi (all in [0, pi]). Linear in the rates.
+struct StrikeAngle {
+  const dynamics::Model* model;
+  double lo, hi;  ///< [rad]
+  template <class S>
+  dynamics::VecX<S> operator()(const dynamics::VecX<S>& y) const {
+    using std::cos, std::sin;
+    const PointLayout strike = PointLayout::biped(model->nLinks(), false, false);
+    const Vec2<S> d = -dynamics::pointVelocity<S>(model->tipWeights(), Vec<S>(strike.q.of(y)),
+                                                  Vec<S>(strike.v.of(y)));
+    dynamics::VecX<S> g(2);
+    g << cos(lo) * d(1) - sin(lo) * d(0), sin(hi) * d(0) - cos(hi) * d(1);
+    return g;
+  }
+};
+
 /// y = (strike state (theta_end, dtheta-), impact variables (ImpactLayout)): impact residual.
 struct RigidImpact {
   const dynamics::Model* model;

@@ -140,6 +140,9 @@ void addPhaseConstraints(GaitProblem& p, const dynamics::Model& model, const Ocp
   p.nlp.addConstraint(
       std::make_unique<CollocationDefects>(phase.name() + "_defects", phase.name(), phase.layout));
   addPathConstraint(p, phase, "dynamics", std::make_shared<BipedDynamics>(model, phase.point));
+  if (c.joint_velocity_limits)
+    addPathConstraint(p, phase, "joint_rates",
+                      std::make_shared<JointRateLimits>(model, phase.point));
   if (c.knee_limits && model.legLinks() == 2)
     addPathConstraint(p, phase, "knees", std::make_shared<KneeDirection>(phase.point));
   if (c.ground_contact) {

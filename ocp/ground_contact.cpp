@@ -26,6 +26,12 @@ GroundContact::GroundContact(const dynamics::Model& model, const PointLayout& po
     // M = step_length F_Ey - tau0; M + heel Fy >= 0 and hi Fy - M >= 0.
     rows.push_back(Row(0, heel, 0, step_length + heel, -1));
     rows.push_back(Row(0, hi, 0, hi - step_length, 1));
+    // In the DSP only foot B carries the ankle torque: its own CoP x_B = -tau0 / F_By also
+    // stays on it, -heel F_By <= -tau0 <= toe F_By (the hull alone allows far more tau0).
+    if (dsp) {
+      rows.push_back(Row(0, heel, 0, 0, -1));
+      rows.push_back(Row(0, model.foot().toe, 0, 0, 1));
+    }
   }
   rows_.resize(static_cast<Eigen::Index>(rows.size()), 5);
   for (size_t r = 0; r < rows.size(); ++r) rows_.row(static_cast<Eigen::Index>(r)) = rows[r];

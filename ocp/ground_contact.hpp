@@ -5,6 +5,8 @@
 ///   F_By, mu F_By - F_Bx, mu F_By + F_Bx                 (unilateral, Coulomb friction at B)
 ///   F_Ey, mu F_Ey - F_Ex, mu F_Ey + F_Ex                 (the same at E, DSP only)
 ///   M + heel Fy, hi Fy - M                                (ZMP in [-heel, hi], if enabled)
+///   heel F_By - tau0, toe F_By + tau0                     (foot B's own CoP -tau0 / F_By in
+///                                                          [-heel, toe], DSP with the ZMP)
 /// with F_B = m (a_com + g e_y) - F_E from total linear momentum (ground.hpp), F_E = lambda,
 /// M = x_zmp Fy = step_length F_Ey - tau0 (moment of the ground wrench about B, ground moment
 /// -tau0), Fy = F_By + F_Ey, hi = toe (SSP) or step_length + toe (DSP).

@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <numbers>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -62,9 +64,11 @@ ClearanceProfile readClearance(const YamlReader& r) {
 }
 
 void readConstraints(const YamlReader& r, OcpConfig& c) {
-  r.allowOnly({"torque_limits", "knee_limits", "angle_range", "rate_limit", "swing_descends",
-               "trailing_lifts", "ground_contact", "zmp", "clearance", "friction_margin"});
+  r.allowOnly({"torque_limits", "knee_limits", "angle_range", "rate_limit", "joint_velocity_limits",
+               "swing_descends", "trailing_lifts", "ground_contact", "impact_friction", "zmp",
+               "clearance", "friction_margin"});
   c.ground_contact = r.booleanOr("ground_contact", true);
+  c.impact_friction = r.booleanOr("impact_friction", true);
   c.zmp = r.booleanOr("zmp", true);
   c.friction_margin = r.numberOr("friction_margin", 0.0, config::inRange(0, 1, "(of mu)"));
   if (r.has("clearance")) c.clearance = readClearance(r.map("clearance"));
@@ -72,8 +76,34 @@ void readConstraints(const YamlReader& r, OcpConfig& c) {
   c.knee_limits = r.booleanOr("knee_limits", true);
   c.angle_range = r.numberOr("angle_range", 0.0, config::inRange(0, std::numbers::pi, "[rad]"));
   c.rate_limit = r.numberOr("rate_limit", 0.0, config::inRange(0, 100, "[rad/s]"));
+  c.joint_velocity_limits = r.booleanOr("joint_velocity_limits", false);
   c.swing_descends = r.booleanOr("swing_descends", true);
   c.trailing_lifts = r.booleanOr("trailing_lifts", true);
+}
+
+/// A [min, max] pair under `key`, each value checked; min > max is an error naming the key.
+std::pair<double, double> readRange(const YamlReader& r, const std::string& key,
+                                    const config::NumberCheck& check) {
+  const std::vector<double> v = r.numbers(key, check);
+  if (v.size() != 2) r.fail(key, fmt::format("expected [min, max], got {} numbers", v.size()));
+  if (v[0] > v[1]) r.fail(key, fmt::format("expected min <= max, got [{}, {}]", v[0], v[1]));
+  return {v[0], v[1]};
+}
+
+StrikeDesign readTouchdown(const YamlReader& r) {
+  r.allowOnly({"normal_velocity", "angle"});
+  StrikeDesign d{.enabled = true};
+  std::tie(d.normal_min, d.normal_max) =
+      readRange(r, "normal_velocity", config::inRange(0, 5, "[m/s], downward"));
+  if (r.has("angle")) {
+    d.angle = true;
+    std::tie(d.angle_min, d.angle_max) =
+        readRange(r, "angle", config::angleInRange(0, std::numbers::pi));
+    // The angle of a tip at rest is undefined (rows that bound it degenerate at V_e = 0).
+    if (!(d.normal_min > 0))
+      r.fail("normal_velocity", "a bounded strike angle needs a normal velocity min > 0");
+  }
+  return d;
 }
 
 CostWeights readCost(const YamlReader& r) {
@@ -129,7 +159,7 @@ OcpConfig loadOcpConfig(const std::string& path) {
   const YamlReader root = YamlReader::fromFile(path);
   root.allowOnly({"name", "description", "robot", "initial_guess", "step_length", "phases",
                   "step_duration", "scheme", "impact", "cost", "mesh_refinement", "constraints",
-                  "solver", "slope"});
+                  "solver", "slope", "touchdown"});
   OcpConfig c;
   c.name = root.string("name");
   root.stringOr("description", "");
@@ -160,6 +190,13 @@ OcpConfig loadOcpConfig(const std::string& path) {
   c.cost = readCost(root.map("cost"));
   if (root.has("mesh_refinement")) c.refinement = readRefinement(root.map("mesh_refinement"));
   if (root.has("constraints")) readConstraints(root.map("constraints"), c);
+  if (root.has("touchdown")) {
+    c.touchdown = readTouchdown(root.map("touchdown"));
+    if (c.impact == ImpactModel::kImpactless)
+      root.fail("touchdown",
+                "a designed strike needs a rigid impact (single or double), not "
+                "an impactless touchdown");
+  }
   if (root.has("solver")) readSolver(root.map("solver"), c.solver);
   return c;
 }

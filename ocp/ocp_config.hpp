@@ -46,6 +46,20 @@ struct MeshRefinement {
 /// stay; leads into a DSP), or impactless (zero swing-tip velocity at touchdown, Mu ch. 3).
 enum class ImpactModel { kSingle, kDouble, kImpactless };
 
+/// A designed strike (DESIGN.md sec. 6): the swing tip hits the ground with a downward normal
+/// velocity v_n = -ydot_e^- in [normal_min, normal_max] [m/s] and, optionally, at a strike
+/// angle alpha = cot^-1(xdot_e^- / ydot_e^-) in [angle_min, angle_max] [rad] (Mu ch. 5: the
+/// angle between the tip velocity and the -x axis, 0..pi, pi/2 straight down, > pi/2 moving
+/// forward; Xdot_e^- = -V_e (cos alpha, sin alpha)). Mu's Fig. 5.7 puts the flat part of the
+/// single-impact sector, |mu_S| < 0.5, at 50 deg < alpha < 140 deg for S_L < 1.35 m.
+/// A tip that lands at rest makes touchdown time go as the square root of a height error.
+struct StrikeDesign {
+  bool enabled = false;
+  double normal_min = 0, normal_max = 0;  ///< [m/s], 0 <= min <= max
+  bool angle = false;                     ///< whether the angle is bounded
+  double angle_min = 0, angle_max = 0;    ///< [rad], 0 <= min <= max <= pi
+};
+
 /// The `initial_guess` value that asks for the straight-leg guess instead of a gait file.
 inline constexpr const char* kStraightLegGuess = "straight_leg";
 
@@ -66,13 +80,19 @@ struct OcpConfig {
   CostWeights cost;
   MeshRefinement refinement;
   // Constraint switches and bounds.
-  bool torque_limits = true;   ///< |tau_j| <= robot torque limit; unactuated joints at 0
-  bool knee_limits = true;     ///< knees never hyperextend (stance q1 >= 0, swing <= 0)
-  double angle_range = 0;      ///< |theta - upright| bound per link [rad] (0: off)
-  double rate_limit = 0;       ///< |dtheta| bound [rad/s] (0: off)
+  bool torque_limits = true;  ///< |tau_j| <= robot torque limit; unactuated joints at 0
+  bool knee_limits = true;    ///< knees never hyperextend (stance q1 >= 0, swing <= 0)
+  double angle_range = 0;     ///< |theta - upright| bound per link [rad] (0: off)
+  double rate_limit = 0;      ///< |dtheta| bound [rad/s] (0: off)
+  /// |dq_j| <= the robot's velocity_limit per joint, dq = M dtheta (Mu 2.41)
+  bool joint_velocity_limits = false;
   bool swing_descends = true;  ///< swing tip vertical velocity <= 0 at strike
+  StrikeDesign touchdown;      ///< the designed strike (config key `touchdown`), rigid impacts
   bool trailing_lifts = true;  ///< old stance tip vertical velocity >= 0 after a single impact
   bool ground_contact = true;  ///< unilateral forces and friction cones at the tips in contact
+  /// With ground_contact: the rigid impact's impulses inside their friction cones and pushing
+  /// up (Mu 2.31 double, 2.37b single impact).
+  bool impact_friction = true;
   bool zmp = true;             ///< ZMP inside the support (only if the ankle is actuated)
   ClearanceProfile clearance;  ///< swing tip height >= h(t / T_SSP) in the SSP
   /// Friction cones narrowed to |F_t| <= (mu - friction_margin) F_n, forces and impulses, so a

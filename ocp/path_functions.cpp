@@ -58,6 +58,24 @@ void WorkSplit::hessian(const Eigen::VectorXd&, const Eigen::VectorXd& w,
   }
 }
 
+JointRateLimits::JointRateLimits(const dynamics::Model& model, const PointLayout& point)
+    : point_(point), limit_(point.n) {
+  for (int j = 0; j < point.n; ++j)
+    limit_(j) = model.joints()[static_cast<size_t>(j)].velocity_limit;
+}
+
+void JointRateLimits::evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const {
+  for (int j = 0; j < point_.n; ++j) f(j) = jointRate(v, point_, j);
+}
+
+void JointRateLimits::jacobian(const Eigen::VectorXd&, Eigen::Ref<Eigen::MatrixXd> jac) const {
+  jac.setZero();
+  for (int j = 0; j < point_.n; ++j) {  // row j of M (2.41)
+    jac(j, point_.v[j]) = j == 0 ? 1.0 : -1.0;
+    if (j > 0) jac(j, point_.v[j - 1]) = 1.0;
+  }
+}
+
 void KneeDirection::evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const {
   const Slice& q = point_.q;
   f << v(q[0]) - v(q[1]), v(q[q.size - 2]) - v(q[q.size - 1]);

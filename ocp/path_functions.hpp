@@ -84,6 +84,26 @@ class KneeDirection : public PointFunction {
   PointLayout point_;
 };
 
+/// Physical joint rates dq = M dtheta (Mu 2.39-2.41: dq_0 = dtheta_0, dq_j = dtheta_{j-1} -
+/// dtheta_j) within the robot file's joint velocity limits, |dq_j| <= velocity_limit_j [rad/s].
+class JointRateLimits : public PointFunction {
+ public:
+  JointRateLimits(const dynamics::Model& model, const PointLayout& point);
+  int rows() const override { return point_.n; }
+  void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override;
+  void jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const override;
+  void hessian(const Eigen::VectorXd&, const Eigen::VectorXd&,
+               Eigen::Ref<Eigen::MatrixXd> hess) const override {
+    hess.setZero();
+  }
+  Eigen::VectorXd lowerBounds() const override { return -limit_; }
+  Eigen::VectorXd upperBounds() const override { return limit_; }
+
+ private:
+  PointLayout point_;
+  Eigen::VectorXd limit_;  ///< per joint [rad/s]
+};
+
 /// Swing-tip height above the ground, y_E = sum_j a_j l_j cos(theta_j) (Mu 2.1) [m]; never
 /// below it.
 class SwingHeight : public PointFunction {

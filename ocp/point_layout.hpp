@@ -83,7 +83,7 @@ struct ImpactLayout {
   bool doubleImpact() const { return impulse_trailing.size > 0; }
   /// qdot+ = (base velocity, dtheta+).
   Slice qdotPlus() const { return {base_velocity.start, base_velocity.size + rates_after.size}; }
-  /// (P_E, P_B), double impact only.
+  /// (P_E[, P_B]): the impulses, P_B for a double impact only.
   Slice impulses() const {
     return {impulse_leading.start, impulse_leading.size + impulse_trailing.size};
   }

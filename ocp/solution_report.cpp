@@ -74,6 +74,25 @@ nlohmann::ordered_json violationJson(const Violation& v, const std::string& name
           {"violation", v.amount}};
 }
 
+/// A strike slower than this lands at rest (solver tolerance), and no impact type applies [m/s].
+constexpr double kAtRest = 1e-6;
+
+/// The swing tip's strike: velocity, Mu's strike angle, the impact type the state admits
+/// (Mu sec. 5.3) beside the one the config models.
+nlohmann::ordered_json strikeJson(const StrikeReport& s, const OcpConfig& config) {
+  const char* modelled = config.impact == ImpactModel::kDouble   ? "double"
+                         : config.impact == ImpactModel::kSingle ? "single"
+                                                                 : "impactless";
+  return {{"tip_velocity", {s.tip_velocity.x(), s.tip_velocity.y()}},
+          {"normal_velocity", s.normal_velocity},
+          {"angle_rad", s.angle},
+          {"impact_modelled", modelled},
+          {"impulse_leading", {s.impulse_leading.x(), s.impulse_leading.y()}},
+          {"impulse_trailing", {s.impulse_trailing.x(), s.impulse_trailing.y()}},
+          {"impact_admitted", s.normal_velocity > kAtRest ? dynamics::toString(s.admitted)
+                                                          : "none: the tip lands at rest"}};
+}
+
 /// Why a solve failed and where: the error line (also in FAILED.txt) and summary.json's keys.
 struct FailureReport {
   std::string message;
@@ -125,8 +144,23 @@ nlohmann::ordered_json solutionSummary(const GaitResultOptions& o, const dynamic
                                      r.callback_time_s, config.cost.primary()});
   summary["converged"] = r.success;
   summary["cost"] = r.cost;  // the solver's objective (the scheme's own quadrature)
+  summary["cost_quadrature"] = fmt::format(
+      "the solver's objective: {} quadrature on the "
+      "collocation points",
+      toString(problem.ssp.layout.scheme));
+  // The integrals over what a controller receives (trajectory.csv); the collocation points'
+  // own trapezoid values under at_nodes.
+  summary["at_nodes"] = {{"energy_J", summary["energy_J"]},
+                         {"torque_squared", summary["torque_squared"]},
+                         {"cost_of_transport", summary["cost_of_transport"]},
+                         {"quadrature", "trapezoid on the collocation points"}};
+  summary["energy_J"] = gaits::absoluteWork(dense);
+  summary["torque_squared"] = gaits::torqueSquaredIntegral(dense);
+  summary["cost_of_transport"] = gaits::costOfTransport(dense, model);
+  summary["integral_quadrature"] = fmt::format("trapezoid on trajectory.csv ({:g} Hz)", o.rate_hz);
   if (const auto loss = problem.touchdown.energyLoss(model, r.x))
     summary["impact_energy_loss_J"] = *loss;
+  summary["strike"] = strikeJson(problem.touchdown.strike(model, r.x), config);
   summary["max_violation"] = r.max_violation;
   if (!failure.is_null()) summary.update(failure);
   // The constraints hold at the collocation points; the dense export shows how far they are

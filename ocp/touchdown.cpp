@@ -1,20 +1,25 @@
 #include "ocp/touchdown.hpp"
 
+#include <cmath>
+
 #include "dynamics/energy.hpp"
 #include "dynamics/impact.hpp"
+#include "dynamics/kinematics.hpp"
 #include "ocp/autodiff_constraint.hpp"
 #include "ocp/gait_links.hpp"
 
 namespace gaitopt::ocp {
 namespace {
 
-/// y = (P_E, P_B): impulses inside their friction cones, pushing up.
+/// y = (P_E[, P_B]): impulses inside their friction cones, pushing up (Mu 2.31 for a double
+/// impact, 2.37b for a single one): P_y >= 0, mu P_y - P_x >= 0, mu P_y + P_x >= 0 per tip.
 struct ImpulseCones {
   double mu;
   template <class S>
   dynamics::VecX<S> operator()(const dynamics::VecX<S>& y) const {
-    dynamics::VecX<S> g(6);
-    for (int tip = 0; tip < 2; ++tip) {
+    const auto tips = static_cast<int>(y.size() / 2);
+    dynamics::VecX<S> g(3 * tips);
+    for (int tip = 0; tip < tips; ++tip) {
       const S px = y(2 * tip), py = y(2 * tip + 1);
       g.segment(3 * tip, 3) << py, mu * py - px, mu * py + px;
     }
@@ -58,8 +63,15 @@ Touchdown Touchdown::add(Nlp& nlp, const dynamics::Model& model, const OcpConfig
     addLink(nlp, "touchdown_at_rest", 2, t.strike_, n, StrikeVelocity{&model, false});
     return t;
   }
-  if (c.swing_descends)
+  const StrikeDesign& strike = c.touchdown;
+  if (strike.enabled)  // -v_max <= ydot_e^- <= -v_min: implies the descent below
+    addLink(nlp, "strike_normal_velocity", 1, t.strike_, n, StrikeVelocity{&model, true},
+            -strike.normal_max, -strike.normal_min);
+  else if (c.swing_descends)
     addLink(nlp, "strike_downward", 1, t.strike_, n, StrikeVelocity{&model, true}, -kInf, 0.0);
+  if (strike.angle)
+    addLink(nlp, "strike_angle", 2, t.strike_, n,
+            StrikeAngle{&model, strike.angle_min, strike.angle_max}, 0.0, kInf);
   ImpactLayout l = ImpactLayout::rigid(n, c.impact == ImpactModel::kDouble);
   Eigen::VectorXd lo = Eigen::VectorXd::Constant(l.size(), -kInf), hi = -lo;
   // The old stance tip leaves the ground.
@@ -69,12 +81,31 @@ Touchdown Touchdown::add(Nlp& nlp, const dynamics::Model& model, const OcpConfig
                  .offset;
   addLink(nlp, "impact", l.size(), concat(t.strike_, l.inDecision(l.all()).indices()), n,
           RigidImpact{&model, l});
-  if (l.doubleImpact() && c.ground_contact)
-    addLink(nlp, "impulse_cones", 6, l.inDecision(l.impulses()).indices(), 0,
+  if (c.ground_contact && c.impact_friction) {
+    const Slice impulses = l.inDecision(l.impulses());
+    addLink(nlp, "impulse_cones", 3 * impulses.size / 2, impulses.indices(), 0,
             ImpulseCones{frictionBound(model, c)}, 0.0, kInf);
+  }
   t.rates_after_ = l.inDecision(l.rates_after).indices();
   t.impact_ = l;
   return t;
+}
+
+StrikeReport Touchdown::strike(const dynamics::Model& model, const Eigen::VectorXd& x) const {
+  const PointLayout state = PointLayout::biped(model.nLinks(), false, false);
+  const Eigen::VectorXd y = gather(x, strike_);
+  const VecD theta = state.q.of(y), dtheta = state.v.of(y);
+  StrikeReport r;
+  r.tip_velocity = dynamics::pointVelocity<double>(model.tipWeights(), theta, dtheta);
+  r.normal_velocity = -r.tip_velocity.y();
+  r.angle = std::atan2(-r.tip_velocity.y(), -r.tip_velocity.x());  // Xdot_e = -V (cos, sin)
+  r.admitted = dynamics::classifyImpact(model, theta, dtheta);
+  if (impact_) {
+    r.impulse_leading = impact_->inDecision(impact_->impulse_leading).of(x);
+    if (impact_->doubleImpact())
+      r.impulse_trailing = impact_->inDecision(impact_->impulse_trailing).of(x);
+  }
+  return r;
 }
 
 std::optional<double> Touchdown::energyLoss(const dynamics::Model& model,

@@ -10,6 +10,7 @@
 #include <Eigen/LU>
 
 #include "dynamics/energy.hpp"
+#include "dynamics/floating_base.hpp"
 #include "dynamics/impact.hpp"
 #include "dynamics/joint_coordinates.hpp"
 #include "dynamics/kinematics.hpp"
@@ -230,12 +231,32 @@ TEST_F(Touchdown, JumpAndLossEqualTheDoubleImpactMap) {
   EXPECT_EQ(gaits::impactEnergyLoss(step(dtheta), model_), loss);
 }
 
-TEST_F(Touchdown, ZeroWithoutADoubleSupportPhase) {
-  auto knots = step(randomVec(rng_, 5, -2, 2)).knots();
-  knots.resize(2);
+TEST_F(Touchdown, AStepWithoutADoubleSupportPhaseEndsInTheSingleImpact) {
+  const VecD dtheta = randomVec(rng_, 5, -2, 2);
+  auto knots = step(dtheta).knots();
+  knots.resize(2);  // the SSP ends at the strike (knot 1), no DSP follows
   const Trajectory ssp_only(model_.name(), 0.35, knots);
-  EXPECT_EQ(gaits::touchdownVelocityJump(ssp_only, model_), 0.0);
-  EXPECT_EQ(gaits::impactEnergyLoss(ssp_only, model_), 0.0);
+  const auto impact = dynamics::singleImpact(model_, theta(), dtheta);
+  // Energy from the floating-base mass matrix, q = (x_b, y_b, theta): B at rest before, moving
+  // with Xdot_b^+ (Mu 2.36b) after.
+  const Eigen::MatrixXd d = dynamics::floatingBaseMassMatrix<double>(model_, theta());
+  Eigen::VectorXd before = Eigen::VectorXd::Zero(7), after = before;
+  before.tail(5) = dtheta;
+  after << impact.trailing_velocity, impact.dtheta_plus;
+  const double loss = 0.5 * before.dot(d * before) - 0.5 * after.dot(d * after);
+  EXPECT_GT(loss, 0.0);
+  EXPECT_GT(impact.trailing_velocity.norm(), 1e-3);  // B moves: its energy counts
+  EXPECT_NEAR(gaits::impactEnergyLoss(ssp_only, model_), loss, 1e-10 * (1 + loss));
+  EXPECT_NEAR(gaits::touchdownVelocityJump(ssp_only, model_), (impact.dtheta_plus - dtheta).norm(),
+              1e-12);
+}
+
+TEST_F(Touchdown, NoTouchdownWhenTheStepEndsInTheDoubleSupport) {
+  auto knots = step(randomVec(rng_, 5, -2, 2)).knots();
+  knots.erase(knots.begin(), knots.begin() + 2);  // a DSP alone
+  const Trajectory dsp_only(model_.name(), 0.35, knots);
+  EXPECT_EQ(gaits::touchdownVelocityJump(dsp_only, model_), 0.0);
+  EXPECT_EQ(gaits::impactEnergyLoss(dsp_only, model_), 0.0);
 }
 
 }  // namespace

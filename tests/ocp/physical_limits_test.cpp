@@ -1,0 +1,108 @@
+// Contact conditions and joint limits of the OCP, checked on solutions with quantities computed
+// here, not by the rows themselves: a single impact's impulse from
+// Mu's closed-form map (2.36c) inside its friction cone and pushing up (2.37b), with the old
+// stance tip lifting off (2.37a); and in the DSP the centre of pressure of foot B, which carries
+// the ankle torque alone, on that foot at every 1 kHz sample of the export; and the physical
+// joint rates dq = M dtheta (Mu 2.41) within the robot file's velocity limits.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "dynamics/impact.hpp"
+#include "dynamics/robot_config.hpp"
+#include "ocp/gait_problem.hpp"
+#include "support/solved_config.hpp"
+
+namespace gaitopt::ocp {
+namespace {
+
+using test::shippedOcpConfig;
+using Solved = test::SolvedConfig;
+
+TEST(SingleImpactCone, CompassGaitHeelStrikeNeedsNoMoreFrictionThanTheGroundHas) {
+#ifndef NDEBUG
+  GTEST_SKIP() << "a solve: optimised builds only";
+#endif
+  // The shipped config leaves the impulse out of its cone: its optimum strikes with
+  // |P_x| / P_y = 1.05 against mu = 0.8. With the cone on, the strike keeps within it.
+  OcpConfig c = loadOcpConfig(shippedOcpConfig("compass_gait_walk"));
+  ASSERT_FALSE(c.impact_friction);
+  c.impact_friction = true;
+  const Solved s(c);
+  ASSERT_EQ(s.result.status, "Solve_Succeeded");
+  const auto traj = reconstruct(s.problem, s.model, s.result.x);
+  const auto& strike = traj.knots().back();
+  const auto impact = dynamics::singleImpact(s.model, VecD(strike.theta), VecD(strike.dtheta));
+  const Vec2d p = impact.impulse_leading;
+  RecordProperty("cost", fmt::format("{:.4f}", s.result.cost));
+  RecordProperty("impulse_ratio", fmt::format("{:.4f}", p.x() / p.y()));
+  EXPECT_GT(p.y(), 0.0);
+  EXPECT_LE(std::abs(p.x()), (frictionBound(s.model, s.config) + 1e-6) * p.y());
+  EXPECT_GT(impact.trailing_velocity.y(), -1e-6);  // 2.37a: B lifts off
+}
+
+TEST(DspFootCentreOfPressure, StaysOnTheTorqueCarryingFootBetweenTheNodes) {
+#ifndef NDEBUG
+  GTEST_SKIP() << "a solve: optimised builds only";
+#endif
+  const Solved s(loadOcpConfig(shippedOcpConfig("mu2004_walk")));
+  ASSERT_EQ(s.result.status, "Solve_Succeeded");
+  const auto dense = reconstructDense(s.problem, s.model, s.result.x, 1000);
+  const dynamics::Foot& foot = s.model.foot();
+  double worst = kInf;  // least distance of x_B = -tau0 / F_By to the foot's ends [m]
+  int samples = 0;
+  for (const auto& k : dense.knots()) {
+    if (k.phase != gaits::Phase::kDsp) continue;
+    ASSERT_GT(k.force_stance.y(), 0.0) << "t = " << k.t;
+    const double x_b = -k.tau(0) / k.force_stance.y();  // ground moment on the robot: -tau0
+    worst = std::min({worst, x_b + foot.heel, foot.toe - x_b});
+    ++samples;
+  }
+  RecordProperty("least_foot_b_cop_margin_m", fmt::format("{:.4f}", worst));
+  EXPECT_GT(samples, 50);
+  EXPECT_GT(worst, -1e-3 * (foot.heel + foot.toe));
+}
+
+/// max over the export's samples of |dq_j| / velocity_limit_j, dq_0 = dtheta_0 and dq_j =
+/// dtheta_{j-1} - dtheta_j (Mu 2.41).
+double worstJointRateRatio(const gaits::Trajectory& traj, const dynamics::Model& model) {
+  double worst = 0;
+  for (const auto& k : traj.knots())
+    for (int j = 0; j < model.nLinks(); ++j) {
+      const double dq = j == 0 ? k.dtheta(0) : k.dtheta(j - 1) - k.dtheta(j);
+      worst = std::max(worst, std::abs(dq) / model.joints()[static_cast<size_t>(j)].velocity_limit);
+    }
+  return worst;
+}
+
+TEST(JointVelocityLimits, BindTheKneesOfTheDefaultGaitAtTheRobotsLimit) {
+#ifndef NDEBUG
+  GTEST_SKIP() << "two solves: optimised builds only";
+#endif
+  // The default problem bounds absolute link rates only; its knees then turn faster than the
+  // robot file allows. With the robot's joint limits on, every 1 kHz sample keeps within them.
+  const Solved free_rates(loadOcpConfig(shippedOcpConfig("mu2004_walk")));
+  OcpConfig c = loadOcpConfig(shippedOcpConfig("mu2004_walk"));
+  c.joint_velocity_limits = true;
+  const Solved limited(c);
+  ASSERT_EQ(free_rates.result.status, "Solve_Succeeded");
+  ASSERT_EQ(limited.result.status, "Solve_Succeeded");
+  const double before = worstJointRateRatio(
+      reconstructDense(free_rates.problem, free_rates.model, free_rates.result.x, 1000),
+      free_rates.model);
+  const double after = worstJointRateRatio(
+      reconstructDense(limited.problem, limited.model, limited.result.x, 1000), limited.model);
+  RecordProperty("rate_ratio_without", fmt::format("{:.4f}", before));
+  RecordProperty("rate_ratio_with", fmt::format("{:.4f}", after));
+  RecordProperty("cost_with", fmt::format("{:.4f}", limited.result.cost));
+  EXPECT_GT(before, 1.05);
+  EXPECT_LT(after, 1.0 + 5e-3);  // at the points exactly, between them within 0.5 %
+  EXPECT_GE(limited.result.cost, free_rates.result.cost - 1e-6);
+}
+
+}  // namespace
+}  // namespace gaitopt::ocp
