@@ -32,6 +32,7 @@ Scenario makeScenario(const ScenarioSettings& o) {
   if (o.friction >= 0) s.friction = o.friction;
   if (o.push != 0) setSweepValue(s, "push", o.push);
   s.gain_scale = o.gain_scale;
+  s.rules = o.rules;
   return s;
 }
 
@@ -63,7 +64,8 @@ nlohmann::ordered_json scenarioJson(const ScenarioSettings& o, const Scenario& s
             {"length", s.parameter_errors.length},
             {"com", s.parameter_errors.com}}},
           {"push_impulse_Ns", o.push},
-          {"steps_requested", s.steps}};
+          {"steps_requested", s.steps},
+          {"contact_rules", contactRulesJson(s.rules)}};
 }
 
 }  // namespace gaitopt::sim

@@ -31,7 +31,7 @@ struct LoggedWalk {
 
 LoggedWalk walkOn(const GroundModel& ground, int steps) {
   const Reference ref(test::polynomialGait());
-  const dynamics::Model& plant = test::fiveLinkRobot();
+  const dynamics::Model& plant = test::longHeelRobot();  // the gait's ZMP needs a 0.2 m heel
   LoggedWalk w;
   const auto log = [&](const WalkSample& s) {
     w.hip.push_back(Vec2d(s.stance_x, s.stance_y) + dynamics::hip<double>(plant, s.theta));
