@@ -14,6 +14,7 @@
 ///                rolls onto its toe as it unloads, which is walking, not a failure;
 ///   a pull       a stance tip (or the leading tip in double support) whose normal force would
 ///                have to pull on the ground: it lifts off.
+#include <limits>
 #include <numbers>
 
 #include <nlohmann/json.hpp>
@@ -54,6 +55,18 @@ inline constexpr const char* kLeadingLiftoff = "leading tip lifts off the ground
 inline double copMomentMargin(double tau0, double force_y, double heel, double toe) {
   const double behind = heel * force_y - tau0, ahead = toe * force_y + tau0;
   return behind < ahead ? behind : ahead;
+}
+
+/// A foot carrying less than this fraction of the robot's weight has no centre of pressure worth
+/// recording (the compliant ground's force ripple and a trailing foot about to lift off).
+inline constexpr double kLoadedFoot = 0.1;
+
+/// Margin of the single-support CoP -tau0 / F_y inside [-heel, toe], negative outside [m]; +inf
+/// when the foot carries less than kLoadedFoot of `weight` [N]. What summary.json records.
+inline double copMargin(double tau0, double force_y, double heel, double toe, double weight) {
+  if (force_y < kLoadedFoot * weight) return std::numeric_limits<double>::infinity();
+  const double cop = -tau0 / force_y;
+  return cop + heel < toe - cop ? cop + heel : toe - cop;
 }
 
 }  // namespace gaitopt::sim

@@ -107,9 +107,9 @@ struct Walker {
     if (!limit.active) return "";
     const dynamics::Foot& foot = plant.foot();
     const double fy = run.force.b(1), tau0 = tau(0);
-    if (fy > 0)
-      r.min_cop_margin =
-          std::min(r.min_cop_margin, std::min(foot.heel - tau0 / fy, foot.toe + tau0 / fy));
+    if (run.phase == Phase::kSsp)
+      r.min_cop_margin = std::min(r.min_cop_margin, copMargin(tau0, fy, foot.heel, foot.toe,
+                                                              plant.totalMass() * plant.gravity()));
     if (copMomentMargin(tau0, fy, foot.heel, foot.toe) >= 0) return "";
     if (saturates(run.phase)) {
       r.cop_saturated_time += h;
@@ -150,6 +150,10 @@ struct Walker {
     run.clock += h;
     run.elapsed += h;
     run.b_unloaded = run.force.b(1) > 0 ? 0 : run.b_unloaded + h;
+    // A tip in the air does not slip: it is anchored anew where it is while unloaded.
+    if (run.force.b(1) <= 0) run.b_x0 = run.s.q(0);
+    if (run.phase == Phase::kDsp && run.force.e(1) <= 0)
+      run.e_x0 = dynamics::floatingSwingTip(plant, run.s.q)(0);
     run.e_unloaded = run.phase == Phase::kDsp && run.force.e(1) <= 0 ? run.e_unloaded + h : 0;
     r.failure = failure(run);
     if (!r.failure.empty()) return false;

@@ -59,8 +59,9 @@ ContactLoop::State ContactLoop::evaluate(double t, const Eigen::VectorXd& x) con
   const dynamics::Foot& foot = plant_.foot();
   const double fy = s.force_stance(1), tau0 = s.tau(0);
   s.cop_moment = copMomentMargin(tau0, fy, foot.heel, foot.toe);
-  s.cop_margin = fy > 0 ? std::min(-tau0 / fy + foot.heel, foot.toe + tau0 / fy)
-                        : std::numeric_limits<double>::infinity();  // unloaded: lift-off rules
+  s.cop_margin = phase_ == Phase::kSsp ? copMargin(tau0, fy, foot.heel, foot.toe,
+                                                   plant_.totalMass() * plant_.gravity())
+                                       : std::numeric_limits<double>::infinity();
   const bool saturate = rules_.cop_limit == CopLimit::kSaturate || phase_ == Phase::kDsp;
   if (saturate && s.cop_moment < 0) saturateAnkle(s, pushed);
   return s;

@@ -18,11 +18,11 @@ inline const dynamics::Model& fiveLinkRobot() {
   return model;
 }
 
-/// The robot with a heel long enough for the polynomial gait: the CoP its ankle torque asks for
-/// lies up to 0.248 m behind the stance tip (measured on rigid ground, gaitopt simulate), far
-/// beyond the shipped 0.05 m heel (a foot rotation, contact_rules.hpp). A 0.30 m heel keeps 5 cm
-/// of margin, so the compliant ground's force ripple does not saturate it; the walks that use
-/// this gait as a reference for other properties walk this plant.
+/// The robot with a heel long enough for the polynomial gait: its ZMP lies up to 0.197 m behind
+/// the stance tip (gaits/metrics.cpp), far beyond the shipped 0.05 m heel (a foot rotation,
+/// contact_rules.hpp). On a 0.30 m heel the CoP its walk asks for keeps 2.3 mm from the toe
+/// (measured on rigid ground); the walks that use this gait as a reference for other properties
+/// walk this plant.
 inline const dynamics::Model& longHeelRobot() {
   static const dynamics::Model model = dynamics::withFoot(fiveLinkRobot(), {0.30, 0.15});
   return model;

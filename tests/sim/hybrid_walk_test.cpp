@@ -77,8 +77,8 @@ TEST_F(FiveLinkWalk, BothGaitsWalkTwentyStepsOnAStableCycle) {
   // slipped at the start of the double support, where the trailing tip carries only 55-75 N.
   const std::pair<std::string, const gaits::Trajectory*> gaits[] = {{"polynomial", poly_},
                                                                     {"optimal", optimal_export_}};
-  // Both walk a 0.30 m heel. The polynomial gait asks for a CoP up to 0.248 m behind the stance
-  // tip: on the shipped 0.05 m heel its ankle saturates and it falls (contact_walk_test.cpp). The
+  // Both walk a 0.30 m heel. The polynomial gait's ZMP lies up to 0.197 m behind the stance tip:
+  // on the shipped 0.05 m heel its ankle saturates and it falls (contact_walk_test.cpp). The
   // optimum keeps its ZMP on the foot, but computed torque asks the ankle for up to +18 N m at
   // the RK4 midpoints of the last 20 ms before touchdown (-10 N m at the steps either side):
   // clipped at the 5 cm heel, the swing tip stays 40 um up at the planned touchdown and the
