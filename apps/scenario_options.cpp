@@ -1,6 +1,31 @@
 #include "apps/scenario_options.hpp"
 
+#include <map>
+#include <string>
+
 namespace gaitopt::apps {
+namespace {
+
+/// The failure rule of every ground (sim/contact_rules.hpp).
+void addContactOptions(CLI::App* cmd, sim::ContactRules& rules) {
+  cmd->add_option("--max-slip", rules.max_slip,
+                  "A walk fails when a tip on the ground slides further than this in one step [m]")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  const std::map<std::string, sim::CopLimit> limits{{"saturate", sim::CopLimit::kSaturate},
+                                                    {"fail", sim::CopLimit::kFail}};
+  cmd->add_option("--cop-limit", rules.cop_limit,
+                  "When the stance foot's CoP would leave [-heel, toe]: saturate the ankle torque, "
+                  "or fail as a foot rotation")
+      ->transform(CLI::CheckedTransformer(limits))
+      ->default_str("saturate");
+  cmd->add_option("--restitution", rules.restitution,
+                  "Newton restitution e_n of rigid-ground impacts (0: plastic)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+}
+
+}  // namespace
 
 void addScenarioOptions(CLI::App* cmd, sim::ScenarioSettings& o) {
   cmd->add_option("--reference", o.reference_dir,
@@ -39,6 +64,7 @@ void addScenarioOptions(CLI::App* cmd, sim::ScenarioSettings& o) {
   cmd->add_option("--gain-scale", o.gain_scale, "Controller bandwidth factor (kp by s^2, kd by s)")
       ->check(CLI::Range(1e-3, 1e3))
       ->capture_default_str();
+  addContactOptions(cmd, o.rules);
 }
 
 }  // namespace gaitopt::apps

@@ -51,6 +51,14 @@ Model withFriction(const Model& nominal, double friction) {
           friction,       nominal.foot(),  nominal.slope()};
 }
 
+Model withFoot(const Model& nominal, const Foot& foot) {
+  if (!(std::isfinite(foot.heel) && std::isfinite(foot.toe) && foot.heel >= 0 && foot.toe >= 0))
+    throw std::invalid_argument(
+        fmt::format("foot heel {} and toe {} must be finite and >= 0", foot.heel, foot.toe));
+  return {nominal.name(), nominal.links(), nominal.joints(), nominal.gravity(), nominal.friction(),
+          foot,           nominal.slope()};
+}
+
 Model withSlope(const Model& nominal, double slope) {
   return {nominal.name(),
           nominal.links(),

@@ -26,6 +26,9 @@ Model perturbedModel(const Model& nominal, const ParameterErrors& errors);
 /// The model on a ground of Coulomb coefficient `friction` (>= 0); slope unchanged.
 Model withFriction(const Model& nominal, double friction);
 
+/// The model with other feet (heel, toe >= 0 [m]); everything else unchanged.
+Model withFoot(const Model& nominal, const Foot& foot);
+
 /// The model on a ground inclined by `slope` [rad] (> 0 uphill, |slope| < pi/2): gravity rotates
 /// in the ground frame (model.hpp); links, joints, feet, friction unchanged.
 /// @throws std::invalid_argument when the slope is not finite or |slope| >= pi/2.

@@ -1,7 +1,7 @@
 #include "sim/free_base_walk.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -14,7 +14,6 @@ namespace gaitopt::sim {
 namespace {
 
 using gaits::Phase;
-constexpr double kMaxTorsoLean = std::numbers::pi / 3;  // 60 deg from upright: a fall
 
 VecD anglesOf(const dynamics::Model& plant, const Eigen::VectorXd& q) {
   return q.tail(plant.nLinks());
@@ -34,9 +33,16 @@ struct StepRun {
   double elapsed = 0;  ///< time since the step started [s]
   double b_unloaded = 0, e_unloaded = 0;
   double b_x0 = 0;  ///< world x of the stance tip at the step start [m]
+  double e_x0 = 0;  ///< world x of the swing tip at touchdown [m]
   TipForces force;
-  PhaseStart start;        ///< where the phase's reference starts (reference.hpp)
   Eigen::VectorXd memory;  ///< the controller's, zero at each phase start
+};
+
+/// The stance ankle's torque and what the foot can carry (contact_rules.hpp), at B's normal force
+/// of the last time step (the contact laws give the force only with the step).
+struct AnkleLimit {
+  double lower = 0, upper = 0;  ///< tau0 in [-toe F_y, heel F_y] [N m]
+  bool active = false;          ///< an actuated ankle on a loaded foot
 };
 
 /// Everything a step needs that does not change during the walk.
@@ -45,26 +51,45 @@ struct Walker {
   const Controller& controller;
   const Reference& ref;
   const FreeBaseGround& ground;
+  const ContactRules& rules;
   const WalkLog& log;
 
+  AnkleLimit ankleLimit(const StepRun& run) const {
+    const double fy = std::max(run.force.b(1), 0.0);
+    return {-plant.foot().toe * fy, plant.foot().heel * fy, plant.joints().front().actuated};
+  }
+
+  /// Saturates in the DSP always (the trailing foot rolls onto its toe), in the SSP when the
+  /// rules say so.
+  bool saturates(Phase phase) const {
+    return rules.cop_limit == CopLimit::kSaturate || phase == Phase::kDsp;
+  }
+
   TorqueFeedback feedback(const StepRun& run) const {
-    return [this, &run](double dt, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
-      return controller.torque(run.phase, anglesOf(plant, q), anglesOf(plant, v),
-                               ref.at(run.phase, run.clock + dt, run.start), run.memory);
+    const AnkleLimit limit = ankleLimit(run);
+    const bool saturate = limit.active && saturates(run.phase);
+    return [this, &run, limit, saturate](double dt, const Eigen::VectorXd& q,
+                                         const Eigen::VectorXd& v) {
+      VecD tau = controller.torque(run.phase, anglesOf(plant, q), anglesOf(plant, v),
+                                   ref.at(run.phase, run.clock + dt), run.memory);
+      if (saturate) tau(0) = std::clamp(tau(0), limit.lower, limit.upper);
+      return tau;
     };
   }
 
-  /// The phase starts: the reference from where the robot is, the controller's memory at zero.
+  /// The phase starts with the controller's memory at zero. The reference is not faded from the
+  /// robot here (reference.hpp PhaseStart): at a touchdown on a compliant ground the tips bounce,
+  /// and fading that transient into the reference made the polynomial gait fall at step 2 on
+  /// the impedance ground, which it walks without the fade.
   void startPhase(StepRun& run, Phase phase) const {
     run.phase = phase;
-    run.start = ref.startFrom(phase, run.clock, anglesOf(plant, run.s.q), anglesOf(plant, run.s.v));
     run.memory = Eigen::VectorXd::Zero(controller.memorySize(phase));
   }
 
   /// The controller's memory over one time step h (explicit Euler at the step's start).
   void advanceMemory(StepRun& run, const FreeBaseState& before, double h) const {
     if (run.memory.size() == 0) return;
-    const gaits::Knot k = ref.at(run.phase, run.clock, run.start);
+    const gaits::Knot k = ref.at(run.phase, run.clock);
     run.memory += h * controller.memoryRate(run.phase, anglesOf(plant, before.q),
                                             anglesOf(plant, before.v), k, run.memory);
   }
@@ -76,16 +101,39 @@ struct Walker {
     if (!q.allFinite() || !run.s.v.allFinite() || -q(1) > kMaxPenetration || -e_y > kMaxPenetration)
       return "diverged: non-finite state or a tip deeper than 5 cm";
     const VecD theta = anglesOf(plant, q);
-    if (q(1) + dynamics::hip<double>(plant, theta)(1) < 0.5 * legLength(plant))
-      return "fall: hip below half the leg length";
-    if (plant.torso() && std::abs(theta(*plant.torso())) > kMaxTorsoLean)
-      return "fall: torso beyond 60 deg";
+    if (q(1) + dynamics::hip<double>(plant, theta)(1) < rules.min_hip_height * legLength(plant))
+      return kFallHip;
+    if (plant.torso() && std::abs(theta(*plant.torso())) > rules.max_torso_lean) return kFallTorso;
     // In the DSP an unloaded B is the trailing tip lifting off: it ends the phase instead.
-    if (run.phase == Phase::kSsp && run.b_unloaded >= kLiftoffTime)
-      return "stance tip lifts off the ground";
-    if (run.e_unloaded >= kLiftoffTime) return "leading tip lifts off the ground";
-    if (std::abs(q(0) - run.b_x0) > kMaxSlip) return "stance tip slips";
+    if (run.phase == Phase::kSsp && run.b_unloaded >= kLiftoffTime) return kStanceLiftoff;
+    if (run.e_unloaded >= kLiftoffTime) return kLeadingLiftoff;
+    if (slip(run) > rules.max_slip) return kSlip;
     return "";
+  }
+
+  /// How far the tips on the ground moved along it: B from the step start, E from touchdown [m].
+  double slip(const StepRun& run) const {
+    const double b = std::abs(run.s.q(0) - run.b_x0);
+    if (run.phase == Phase::kSsp) return b;
+    return std::max(b, std::abs(dynamics::floatingSwingTip(plant, run.s.q)(0) - run.e_x0));
+  }
+
+  /// The CoP the controller asks of the stance foot, against the foot (StepResult): the margin,
+  /// the saturated time, and the foot rotation when the rules fail it.
+  std::string recordAnkle(const StepRun& run, const VecD& tau, double h, StepResult& r) const {
+    const AnkleLimit limit = ankleLimit(run);
+    if (!limit.active) return "";
+    const dynamics::Foot& foot = plant.foot();
+    const double fy = run.force.b(1), tau0 = tau(0);
+    if (run.phase == Phase::kSsp)
+      r.min_cop_margin = std::min(r.min_cop_margin, copMargin(tau0, fy, foot.heel, foot.toe,
+                                                              plant.totalMass() * plant.gravity()));
+    if (copMomentMargin(tau0, fy, foot.heel, foot.toe) >= 0) return "";
+    if (saturates(run.phase)) {
+      r.cop_saturated_time += h;
+      return "";
+    }
+    return kFootRotation;
   }
 
   /// Touchdown: E, ahead of B, is loaded or at the ground.
@@ -96,12 +144,14 @@ struct Walker {
 
   void record(const StepRun& run, double t0, int index, StepResult& r) const {
     const VecD theta = anglesOf(plant, run.s.q), dtheta = anglesOf(plant, run.s.v);
-    const gaits::Knot k = ref.at(run.phase, run.clock, run.start);
+    const gaits::Knot k = ref.at(run.phase, run.clock);
     r.max_tracking_error =
         std::max(r.max_tracking_error, (theta - VecD(k.theta)).cwiseAbs().maxCoeff());
+    r.slip = std::max(r.slip, slip(run));
+    const VecD tau = controller.torque(run.phase, theta, dtheta, k, run.memory);
+    r.failure = recordAnkle(run, tau, ground.time_step, r);
     if (!log) return;
-    log({t0 + run.elapsed, index, run.phase, theta, dtheta, k.theta,
-         controller.torque(run.phase, theta, dtheta, k, run.memory), k.tau, run.force.b,
+    log({t0 + run.elapsed, index, run.phase, theta, dtheta, k.theta, tau, k.tau, run.force.b,
          run.force.e, run.s.q(0), run.s.q(1)});
   }
 
@@ -119,13 +169,19 @@ struct Walker {
     run.clock += h;
     run.elapsed += h;
     run.b_unloaded = run.force.b(1) > 0 ? 0 : run.b_unloaded + h;
+    // A tip in the air does not slip: it is anchored anew where it is while unloaded.
+    if (run.force.b(1) <= 0) run.b_x0 = run.s.q(0);
+    if (run.phase == Phase::kDsp && run.force.e(1) <= 0)
+      run.e_x0 = dynamics::floatingSwingTip(plant, run.s.q)(0);
     run.e_unloaded = run.phase == Phase::kDsp && run.force.e(1) <= 0 ? run.e_unloaded + h : 0;
     r.failure = failure(run);
     if (!r.failure.empty()) return false;
     record(run, t0, index, r);
+    if (!r.failure.empty()) return false;
     if (run.phase == Phase::kSsp) {
       if (!touchedDown(run)) return true;
       r.ssp_duration = run.elapsed;
+      run.e_x0 = dynamics::floatingSwingTip(plant, run.s.q)(0);
       run.clock = ref.dspClockAt(anglesOf(plant, run.s.q));
       startPhase(run, Phase::kDsp);
       return ref.hasDsp();
@@ -212,7 +268,7 @@ WalkResult walkFreeBase(const dynamics::Model& plant, const Controller& controll
   if (!(std::isfinite(ground.time_step) && ground.time_step > 0))
     throw std::invalid_argument(fmt::format("{} ground: time step must be positive, got {}",
                                             ground.name, ground.time_step));
-  const Walker walker{plant, controller, ref, ground, log};
+  const Walker walker{plant, controller, ref, ground, plan.rules, log};
   FreeBaseState s = freeBaseStart(plant, theta0.size() ? theta0 : VecD(ref.start().theta),
                                   dtheta0.size() ? dtheta0 : VecD(ref.start().dtheta));
   WalkResult w;

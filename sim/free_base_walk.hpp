@@ -9,12 +9,15 @@
 ///   step at whose end E, ahead of B, carries a normal force > 0 or is at or below the ground;
 ///   the clock jumps to the reference touchdown time.
 ///   DSP (only if the reference has one): until the reference ends or, in its second half, the
-///   trailing tip B has carried no normal force for kUnloadTime. Then relabel (Mu 2.38): the base moves to E, the
-///   tips swap roles (and anchors), the next SSP starts with the clock at 0.
-///   Failures: as hybrid_walk.hpp (hip below half a leg, torso beyond 60 deg), a stance tip
-///   without normal force for kLiftoffTime, a stance tip sliding more than kMaxSlip, no step end
-///   within 3x the planned step, a contact law failure, and "diverged" (a non-finite state or a tip
-///   deeper than kMaxPenetration, what an explicit integrator does on too stiff a ground).
+///   trailing tip B has carried no normal force for kUnloadTime. Then relabel (Mu 2.38): the base
+///   moves to E, the tips swap roles (and anchors), the next SSP starts with the clock at 0.
+///   Failures: the rule of contact_rules.hpp, as on rigid ground (a fall; a tip on the ground
+///   sliding more than max_slip from where it was set down within the step; the stance foot's
+///   CoP, at the last time step's normal force, leaving the foot when the rules fail it, else the
+///   ankle torque saturates; a stance tip without normal force for kLiftoffTime, the ground's
+///   "pull"), no step end within 3x the planned step, a contact law failure, and "diverged" (a
+///   non-finite state or a tip deeper than kMaxPenetration, what an explicit integrator does on
+///   too stiff a ground).
 #include <functional>
 #include <string>
 
@@ -67,9 +70,6 @@ struct FreeBaseGround {
 inline constexpr double kLiftoffTime = 0.02;
 /// The trailing tip counts as unloaded (the DSP ends) after this long without normal force [s].
 inline constexpr double kUnloadTime = 0.005;
-/// A stance tip sliding further than this within a step has slipped: the walk fails, as on
-/// rigid ground when the friction cone is left (the contact laws here let it slide) [m].
-inline constexpr double kMaxSlip = 0.01;
 /// Deeper than this, the contact law has failed (a hard floor sinks by about a millimetre) [m].
 inline constexpr double kMaxPenetration = 0.05;
 

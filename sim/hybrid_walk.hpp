@@ -1,19 +1,31 @@
 #pragma once
 /// @file hybrid_walk.hpp
-/// Event-driven simulation of walking on rigid ground (DESIGN.md sec. 2, sim): single support
-/// with the pinned-chain dynamics (Mu 2.7), touchdown located by root finding on the swing-tip
-/// height, the impact map chosen by Mu's conditions (double impact when the trailing tip's
-/// impulse pushes, P_ly > 0 (2.31a), else single impact if the trailing tip then leaves the
-/// ground, ydot_b+ > 0 (2.37a)), double support with both tips pinned (2.11, KKT) until the
-/// trailing normal force reaches zero or the reference's double support ends, and relabelling
-/// (2.38) into the next step. A step fails on a fall (hip too low, torso beyond 60 deg), a slip
-/// (friction cone left) or a tip pulling on the ground.
+/// Event-driven simulation of walking on rigid ground (DESIGN.md sec. 2, sim). Each phase runs
+/// the chain with a free base under the contact modes of contact_dynamics.hpp: single support
+/// with B sticking (Mu 2.7), touchdown located by root finding on the swing-tip height, the
+/// impact map with Coulomb friction (dynamics/frictional_impact.hpp; with every tip sticking it
+/// is Mu's 2.23-2.37), chosen by Mu's conditions (double impact when the trailing tip's impulse
+/// pushes, P_ly > 0 (2.31a), else single impact if the trailing tip then leaves the ground,
+/// ydot_b+ > 0 (2.37a)), double support with both tips on the ground (2.11) until the trailing
+/// normal force reaches zero or the reference's double support ends, and relabelling (2.38)
+/// into the next step.
+///
+/// Slip is measured, not fatal (seed 001 sec. 3.3.1): a tip left sliding by a sliding impact,
+/// or whose sticking force leaves the friction cone, slides with the force -mu N sgn(v_t) (held
+/// on the ground in the normal direction) until its tangential velocity crosses zero, when it
+/// sticks again where it has slid to (or slides on if the cone is still left). The dynamics of
+/// the chain do not depend on where its base is, so a slid B or E only moves the step's origin:
+/// the step advance is measured from B's start to E's final world position. A tip still sliding
+/// when the step ends carries its velocity into the next step (StepResult::stance_velocity).
+/// Failures follow contact_rules.hpp, the same on every ground.
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "dynamics/model.hpp"
+#include "sim/contact_rules.hpp"
 #include "sim/event_integrator.hpp"
 #include "sim/push.hpp"
 #include "sim/reference.hpp"
@@ -25,6 +37,7 @@ namespace gaitopt::sim {
 struct WalkPlan {
   int steps = 20;
   std::optional<Push> push;
+  ContactRules rules;
 };
 
 struct WalkOptions : WalkPlan {
@@ -52,20 +65,33 @@ struct StepResult {
   double ssp_duration = 0, dsp_duration = 0;
   double advance = 0;             ///< world x of the new stance tip minus the old [m]
   double max_tracking_error = 0;  ///< max |theta - theta_ref| over the step [rad]
+  /// Largest distance a tip on the ground moved along it from where it was set down [m].
+  double slip = 0;
+  /// Least margin of the CoP the controller asked of the stance foot in single support, inside
+  /// [-heel, toe] (negative: outside, so saturated or a foot rotation; contact_rules.hpp
+  /// copMargin); +inf without an actuated ankle [m].
+  double min_cop_margin = std::numeric_limits<double>::infinity();
+  double cop_saturated_time = 0;  ///< time the ankle torque was saturated [s]
+  double stance_velocity = 0;     ///< the new stance tip's sliding velocity at the next start [m/s]
 };
 
-/// Simulates one step of `plant` under `controller` from the SSP start (theta0, dtheta0).
+/// Simulates one step of `plant` under `controller` from the SSP start (theta0, dtheta0), B at
+/// world x = stance_x sliding at stance_velocity.
 StepResult simulateStep(const dynamics::Model& plant, const Controller& controller,
                         const Reference& ref, const VecD& theta0, const VecD& dtheta0,
                         const EventIntegratorOptions& options, const WalkLog& log = {},
                         double t0 = 0, int step_index = 0, double stance_x = 0,
-                        const std::optional<Push>& push = {});
+                        const std::optional<Push>& push = {}, const ContactRules& rules = {},
+                        double stance_velocity = 0);
 
 struct WalkResult {
   int steps_completed = 0;
   bool fell = false;
   std::string failure;
   double max_tracking_error = 0;  ///< [rad]
+  double max_slip = 0;            ///< largest StepResult::slip [m]
+  double min_cop_margin = std::numeric_limits<double>::infinity();  ///< least of the steps' [m]
+  double cop_saturated_time = 0;                                    ///< [s]
   std::vector<StepResult> steps;
 };
 

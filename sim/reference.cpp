@@ -3,67 +3,19 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <utility>
 
 #include <Eigen/Dense>
-#include <Eigen/Sparse>
 
 #include "dynamics/kinematics.hpp"
 
 namespace gaitopt::sim {
 namespace {
 
-/// Rates and accelerations at the knots from the C^2 cubic spline through the angles whose end
-/// accelerations are the knots' own (tridiagonal system for the knot second derivatives M_i:
-/// h_{i-1} M_{i-1} + 2 (h_{i-1} + h_i) M_i + h_i M_{i+1} = 6 (slope_i - slope_{i-1})).
-void splineDerivatives(std::vector<gaits::Knot>& k) {
-  const int n = static_cast<int>(k.size()) - 1, dims = static_cast<int>(k.front().theta.size());
-  std::vector<double> h(static_cast<std::size_t>(n));
-  Eigen::MatrixXd slope(n, dims), m(n + 1, dims);
-  for (int i = 0; i < n; ++i) {
-    h[static_cast<std::size_t>(i)] =
-        k[static_cast<std::size_t>(i) + 1].t - k[static_cast<std::size_t>(i)].t;
-    slope.row(i) = (k[static_cast<std::size_t>(i) + 1].theta - k[static_cast<std::size_t>(i)].theta)
-                       .transpose() /
-                   h[static_cast<std::size_t>(i)];
-  }
-  m.row(0) = k.front().ddtheta.transpose();
-  m.row(n) = k.back().ddtheta.transpose();
-  if (n >= 2) {
-    std::vector<Eigen::Triplet<double>> entries;
-    Eigen::MatrixXd rhs(n - 1, dims);
-    for (int i = 1; i < n; ++i) {
-      const double hl = h[static_cast<std::size_t>(i) - 1], hr = h[static_cast<std::size_t>(i)];
-      entries.emplace_back(i - 1, i - 1, 2 * (hl + hr));
-      if (i > 1) entries.emplace_back(i - 1, i - 2, hl);
-      if (i < n - 1) entries.emplace_back(i - 1, i, hr);
-      rhs.row(i - 1) = 6 * (slope.row(i) - slope.row(i - 1));
-      if (i == 1) rhs.row(0) -= hl * m.row(0);
-      if (i == n - 1) rhs.row(n - 2) -= hr * m.row(n);
-    }
-    Eigen::SparseMatrix<double> a(n - 1, n - 1);
-    a.setFromTriplets(entries.begin(), entries.end());
-    m.middleRows(1, n - 1) = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>(a).solve(rhs);
-  }
-  for (int i = 0; i <= n; ++i) {
-    auto& knot = k[static_cast<std::size_t>(i)];
-    knot.ddtheta = m.row(i).transpose();
-    knot.dtheta = i < n ? Eigen::VectorXd(slope.row(i).transpose() -
-                                          h[static_cast<std::size_t>(i)] *
-                                              (2 * m.row(i) + m.row(i + 1)).transpose() / 6)
-                        : Eigen::VectorXd(slope.row(n - 1).transpose() +
-                                          h[static_cast<std::size_t>(n) - 1] *
-                                              (m.row(n - 1) + 2 * m.row(n)).transpose() / 6);
-  }
-}
-
-/// The knots of one phase, as a trajectory of its own (no switch inside), with rates and
-/// accelerations those of the spline through the angles.
+/// The knots of one phase, as a trajectory of its own (no switch inside).
 gaits::Trajectory phasePart(const gaits::Trajectory& step, gaits::Phase phase) {
   std::vector<gaits::Knot> knots;
   for (const auto& k : step.knots())
     if (k.phase == phase) knots.push_back(k);
-  if (knots.size() >= 2) splineDerivatives(knots);
   return gaits::Trajectory(step.robot(), step.stepLength(), std::move(knots));
 }
 
@@ -72,6 +24,9 @@ void checkOptions(const ReferenceOptions& o) {
     throw std::invalid_argument("reference strike velocity must be finite and >= 0 [m/s]");
   if (!(o.fade > 0 && std::isfinite(o.fade)))
     throw std::invalid_argument("reference fade time must be finite and > 0 [s]");
+  if (!(o.fade_angle >= 0 && o.fade_rate >= 0 && std::isfinite(o.fade_angle) &&
+        std::isfinite(o.fade_rate)))
+    throw std::invalid_argument("reference fade bounds must be finite and >= 0");
   if (!(o.strike_window > 0 && std::isfinite(o.strike_window)))
     throw std::invalid_argument("reference strike window must be finite and > 0 [s]");
 }
@@ -199,8 +154,12 @@ PhaseStart Reference::startFrom(gaits::Phase phase, double t0, const VecD& theta
                                 const VecD& dtheta) const {
   const gaits::Knot k = at(phase, t0);
   const double phase_length = phase == gaits::Phase::kDsp ? end_ - t0 : ssp_end_;
-  return {t0, std::min(options_.fade, phase_length), theta - VecD(k.theta),
-          dtheta - VecD(k.dtheta)};
+  const auto clip = [](const VecD& v, double bound) -> VecD {
+    return v.cwiseMax(-bound).cwiseMin(bound);
+  };
+  return {t0, std::min(options_.fade, phase_length),
+          clip(theta - VecD(k.theta), options_.fade_angle),
+          clip(dtheta - VecD(k.dtheta), options_.fade_rate)};
 }
 
 }  // namespace gaitopt::sim

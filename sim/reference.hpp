@@ -1,14 +1,7 @@
 #pragma once
 /// @file reference.hpp
 /// An exported gait (trajectory CSV, DESIGN.md sec. 5) as the reference a controller tracks:
-/// one step, SSP then optionally DSP, read on the step clock (0 at every SSP start).
-/// The angles are the data: rates and accelerations are those of the C^2 cubic spline through
-/// them (per phase, with the export's accelerations at the phase ends). An optimum's export has
-/// rates up to 2 % off the derivative of its angles (issue 15), and the quintic between knots
-/// turned that into accelerations swinging by 130 rad/s^2 within a millisecond, which Mu's
-/// sliding-mode law tracked into 80 N m torque spikes that slipped the leading tip; three-point
-/// differences did the same at the phase ends, where an optimum's DSP starts in a steep
-/// transient (187 rad/s^2 falling 10 % per millisecond). Three
+/// one step, SSP then optionally DSP, read on the step clock (0 at every SSP start). Three
 /// choices make it survive timing errors (issue 14 item 1; DESIGN.md sec. 7 item 4):
 ///  - Past the planned touchdown the SSP reference does not freeze: it goes on at the touchdown
 ///    rates, with the swing tip's downward speed raised to at least `strike_velocity`. A gait
@@ -23,7 +16,11 @@
 ///  - A phase starts from where the robot is: the robot's departure from the reference at the
 ///    phase start (angles and rates) is faded out by a cubic Hermite blend over `fade` seconds
 ///    (PhaseStart), as Westervelt et al. correct their virtual constraints after an impact. An
-///    early or late touchdown thus starts the DSP reference at the robot, not at a jump.
+///    early or late touchdown thus starts the DSP reference at the robot, not at a jump. Only
+///    the departure a timing error makes is faded (each angle within `fade_angle`, each rate
+///    within `fade_rate`); beyond it is an error the controller corrects: on the impedance
+///    ground a step ended with rates 17 rad/s off the plan, and fading those dragged the
+///    reference 0.4 rad away for 0.15 s and the robot fell.
 ///  - The DSP (fully actuated in hip x, hip y and torso, Mu 2.21) starts where the plan's hip has
 ///    progressed as far as the robot's (dspClockAt): a late touchdown finds the hip ahead of the
 ///    plan's DSP start, and fading a posture 0.03 s behind back onto the plan's start within the
@@ -42,6 +39,8 @@ struct ReferenceOptions {
   /// Time over which a phase start's departure from the reference fades out [s] (> 0; the DSP
   /// uses at most its own duration).
   double fade = 0.15;
+  double fade_angle = 0.05;  ///< largest angle departure faded [rad] (>= 0)
+  double fade_rate = 1.0;    ///< largest rate departure faded [rad/s] (>= 0)
   /// Time after the planned touchdown over which the strike rates are phased in [s] (> 0).
   double strike_window = 0.1;
 };

@@ -87,7 +87,7 @@ ScenarioResult runScenario(const dynamics::Model& nominal, const Reference& ref,
   } else {
     controller = std::make_unique<TrackingController>(model, makeTrackingLaw(s.controller, gains));
   }
-  r.walk = walk(plant, *controller, ref, s.ground, WalkPlan{s.steps, s.push}, log);
+  r.walk = walk(plant, *controller, ref, s.ground, WalkPlan{s.steps, s.push, s.rules}, log);
   if (s.poincare) {
     if (const auto* rigid = std::get_if<RigidGround>(&s.ground)) {
       PoincareOptions options;

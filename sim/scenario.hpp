@@ -35,6 +35,7 @@ struct Scenario {
   std::optional<double> friction;  ///< the plant's mu, if not the robot's
   GroundModel ground = RigidGround{};
   std::optional<Push> push;
+  ContactRules rules;  ///< failures and contact limits, the same on every ground
   int steps = 20;
   bool poincare = false;  ///< also the Poincare map (rigid ground only)
 };

@@ -35,6 +35,7 @@ Scenario makeScenario(const ScenarioSettings& o) {
   if (o.friction >= 0) s.friction = o.friction;
   if (o.push != 0) setSweepValue(s, "push", o.push);
   s.gain_scale = o.gain_scale;
+  s.rules = o.rules;
   return s;
 }
 
@@ -79,7 +80,8 @@ nlohmann::ordered_json scenarioJson(const ScenarioSettings& o, const Scenario& s
               {"inertia", s.uncertainty_bound.inertia},
               {"length", s.uncertainty_bound.length},
               {"com", s.uncertainty_bound.com}}}}},
-          {"steps_requested", s.steps}};
+          {"steps_requested", s.steps},
+          {"contact_rules", contactRulesJson(s.rules)}};
 }
 
 }  // namespace gaitopt::sim

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dynamics/model.hpp"
+#include "sim/contact_rules.hpp"
 #include "sim/scenario.hpp"
 
 namespace gaitopt::sim {
@@ -24,6 +25,7 @@ struct ScenarioSettings {
   double friction = -1;                  ///< < 0: the robot's
   double push = 0;  ///< horizontal hip impulse, 0.1 s pulse from mid single support of step 2 [N s]
   double gain_scale = 1;
+  ContactRules rules;  ///< slip, CoP and restitution settings (contact_rules.hpp)
 };
 
 /// The ground YAML `ground` names: a shipped configs/grounds/<name>.yaml or a file path.

@@ -37,8 +37,8 @@ class WalkRecorder {
   std::optional<WalkSample> pending_;  ///< the latest sample not (yet) kept
 };
 
-/// steps.csv: step, ok, impact, ssp_duration, dsp_duration, advance, max_tracking_error,
-/// failure.
+/// steps.csv: step, ok, impact, ssp_duration, dsp_duration, advance, max_tracking_error, slip,
+/// min_cop_margin (inf without an actuated ankle), failure.
 void writeStepsCsv(const WalkResult& walk, const std::string& path);
 
 }  // namespace gaitopt::sim

@@ -1,5 +1,6 @@
 #include "sim/walk_summary.hpp"
 
+#include <cmath>
 #include <vector>
 
 namespace gaitopt::sim {
@@ -56,6 +57,21 @@ nlohmann::ordered_json gaitJson(const WalkResult& w) {
           {"mean_speed", total.distance / total.duration}};
 }
 
+/// Slip per step and the stance foot's CoP (contact_rules.hpp). The CoP margin is that of the
+/// ankle torque the controller asked for: negative when it left the foot (then saturated or a
+/// foot rotation); null without an actuated ankle.
+nlohmann::ordered_json contactJson(const WalkResult& w) {
+  auto slip = nlohmann::ordered_json::array();
+  for (const StepResult& s : w.steps) slip.push_back(s.slip);
+  nlohmann::ordered_json j{{"slip_per_step_m", slip}, {"max_slip_m", w.max_slip}};
+  if (std::isfinite(w.min_cop_margin))
+    j["min_cop_margin_m"] = w.min_cop_margin;
+  else
+    j["min_cop_margin_m"] = nullptr;
+  j["cop_saturated_time_s"] = w.cop_saturated_time;
+  return j;
+}
+
 }  // namespace
 
 nlohmann::ordered_json walkSummary(const ScenarioSettings& settings, const ReferenceFolder& ref,
@@ -69,6 +85,7 @@ nlohmann::ordered_json walkSummary(const ScenarioSettings& settings, const Refer
   j["failure"] = r.walk.failure;
   j["max_tracking_error"] = r.walk.max_tracking_error;
   j.update(gaitJson(r.walk));
+  j.update(contactJson(r.walk));
   j.update(poincareJson(r.poincare));
   if (r.hzd_map) j["hzd"] = hzdJson(r);
   j["wall_time_s"] = r.wall_time_s;

@@ -2,9 +2,10 @@
 /// @file walk_summary.hpp
 /// summary.json of a closed-loop walk (`gaitopt simulate`): robot, the scenario's settings,
 /// friction, steps_completed, fell, failure, max_tracking_error, mean step length, duration and
-/// speed over the completed steps, the Poincare multipliers (null when not computed, with
-/// poincare_failure when the map failed), HZD's restricted Poincare map (analytic and measured)
-/// under the hzd controller, and wall_time_s.
+/// speed over the completed steps, slip per step and its largest value, the least CoP margin of
+/// the stance foot and the time its ankle torque was saturated (the rules in contact_rules), the
+/// Poincare multipliers (null when not computed, with poincare_failure when the map failed), HZD's
+/// restricted Poincare map (analytic and measured) under the hzd controller, and wall_time_s.
 #include <nlohmann/json.hpp>
 
 #include "dynamics/model.hpp"

@@ -4,6 +4,8 @@
 # Usage: simulate_cli_test.sh <path to gaitopt binary> <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
+# The polynomial gait walks a robot with a heel long enough for its ankle torque.
+LONG_HEEL="$ROOT/tests/apps/mu2004_five_link_long_heel.yaml"
 cd "$ROOT" || fail "no repo root $ROOT"  # the reference folder names its robot under configs/
 # The reference: the polynomial gait, made here (results/ keeps no trajectory CSVs).
 REF="$TMP/poly"
@@ -12,7 +14,7 @@ run poly --robot configs/robots/mu2004_five_link.yaml --gait configs/gaits/mu200
 [[ $RC -eq 0 ]] || fail "poly exited $RC: $(cat "$TMP/err")"
 
 # (a) rigid ground, 2 steps: files, row counts, the planned steps, the summary keys.
-run simulate --reference "$REF" --steps 2 --no-poincare --no-plots --out "$TMP/rigid"
+run simulate --robot "$LONG_HEEL" --reference "$REF" --steps 2 --no-poincare --no-plots --out "$TMP/rigid"
 [[ $RC -eq 0 ]] || fail "(a) simulate exited $RC: $(cat "$TMP/err")"
 for f in walk.csv steps.csv stick.csv summary.json; do
   [[ -f "$TMP/rigid/$f" ]] || fail "(a) $f missing"
@@ -39,7 +41,7 @@ PY
 
 # (b) the compliant and LCP grounds walk the same 2 steps, within a few mm of the rigid ones.
 for ground in impedance lcp; do
-  run simulate --reference "$REF" --steps 2 --ground "$ground" --no-plots --out "$TMP/$ground"
+  run simulate --robot "$LONG_HEEL" --reference "$REF" --steps 2 --ground "$ground" --no-plots --out "$TMP/$ground"
   [[ $RC -eq 0 ]] || fail "(b) $ground exited $RC: $(cat "$TMP/err")"
   check_json "(b) $ground summary" "$TMP/$ground/summary.json" <<'PY'
 assert d["steps_completed"] == 2 and not d["fell"], d["failure"]
@@ -49,7 +51,7 @@ PY
 done
 
 # (c) Mu's uncertainty case 3 on the plant: the polynomial gait falls, which is a result.
-run simulate --reference "$REF" --steps 3 --uncertainty-case 3 --no-plots --out "$TMP/case3"
+run simulate --robot "$LONG_HEEL" --reference "$REF" --steps 3 --uncertainty-case 3 --no-plots --out "$TMP/case3"
 [[ $RC -eq 0 ]] || fail "(c) a fall must exit 0, got $RC: $(cat "$TMP/err")"
 check_json "(c) summary" "$TMP/case3/summary.json" <<'PY'
 assert d["fell"] is True and d["steps_completed"] < 3 and d["failure"].startswith("step "), d

@@ -5,24 +5,27 @@
 # Usage: stability_cli_test.sh <path to gaitopt binary> <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
+# The polynomial gait walks a robot with a heel long enough for its ankle torque.
+LONG_HEEL="$ROOT/tests/apps/mu2004_five_link_long_heel.yaml"
 cd "$ROOT" || fail "no repo root $ROOT"
 # The reference: the polynomial gait, made here (results/ keeps no trajectory CSVs).
 run poly --robot configs/robots/mu2004_five_link.yaml --gait configs/gaits/mu2004.yaml \
   --out "$TMP/poly" --no-plots
 [[ $RC -eq 0 ]] || fail "poly exited $RC: $(cat "$TMP/err")"
-ARGS=(--reference "$TMP/poly" --steps 2 --no-plots --quiet)
+ARGS=(--robot "$LONG_HEEL" --reference "$TMP/poly" --steps 2 --no-plots --quiet)
 
-# (a) friction 0.2 .. 0.5: the gait needs about 0.35 (its own friction ratio plus the impact).
+# (a) friction 0.2 .. 0.5: the gait's friction ratio peaks at 0.31; at 0.3 its stance tip slides
+# a little (less than --max-slip, 1 cm) and the walk goes on, at 0.2 it slides further and fails.
 run stability "${ARGS[@]}" --sweep friction=0.2:0.5:4 --jobs 2 --out "$TMP/a"
 [[ $RC -eq 0 ]] || fail "(a) stability exited $RC: $(cat "$TMP/err")"
 [[ $(wc -l <"$TMP/a/sweep_friction.csv") -eq 5 ]] || fail "(a) rows: $(cat "$TMP/a/sweep_friction.csv")"
 check_json "(a) summary" "$TMP/a/summary.json" <<'PY'
 s = d["sweeps"]["friction"]
 assert s["nominal"] == 0.6 and s["values"] == 4, s
-assert s["walks_from"] == 0.4 and s["walks_to"] == 0.5, s
-assert s["fails_below"]["value"] == 0.3 and "slips" in s["fails_below"]["failure"], s
+assert s["walks_from"] == 0.3 and s["walks_to"] == 0.5, s
+assert s["fails_below"]["value"] == 0.2 and "slip" in s["fails_below"]["failure"], s
 PY
-grep -q "friction: walks from 0.4 to 0.5" "$TMP/out" || fail "(a) stdout: $(cat "$TMP/out")"
+grep -q "friction: walks from 0.3 to 0.5" "$TMP/out" || fail "(a) stdout: $(cat "$TMP/out")"
 
 # (b) one job gives the same rows (up to order and wall time).
 run stability "${ARGS[@]}" --sweep friction=0.2:0.5:4 --jobs 1 --out "$TMP/b"
@@ -41,7 +44,7 @@ run stability "${ARGS[@]}" --sweep friction=0.2:0.5:4 --out "$TMP/c"
 [[ $RC -eq 0 ]] || fail "(c) stability exited $RC: $(cat "$TMP/err")"
 grep -q "2 points to walk (2 done before)" "$TMP/out" || fail "(c) no resume: $(cat "$TMP/out")"
 check_json "(c) summary" "$TMP/c/summary.json" <<'PY'
-assert d["sweeps"]["friction"]["values"] == 4 and d["sweeps"]["friction"]["walks_from"] == 0.4, d
+assert d["sweeps"]["friction"]["values"] == 4 and d["sweeps"]["friction"]["walks_from"] == 0.3, d
 PY
 # A second rerun has nothing left to do.
 run stability "${ARGS[@]}" --sweep friction=0.2:0.5:4 --out "$TMP/c"

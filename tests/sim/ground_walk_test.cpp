@@ -31,7 +31,7 @@ struct LoggedWalk {
 
 LoggedWalk walkOn(const GroundModel& ground, int steps) {
   const Reference ref(test::polynomialGait());
-  const dynamics::Model& plant = test::fiveLinkRobot();
+  const dynamics::Model& plant = test::longHeelRobot();  // the gait's ZMP needs a 0.2 m heel
   LoggedWalk w;
   const auto log = [&](const WalkSample& s) {
     w.hip.push_back(Vec2d(s.stance_x, s.stance_y) + dynamics::hip<double>(plant, s.theta));
@@ -80,9 +80,11 @@ TEST(GroundWalk, PolynomialGaitWalksTenStepsOnEveryGroundAsOnRigidGround) {
   // down with zero vertical speed (Mu ch. 3), so E meets the sunk ground ~21 ms early; 25 ms.
   // LCP: touchdown is found to within the 1 ms step, torques are held over it; 2 ms.
   // Hip paths: compliant within 2 mm of the rigid one (the sinking plus the tracking error the
-  // early touchdown causes), LCP within 0.5 mm. Step lengths within 1 mm.
+  // early touchdown causes), LCP within 0.5 mm. Step lengths within 1 mm on the LCP ground and
+  // 2.5 mm on the impedance ground: the rigid walk starts each phase's reference from the robot
+  // (reference.hpp), the compliant one does not (its tips bounce at touchdown).
   for (const Agreement& a :
-       {Agreement{"impedance", 0.025, 1e-3, 2e-3}, Agreement{"lcp", 0.002, 1e-3, 5e-4}}) {
+       {Agreement{"impedance", 0.025, 2.5e-3, 2e-3}, Agreement{"lcp", 0.002, 1e-3, 5e-4}}) {
     const LoggedWalk w = walkOn(shippedGround(a.ground), kSteps);
     ASSERT_EQ(w.result.steps_completed, kSteps) << a.ground << ": " << w.result.failure;
     double touchdown = 0, advance = 0, dsp = 0;

@@ -32,7 +32,7 @@ TEST(Push, RigidWalkKeepsTheMomentumBalanceThroughThePulse) {
 #ifndef NDEBUG
   GTEST_SKIP() << "walks are too slow in the unoptimised sanitizer build";
 #endif
-  const auto& m = fiveLinkRobot();
+  const auto& m = test::longHeelRobot();  // the polynomial gait's ZMP needs a 0.2 m heel
   const Reference ref(polynomialGait());
   const Vec2d impulse(3.0, 0.0);
   std::vector<WalkSample> log;
@@ -72,7 +72,7 @@ TEST(Push, SmallPushIsRecoveredAndALargeOneIsAFallOnEveryGround) {
   const std::vector<GroundModel> grounds{RigidGround{}, LcpGround{1e-3}};
   for (const auto& ground : grounds) {
     const auto walkWith = [&](double impulse) {
-      return walk(fiveLinkRobot(), c, ref, ground,
+      return walk(test::longHeelRobot(), c, ref, ground,
                   {6, Push{2, std::nullopt, Vec2d(impulse, 0), 0.1}});
     };
     // Forward pushes only: time-based tracking of a gait that lands at rest cannot take a lag
