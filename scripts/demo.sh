@@ -41,7 +41,10 @@ echo "== gaitopt poly: Mu (2004) ch. 3 polynomial gait of the five-link robot"
 echo "== gaitopt optimize: the default five-link problem from the polynomial gait"
 "$bin" optimize --config configs/ocp/mu2004_walk.yaml --out results/opt_mu2004 --quiet
 echo "== gaitopt simulate: 20 steps of the optimal gait under computed torque"
+# --cop-limit fail: a CoP beyond the 5 cm heel is a foot rotation (scripts/closed_loop_demo.sh
+# says why the default, a saturated ankle, does not walk this export).
 "$bin" simulate --reference results/opt_mu2004 --controller computed_torque --steps 20 --rate 50 \
+  --cop-limit fail \
   --out results/walk_opt_mu2004_computed_torque --quiet
 
 echo "== gaitopt report: one page per result (animated robot, summary, charts)"

@@ -118,7 +118,8 @@ gaits::Knot Reference::singleSupport(double t) const {
   gaits::Knot k;
   if (t <= ssp_end_) {
     k = ssp_.at(std::max(t, ssp_.startTime()));
-  } else {  // on at the touchdown rates
+  } else {  // on at the touchdown rates (a gait landing at rest decelerates its swing leg
+            // into touchdown: kept on, that acceleration would lift the tip again)
     k = ssp_.knots().back();
     k.theta += k.dtheta * (t - ssp_end_);
     k.ddtheta.setZero();

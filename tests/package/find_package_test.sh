@@ -35,7 +35,8 @@ grep -q -- "-I$ROOT" "$TMP/build.log" && fail "the example compiled against the 
 run poly --robot configs/robots/mu2004_five_link.yaml --gait configs/gaits/mu2004.yaml \
   --out "$TMP/poly" --no-plots
 [[ $RC -eq 0 ]] || fail "poly exited $RC: $(cat "$TMP/err")"
-"$TMP/controller/track_gait" configs/robots/mu2004_five_link.yaml "$TMP/poly/trajectory.csv" 3 \
+# The long-heel fixture: the polynomial gait's ZMP leaves the shipped 5 cm heel (tests/apps).
+"$TMP/controller/track_gait" tests/apps/mu2004_five_link_long_heel.yaml "$TMP/poly/trajectory.csv" 3 \
   >"$TMP/track.log" 2>&1 || fail "track_gait: $(cat "$TMP/track.log")"
 grep -q "3 of 3 steps" "$TMP/track.log" || fail "track_gait: $(cat "$TMP/track.log")"
 
