@@ -3,9 +3,8 @@
 # optimal five-link gait, walked 20 steps on rigid ground by computed torque, the boundary-layer
 # law (sliding_mode) and Mu's integral sliding mode (mu_sliding_mode), with the controller's
 # model off by case 1 (exact), 2 (+40 % m, I; +10 % l, d) or 3 (+100 %, +40 %); on the shipped
-# robot (5 cm heel; a CoP beyond the heel or toe is a foot rotation, as in closed_loop_demo.sh)
-# and on the same robot with a 0.30 m heel (Mu's assumption: the ankle carries what the gait
-# asks).
+# robot (5 cm heel: the stance ankle saturates where the CoP reaches the heel or the toe) and on
+# the same robot with a 0.30 m heel (Mu's assumption: the ankle carries what the gait asks).
 # Writes OUT/mu_cases.csv and OUT/mu_cases.md.
 # Usage: scripts/mu_cases.sh BUILD_DIR OUT_DIR   (from the repository root)
 set -euo pipefail
@@ -27,7 +26,6 @@ for gait in poly opt; do
       for c in 1 2 3; do
         "$bin" simulate --reference "$work/$gait" --robot "${robots[$robot]}" \
           --controller "$controller" --uncertainty-case "$c" --uncertainty-on controller \
-          --cop-limit fail \
           --steps 20 --out "$work/walk" --no-plots --no-poincare --quiet >/dev/null
         /usr/bin/python3 - "$work/walk/summary.json" "$gait" "$robot" "$controller" "$c" \
           >>"$out/mu_cases.csv" <<'PY'

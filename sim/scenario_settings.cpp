@@ -44,12 +44,13 @@ std::vector<std::string> scenarioInputs(const ScenarioSettings& o) {
 }
 
 void requireControllerFits(const ScenarioSettings& o, const dynamics::Model& model) {
-  if (model.joints().front().actuated) return;
+  // HZD (hzd_controller.hpp) leaves the unactuated stance ankle to the zero dynamics.
+  if (o.controller == "hzd" || model.joints().front().actuated) return;
   throw config::ConfigError(
       "--controller", o.controller, 0,
       fmt::format("the {} controller imposes all {} joint accelerations through the joint "
                   "torques, so it needs an actuated stance ankle; robot '{}' has a passive one "
-                  "(walking it needs an underactuated controller, which gaitopt does not have)",
+                  "(walk it with --controller hzd)",
                   o.controller, model.nLinks(), model.name()));
 }
 

@@ -42,9 +42,9 @@ Scenario makeScenario(const ScenarioSettings& o);
 /// be one of them.
 std::vector<std::string> scenarioInputs(const ScenarioSettings& o);
 
-/// @throws config::ConfigError (exit 2) when the controller cannot drive `model`: both
-/// tracking laws set every joint acceleration through the torques, so the stance ankle must be
-/// actuated.
+/// @throws config::ConfigError (exit 2) when the controller cannot drive `model`: the tracking
+/// laws set every joint acceleration through the torques, so the stance ankle must be actuated
+/// (HZD excepted).
 void requireControllerFits(const ScenarioSettings& o, const dynamics::Model& model);
 
 /// The scenario's settings for summary.json.
