@@ -18,6 +18,7 @@ struct PoincareOptions {
   int settle_steps = 15;       ///< iterations of P towards the fixed point
   double perturbation = 1e-6;  ///< central-difference step [rad, rad/s]
   EventIntegratorOptions integrator;
+  ContactRules rules;  ///< the walk's own (a map under other rules is of another cycle)
 };
 
 struct PoincareAnalysis {

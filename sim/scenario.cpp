@@ -92,6 +92,7 @@ ScenarioResult runScenario(const dynamics::Model& nominal, const Reference& ref,
     if (const auto* rigid = std::get_if<RigidGround>(&s.ground)) {
       PoincareOptions options;
       options.integrator = rigid->integrator;
+      options.rules = s.rules;
       r.poincare = analysePoincare(plant, *controller, ref, options);
     }
   }
