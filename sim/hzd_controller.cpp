@@ -1,6 +1,5 @@
 #include "sim/hzd_controller.hpp"
 
-#include <algorithm>
 #include <stdexcept>
 
 #include <Eigen/Cholesky>
@@ -8,6 +7,7 @@
 
 #include "dynamics/joint_coordinates.hpp"
 #include "dynamics/ssp_dynamics.hpp"
+#include "sim/computed_torque.hpp"
 
 namespace gaitopt::sim {
 
@@ -40,11 +40,7 @@ VecD HzdController::torque(gaits::Phase phase, const VecD& theta, const VecD& dt
   const int n = model_.nLinks();
   VecD tau = VecD::Zero(n);
   tau.tail(n - 1) = unclippedTorque(theta, dtheta);
-  for (int j = 1; j < n; ++j) {
-    const double limit = model_.joints()[static_cast<std::size_t>(j)].torque_limit;
-    tau(j) = std::clamp(tau(j), -limit, limit);
-  }
-  return tau;
+  return clipTorque(model_, tau);  // the passive stance ankle stays at 0
 }
 
 std::unique_ptr<HzdController> makeHzdController(const dynamics::Model& nominal,
