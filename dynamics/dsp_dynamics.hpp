@@ -31,6 +31,16 @@ VecR<S> dspResidual(const Model& model, const Vec<S>& theta, const Vec<S>& dthet
   return r;
 }
 
+/// DSP inverse dynamics in joint space, Mu (2.11) with (2.43) solved for the torques of a
+/// fully actuated chain: tau = M^-T (D ddtheta + N - J^T lambda), given the tip force lambda
+/// (the DSP's torques are not unique; lambda picks one of them) [N m].
+inline VecD dspInverseDynamics(const Model& model, const VecD& theta, const VecD& dtheta,
+                               const VecD& ddtheta, const Vec2d& lambda) {
+  const Mat2X<double> jac = pointJacobian(model.tipWeights(), theta);
+  return jointTorque<double>(massMatrix(model, theta) * ddtheta +
+                             nonlinearEffects(model, theta, dtheta) - jac.transpose() * lambda);
+}
+
 /// Accelerations and the ground force at E in the DSP.
 struct DspSolution {
   VecD ddtheta;       ///< [rad/s^2]

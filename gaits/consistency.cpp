@@ -9,15 +9,27 @@
 namespace gaitopt::gaits {
 
 double maxDynamicsResidual(const Trajectory& traj, const dynamics::Model& model) {
+  const int n = model.nLinks();
   double worst = 0;
   for (const auto& k : traj.knots()) {
     const VecD th = k.theta, dth = k.dtheta, ddth = k.ddtheta, tau = k.tau;
-    const double r = k.phase == Phase::kSsp
-                         ? dynamics::sspResidual(model, th, dth, ddth, tau).cwiseAbs().maxCoeff()
-                         : dynamics::dspResidual(model, th, dth, ddth, tau, Vec2d(k.force_swing))
-                               .cwiseAbs()
-                               .maxCoeff();
-    worst = std::max(worst, r);
+    const VecD r =
+        k.phase == Phase::kSsp
+            ? dynamics::sspResidual(model, th, dth, ddth, tau)
+            : VecD(dynamics::dspResidual(model, th, dth, ddth, tau, Vec2d(k.force_swing)).head(n));
+    worst = std::max(worst, r.cwiseAbs().maxCoeff());
+  }
+  return worst;
+}
+
+double maxTipAcceleration(const Trajectory& traj, const dynamics::Model& model) {
+  const int n = model.nLinks();
+  double worst = 0;
+  for (const auto& k : traj.knots()) {
+    if (k.phase != Phase::kDsp) continue;
+    const VecD th = k.theta, dth = k.dtheta, ddth = k.ddtheta, tau = k.tau;
+    const auto r = dynamics::dspResidual(model, th, dth, ddth, tau, Vec2d(k.force_swing));
+    worst = std::max(worst, r.tail(r.size() - n).cwiseAbs().maxCoeff());
   }
   return worst;
 }

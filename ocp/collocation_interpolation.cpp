@@ -24,6 +24,15 @@ Basis lagrangeIntegral(Scheme scheme, double s) {
   return {2 * s3 / 3 - 3 * s2 / 2 + s, 2 * s2 - 4 * s3 / 3, 2 * s3 / 3 - s2 / 2};
 }
 
+/// Integrals of lagrangeIntegral from 0 to s, in units of h^2. At s = 1 they meet the
+/// scheme's own position update: (1/6, 1/3, 0) h^2 for Hermite-Simpson, (1/3, 1/6) for
+/// trapezoidal.
+Basis lagrangeDoubleIntegral(Scheme scheme, double s) {
+  const double s2 = s * s, s3 = s2 * s, s4 = s3 * s;
+  if (scheme == Scheme::kTrapezoidal) return {s2 / 2 - s3 / 6, s3 / 6, 0};
+  return {s4 / 6 - s3 / 2 + s2 / 2, 2 * s3 / 3 - s4 / 3, s4 / 6 - s3 / 6};
+}
+
 }  // namespace
 
 int segmentAt(const PhaseLayout& layout, double t, double total) {
@@ -33,7 +42,13 @@ int segmentAt(const PhaseLayout& layout, double t, double total) {
   return k;
 }
 
-Eigen::VectorXd interpolatePoint(const PhaseLayout& l, const Eigen::VectorXd& decision, double t) {
+namespace {
+
+/// The point at phase time t with the first `integrated` components of x taken as the
+/// integral of the interpolated xdot from the segment's first point, the rest as the
+/// Lagrange interpolation of the points.
+Eigen::VectorXd pointAt(const PhaseLayout& l, const Eigen::VectorXd& decision, double t,
+                        int integrated) {
   const double total = l.durationAt(decision);
   const int k = segmentAt(l, t, total);
   const double h = total * l.segmentFraction(k);
@@ -43,11 +58,35 @@ Eigen::VectorXd interpolatePoint(const PhaseLayout& l, const Eigen::VectorXd& de
   Eigen::VectorXd point = Eigen::VectorXd::Zero(l.pointSize());
   for (int j = 0; j < count; ++j)
     point += value[static_cast<size_t>(j)] * l.point(decision, first + j);
-  for (int i = 0; i < l.nx; ++i) {  // x = x_k + integral of the interpolated xdot
+  for (int i = 0; i < integrated; ++i) {  // x = x_k + integral of the interpolated xdot
     double x = decision(l.x(first, i));
     for (int j = 0; j < count; ++j)
       x += h * integral[static_cast<size_t>(j)] * decision(l.xdot(first + j, i));
     point(i) = x;
+  }
+  return point;
+}
+
+}  // namespace
+
+Eigen::VectorXd interpolatePoint(const PhaseLayout& l, const Eigen::VectorXd& decision, double t) {
+  return pointAt(l, decision, t, l.nx);
+}
+
+Eigen::VectorXd exportPoint(const PhaseLayout& l, const Eigen::VectorXd& decision, double t) {
+  Eigen::VectorXd point = interpolatePoint(l, decision, t);
+  if (l.nq == 0) return point;
+  const double total = l.durationAt(decision);
+  const int k = segmentAt(l, t, total);
+  const double h = total * l.segmentFraction(k);
+  const double s = std::clamp((t - total * l.fraction(k)) / h, 0.0, 1.0);
+  const Basis twice = lagrangeDoubleIntegral(l.scheme, s);
+  const int first = k * l.pointsPerSegment(), count = l.pointsPerSegment() + 1;
+  for (int i = 0; i < l.nq; ++i) {  // q = q_k + v_k (t - t_k) + double integral of a
+    double q = decision(l.x(first, i)) + h * s * decision(l.x(first, l.nq + i));
+    for (int j = 0; j < count; ++j)
+      q += h * h * twice[static_cast<size_t>(j)] * decision(l.xdot(first + j, l.nq + i));
+    point(i) = q;
   }
   return point;
 }

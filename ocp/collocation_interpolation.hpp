@@ -20,4 +20,14 @@ int segmentAt(const PhaseLayout& layout, double t, double total);
 Eigen::VectorXd interpolatePoint(const PhaseLayout& layout, const Eigen::VectorXd& decision,
                                  double t);
 
+/// As interpolatePoint, but in the second-order form q is the double integral of the
+/// interpolated acceleration from the segment's first point (q_k + v_k tau + double integral
+/// of a), so that q, v and a of the export are derivatives of one another, as a controller and
+/// the simulator's quintic reference between samples take them. interpolatePoint's q integrates
+/// the interpolated v instead, which differs from the integral of a by a cubic vanishing at the
+/// three points: rates up to 2 % off the angles' derivatives. Both meet the points' q at the
+/// segment ends (Simpson's rule integrates that cubic exactly); this one misses the midpoint's
+/// q by O(h^4).
+Eigen::VectorXd exportPoint(const PhaseLayout& layout, const Eigen::VectorXd& decision, double t);
+
 }  // namespace gaitopt::ocp

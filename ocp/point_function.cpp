@@ -76,13 +76,16 @@ void PathConstraint::hessian(const Eigen::VectorXd& x, const Eigen::VectorXd& la
 }
 
 QuadratureCost::QuadratureCost(std::string name, const PhaseLayout& layout,
-                               std::shared_ptr<const PointFunction> integrand)
+                               std::shared_ptr<const PointFunction> integrand,
+                               Eigen::VectorXd weights)
     : CostTerm(std::move(name)),
       layout_(layout),
       f_(std::move(integrand)),
-      weights_(layout.quadratureWeights()),
+      weights_(weights.size() > 0 ? std::move(weights) : layout.quadratureWeights()),
       pattern_(probePattern(*f_, layout.pointSize())) {
   if (f_->rows() != 1) throw std::invalid_argument("a running cost integrand has one row");
+  if (weights_.size() != layout_.points())
+    throw std::invalid_argument("a running cost needs one quadrature weight per point");
 }
 
 double QuadratureCost::value(const Eigen::VectorXd& x) const {

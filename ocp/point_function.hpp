@@ -61,8 +61,9 @@ class PathConstraint : public ConstraintSet {
 /// duration; L has one row. A free T is differentiated too.
 class QuadratureCost : public CostTerm {
  public:
+  /// @param weights  per point, for T = 1; empty: the scheme's own (quadratureWeights)
   QuadratureCost(std::string name, const PhaseLayout& layout,
-                 std::shared_ptr<const PointFunction> integrand);
+                 std::shared_ptr<const PointFunction> integrand, Eigen::VectorXd weights = {});
   double value(const Eigen::VectorXd& x) const override;
   void gradient(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> grad) const override;
   void hessian(const Eigen::VectorXd& x, double factor, Triplets& out) const override;

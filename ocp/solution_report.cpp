@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "gaits/consistency.hpp"
+#include "gaits/export_checks.hpp"
 #include "gaits/gait_summary.hpp"
 #include "gaits/metrics.hpp"
 #include "gaits/trajectory_csv.hpp"
@@ -74,6 +75,9 @@ nlohmann::ordered_json violationJson(const Violation& v, const std::string& name
           {"violation", v.amount}};
 }
 
+/// Peak torques below this are a passive gait's, whose residual has no torque scale [N m].
+constexpr double kPassiveTorque = 1e-3;
+
 /// A strike slower than this lands at rest (solver tolerance), and no impact type applies [m/s].
 constexpr double kAtRest = 1e-6;
 
@@ -91,6 +95,25 @@ nlohmann::ordered_json strikeJson(const StrikeReport& s, const OcpConfig& config
           {"impulse_trailing", {s.impulse_trailing.x(), s.impulse_trailing.y()}},
           {"impact_admitted", s.normal_velocity > kAtRest ? dynamics::toString(s.admitted)
                                                           : "none: the tip lands at rest"}};
+}
+
+/// The objective term by term (the solver's quadrature), and the share of the torque-squared
+/// regulariser in it when another term is the primary one (issue 15: a "small" regulariser was
+/// 78 % of the least-cost-of-transport objective).
+nlohmann::ordered_json costTermsJson(const Nlp& nlp, const Eigen::VectorXd& x,
+                                     const CostWeights& weights) {
+  nlohmann::ordered_json terms = nlohmann::ordered_json::object();
+  double regulariser = 0, total = 0;
+  for (const auto& term : nlp.costTerms()) {
+    const double value = term->value(x);
+    terms[term->name()] = value;
+    total += value;
+    if (term->name().ends_with("_torque_squared")) regulariser += value;
+  }
+  nlohmann::ordered_json out = {{"terms", terms}};
+  if (weights.primary() != "torque_squared" && weights.torque_squared > 0)
+    out["regulariser_share"] = total != 0 ? regulariser / total : 0.0;
+  return out;
 }
 
 /// Why a solve failed and where: the error line (also in FAILED.txt) and summary.json's keys.
@@ -125,10 +148,20 @@ void writeGaitFiles(const std::string& dir, const gaits::Trajectory& traj,
 
 nlohmann::ordered_json betweenNodeMetrics(const gaits::Trajectory& dense,
                                           const dynamics::Model& model, double rate_hz) {
-  return {{"max_dynamics_defect", gaits::maxDynamicsResidual(dense, model)},
+  const double defect = gaits::maxDynamicsResidual(dense, model);
+  const double peak = gaits::peakTorque(dense).maxCoeff();
+  using Json = nlohmann::ordered_json;
+  return {{"max_dynamics_defect", defect},
+          // undefined for a passive gait (no torque to compare with)
+          {"dynamics_defect_per_peak_torque", peak > kPassiveTorque ? Json(defect / peak) : Json()},
+          {"max_tip_acceleration", gaits::maxTipAcceleration(dense, model)},
           {"min_normal_force", gaits::minNormalForce(dense)},
           {"max_friction_ratio", frictionRatioJson(dense)},
           {"min_zmp_margin", gaits::minZmpMargin(dense, model)},
+          {"min_foot_cop_margin", gaits::minFootCopMargin(dense, model)},
+          {"min_swing_clearance", gaits::minSwingClearance(dense, model)},
+          {"max_dsp_tip_drift", gaits::maxDspTipDrift(dense, model)},
+          {"max_rate_mismatch", gaits::maxRateMismatch(dense)},
           {"rate_hz", rate_hz}};
 }
 
@@ -144,6 +177,7 @@ nlohmann::ordered_json solutionSummary(const GaitResultOptions& o, const dynamic
                                      r.callback_time_s, config.cost.primary()});
   summary["converged"] = r.success;
   summary["cost"] = r.cost;  // the solver's objective (the scheme's own quadrature)
+  summary["cost_terms"] = costTermsJson(problem.nlp, r.x, config.cost);
   summary["cost_quadrature"] = fmt::format(
       "the solver's objective: {} quadrature on the "
       "collocation points",

@@ -32,8 +32,11 @@ void writeGaitFiles(const std::string& dir, const gaits::Trajectory& traj,
                     const FolderPictures& pictures);
 
 /// How far the constraints that hold at the collocation points are missed between them, on the
-/// dense export `dense` sampled at `rate_hz`: max_dynamics_defect [N m], min_normal_force [N],
-/// max_friction_ratio (or why it is unbounded: a normal force <= 0), min_zmp_margin [m], rate_hz.
+/// dense export `dense` sampled at `rate_hz`: max_dynamics_defect [N m] and per peak torque,
+/// max_tip_acceleration [m/s^2] (gaits/consistency.hpp),
+/// min_normal_force [N], max_friction_ratio (or why it is unbounded: a normal force <= 0),
+/// min_zmp_margin, min_foot_cop_margin, min_swing_clearance, max_dsp_tip_drift [m],
+/// max_rate_mismatch (gaits/export_checks.hpp), rate_hz.
 nlohmann::ordered_json betweenNodeMetrics(const gaits::Trajectory& dense,
                                           const dynamics::Model& model, double rate_hz);
 

@@ -131,13 +131,33 @@ INSTANTIATE_TEST_SUITE_P(ShippedProblems, SetContract, ::testing::ValuesIn(allSe
 TEST(SetContractCoverage, EverySetOfTheGaitProblemIsChecked) {
   std::set<std::string> checked;
   for (const SetCase& c : allSets()) checked.insert(c.name);
-  for (const char* name :
-       {"ssp_defects",        "ssp_dynamics",       "ssp_knees",      "ssp_ground_contact",
-        "ssp_clearance",      "ssp_work_split",     "dsp_defects",    "dsp_dynamics",
-        "dsp_knees",          "dsp_ground_contact", "dsp_work_split", "touchdown_position",
-        "touchdown_at_rest",  "strike_downward",    "impact",         "impulse_cones",
-        "touchdown_to_dsp",   "periodicity",        "step_duration",  "ssp_torque_squared",
-        "dsp_torque_squared", "ssp_abs_work",       "dsp_abs_work"})
+  for (const char* name : {"ssp_defects",
+                           "ssp_dynamics",
+                           "ssp_knees",
+                           "ssp_ground_contact",
+                           "ssp_clearance",
+                           "ssp_work_split",
+                           "dsp_defects",
+                           "dsp_dynamics",
+                           "dsp_knees",
+                           "dsp_ground_contact",
+                           "dsp_work_split",
+                           "touchdown_position",
+                           "touchdown_at_rest",
+                           "strike_downward",
+                           "impact",
+                           "impulse_cones",
+                           "touchdown_to_dsp",
+                           "periodicity",
+                           "step_duration",
+                           "ssp_torque_squared",
+                           "dsp_torque_squared",
+                           "ssp_abs_work",
+                           "dsp_abs_work",
+                           "ssp_quarter_work_split",
+                           "dsp_quarter_work_split",
+                           "ssp_quarter_abs_work",
+                           "dsp_quarter_abs_work"})
     EXPECT_TRUE(checked.count(name)) << name << " is in no problem of the contract";
 }
 
