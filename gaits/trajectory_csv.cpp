@@ -17,6 +17,8 @@
 #include "dynamics/joint_coordinates.hpp"
 #include "dynamics/kinematics.hpp"
 #include "gaits/metrics.hpp"
+#include "gaits/physical_joints.hpp"
+#include "gaits/trajectory_columns.hpp"
 #include "io/checked_write.hpp"
 
 namespace gaitopt::gaits {
@@ -28,31 +30,12 @@ using config::ConfigError;
 /// than this was edited by hand or written for another convention [rad, rad/s].
 constexpr double kDerivedTolerance = 1e-9;
 
-constexpr const char* kTailColumns[] = {"fb_x",  "fb_y",    "fe_x",    "fe_y",  "zmp_x", "hip_x",
-                                        "hip_y", "swing_x", "swing_y", "com_x", "com_y"};
-
-/// Column names of DESIGN.md sec. 5 for an n-link robot: angles 1-based like Mu's links, joint
-/// quantities 0-based like q0 = stance ankle.
-std::vector<std::string> columnNames(int n) {
-  std::vector<std::string> names{"t", "phase"};
-  const auto add = [&](const char* prefix, int first) {
-    for (int i = 0; i < n; ++i) names.push_back(fmt::format("{}{}", prefix, first + i));
-  };
-  add("theta", 1);
-  add("dtheta", 1);
-  add("ddtheta", 1);
-  add("q", 0);
-  add("dq", 0);
-  add("tau", 0);
-  names.insert(names.end(), std::begin(kTailColumns), std::end(kTailColumns));
-  return names;
-}
-
 /// The header in the short form used in error messages.
 std::string headerSummary(int n) {
   return fmt::format(
       "t,phase,theta1..theta{0},dtheta1..dtheta{0},ddtheta1..ddtheta{0},q0..q{1},dq0..dq{1},"
-      "tau0..tau{1},fb_x,fb_y,fe_x,fe_y,zmp_x,hip_x,hip_y,swing_x,swing_y,com_x,com_y",
+      "tau0..tau{1},fb_x,fb_y,fe_x,fe_y,zmp_x,hip_x,hip_y,swing_x,swing_y,com_x,com_y, then the "
+      "physical joints' angles, rates (d...) and torques (tau_...)",
       n, n - 1);
 }
 
@@ -69,27 +52,8 @@ void appendNumbers(fmt::memory_buffer& buf, const Eigen::Ref<const Eigen::Vector
 
 void appendRow(fmt::memory_buffer& buf, const Knot& knot, const dynamics::Model& model,
                double step_length) {
-  const VecD theta = knot.theta;
-  const VecD dtheta = knot.dtheta;
-  const double zmp = zmpX(knot, step_length);
-  if (!std::isfinite(zmp))
-    throw std::invalid_argument(fmt::format(
-        "knot at t = {}: the total vertical ground force is zero, so the ZMP is undefined; a "
-        "reference trajectory needs its contact forces",
-        knot.t));
   fmt::format_to(std::back_inserter(buf), "{:.17g},{}", knot.t, toString(knot.phase));
-  appendNumbers(buf, knot.theta);
-  appendNumbers(buf, knot.dtheta);
-  appendNumbers(buf, knot.ddtheta);
-  appendNumbers(buf, dynamics::toJoint(theta));
-  appendNumbers(buf, dynamics::toJoint(dtheta));
-  appendNumbers(buf, knot.tau);
-  appendNumbers(buf, knot.force_stance);
-  appendNumbers(buf, knot.force_swing);
-  appendNumber(buf, zmp);
-  appendNumbers(buf, dynamics::hip(model, theta));
-  appendNumbers(buf, dynamics::swingTip(model, theta));
-  appendNumbers(buf, dynamics::centreOfMass(model, theta));
+  appendNumbers(buf, rowNumbers(knot, model, step_length));
   buf.push_back('\n');
 }
 
@@ -168,10 +132,11 @@ void checkHeader(const std::string& path, const std::string& line, const dynamic
   const int n = model.nLinks();
   std::vector<std::string> found;
   for (const auto field : splitFields(line)) found.emplace_back(field);
-  const std::vector<std::string> expected = columnNames(n);
+  const std::vector<std::string> expected = columnNames(model);
   if (found == expected) return;
   const int n_file = linksInHeader(found);
-  if (n_file != n && found == columnNames(n_file))
+  const std::vector<std::string> mu = muColumnNames(n_file);
+  if (n_file != n && found.size() >= mu.size() && std::equal(mu.begin(), mu.end(), found.begin()))
     throw ConfigError(path, "", 1,
                       fmt::format("the file has columns for {} links (theta1..theta{}) but robot "
                                   "'{}' has {} links",
@@ -254,7 +219,8 @@ struct Row {
   double swing_x = 0;
 };
 
-Row parseRow(RowParser& row, int n) {
+Row parseRow(RowParser& row, const dynamics::Model& model) {
+  const int n = model.nLinks();
   Row out;
   Knot& k = out.knot;
   k.t = row.number();
@@ -262,14 +228,19 @@ Row parseRow(RowParser& row, int n) {
   k.theta = row.numbers(n);
   k.dtheta = row.numbers(n);
   k.ddtheta = row.numbers(n);
-  row.derived(dynamics::toJoint(VecD(k.theta)), "M theta (Mu 2.41)");
-  row.derived(dynamics::toJoint(VecD(k.dtheta)), "M dtheta (Mu 2.41)");
+  const VecD q = dynamics::toJoint(VecD(k.theta)), dq = dynamics::toJoint(VecD(k.dtheta));
+  row.derived(q, "M theta (Mu 2.41)");
+  row.derived(dq, "M dtheta (Mu 2.41)");
   k.tau = row.numbers(n);
   k.force_stance = row.numbers(2);
   k.force_swing = row.numbers(2);
   row.numbers(3);  // zmp_x, hip_x, hip_y: outputs for controllers, recomputed when writing
   out.swing_x = row.number();
   row.numbers(3);  // swing_y, com_x, com_y
+  const auto joints = physicalJoints(model);
+  row.derived(physicalValues(joints, q, true), "the physical joint of q");
+  row.derived(physicalValues(joints, dq, false), "the physical joint rate of dq");
+  row.derived(physicalValues(joints, VecD(k.tau), false), "the physical joint torque of tau");
   return out;
 }
 
@@ -283,7 +254,7 @@ void writeTrajectoryCsv(const Trajectory& traj, const dynamics::Model& model,
     throw std::invalid_argument(fmt::format("trajectory has {} links but robot '{}' has {}",
                                             traj.nLinks(), model.name(), model.nLinks()));
   fmt::memory_buffer buf;
-  const std::vector<std::string> names = columnNames(model.nLinks());
+  const std::vector<std::string> names = columnNames(model);
   fmt::format_to(std::back_inserter(buf), "{}\n", fmt::join(names, ","));
   for (const Knot& knot : traj.knots()) appendRow(buf, knot, model, traj.stepLength());
   writeAtomically(path, buf);
@@ -298,13 +269,13 @@ Trajectory readTrajectoryCsv(const std::string& path, const dynamics::Model& mod
   checkHeader(path, lines.front(), model);
   if (lines.size() < 2) throw ConfigError(path, "", 1, "no data rows after the header");
 
-  const std::vector<std::string> names = columnNames(n);
+  const std::vector<std::string> names = columnNames(model);
   std::vector<Knot> knots;
   double step_length = 0;
   for (size_t i = 1; i < lines.size(); ++i) {
     const int line = static_cast<int>(i) + 1;
     RowParser parser(path, line, names, splitFields(lines[i]));
-    Row row = parseRow(parser, n);
+    Row row = parseRow(parser, model);
     if (!knots.empty() && row.knot.t < knots.back().t)
       throw ConfigError(path, "t", line,
                         fmt::format("time {:.17g} is before the previous row's {:.17g}; rows "

@@ -10,6 +10,7 @@
 #include "gaits/gait_summary.hpp"
 #include "gaits/metrics.hpp"
 #include "gaits/trajectory_csv.hpp"
+#include "gaits/trajectory_json.hpp"
 #include "io/checked_write.hpp"
 #include "io/output_folder.hpp"
 
@@ -142,6 +143,7 @@ void writeGaitFiles(const std::string& dir, const gaits::Trajectory& traj,
                     const dynamics::Model& model, const nlohmann::ordered_json& summary,
                     const FolderPictures& pictures) {
   gaits::writeTrajectoryCsv(traj, model, dir + "/trajectory.csv");
+  gaits::writeTrajectoryJson(traj, model, dir + "/trajectory.json");
   gaits::writeJsonFile(summary, dir + "/summary.json");
   if (pictures) pictures(dir);
 }

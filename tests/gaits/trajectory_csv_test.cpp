@@ -12,12 +12,14 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "config/config_error.hpp"
 #include "dynamics/joint_coordinates.hpp"
 #include "dynamics/kinematics.hpp"
 #include "gaits/metrics.hpp"
 #include "gaits/trajectory_csv.hpp"
+#include "gaits/trajectory_json.hpp"
 #include "support/fixtures.hpp"
 
 namespace gaitopt::test {
@@ -171,12 +173,35 @@ TEST_F(TrajectoryCsv, RoundTripIsExactAndByteIdentical) {
   EXPECT_FALSE(std::filesystem::exists(again + ".tmp")) << "temporary file left behind";
 }
 
+TEST_F(TrajectoryCsv, JsonVariantHoldsTheSameColumnsAndNumbers) {
+  const std::string json_path = path("trajectory.json");
+  gaits::writeTrajectoryJson(traj_, model_, json_path);
+  const auto json = nlohmann::json::parse(readText(json_path));
+  EXPECT_EQ(json["robot"], "mu2004_five_link");
+  EXPECT_EQ(json["step_length"].get<double>(), traj_.stepLength());
+  ASSERT_EQ(json["columns"].get<std::vector<std::string>>(), header_);
+  for (size_t c = 0; c < header_.size(); ++c) {
+    const auto& column = json["data"][header_[c]];
+    ASSERT_EQ(column.size(), traj_.knots().size()) << header_[c];
+    for (size_t k = 0; k < traj_.knots().size(); k += 7) {
+      const std::string csv = split(lines_[k + 1], ',')[c];
+      if (header_[c] == "phase")
+        EXPECT_EQ(column[k].get<std::string>(), csv);
+      else
+        EXPECT_EQ(column[k].get<double>(), std::stod(csv)) << header_[c] << " row " << k;
+    }
+  }
+}
+
 TEST_F(TrajectoryCsv, HeaderFollowsDesignSection5) {
   EXPECT_EQ(
       lines_.front(),
       "t,phase,theta1,theta2,theta3,theta4,theta5,dtheta1,dtheta2,dtheta3,dtheta4,dtheta5,"
       "ddtheta1,ddtheta2,ddtheta3,ddtheta4,ddtheta5,q0,q1,q2,q3,q4,dq0,dq1,dq2,dq3,dq4,"
-      "tau0,tau1,tau2,tau3,tau4,fb_x,fb_y,fe_x,fe_y,zmp_x,hip_x,hip_y,swing_x,swing_y,com_x,com_y");
+      "tau0,tau1,tau2,tau3,tau4,fb_x,fb_y,fe_x,fe_y,zmp_x,hip_x,hip_y,swing_x,swing_y,com_x,com_y,"
+      "left_ankle,left_knee,left_hip,right_hip,right_knee,dleft_ankle,dleft_knee,dleft_hip,"
+      "dright_hip,dright_knee,tau_left_ankle,tau_left_knee,tau_left_hip,tau_right_hip,"
+      "tau_right_knee");
   EXPECT_EQ(lines_.size(), 1 + traj_.knots().size());
 }
 
@@ -238,7 +263,7 @@ TEST_F(TrajectoryCsv, TruncatedLastLine) {
   const int last = static_cast<int>(lines_.size());
   expectMessage(
       errorOf(text, "", last),
-      {fmt::format("bad.csv:{}: expected 43 comma-separated fields", last), "(truncated line?)"});
+      {fmt::format("bad.csv:{}: expected 58 comma-separated fields", last), "(truncated line?)"});
 }
 
 TEST_F(TrajectoryCsv, TextInsteadOfANumber) {
