@@ -6,11 +6,11 @@
 # (constraints.friction_margin, constraints.zmp_margin), each optimum then swept by
 # `gaitopt stability` (20 steps, pushes by 0.25 N s, mass errors by 2.5 %, --cop-limit fail as in
 # closed_loop_demo.sh) under each controller. Writes OUT/strike_study.csv, strike_study.md and
-# strike_study.png; the gaits and sweeps stay in OUT/work (not committed). A strike variant is
+# strike_study.png; the gaits and sweeps stay in OUT/runs (not committed). A strike variant is
 # solved from the polynomial guess and from the optimum at the next lower velocity with the same
 # margins, and the cheaper optimum kept: from either start alone, narrow strike ranges stopped
 # at 500 iterations or at local optima several times as costly. Resumes: a variant whose solve
-# or sweep is in OUT/work is not redone.
+# or sweep is in OUT/runs is not redone.
 # Usage: scripts/strike_study.sh BUILD_DIR [OUT_DIR]   (from the repository root)
 # Environment: CONTROLLERS (default "computed_torque sliding_mode mu_sliding_mode").
 set -euo pipefail
@@ -18,7 +18,7 @@ build=${1:?usage: $0 BUILD_DIR [OUT_DIR]}
 out=${2:-results/strike_study}
 bin="$build/apps/gaitopt"
 base=configs/ocp/mu2004_walk.yaml
-work="$out/work"
+work="$out/runs"
 read -r -a controllers <<<"${CONTROLLERS:-computed_torque sliding_mode mu_sliding_mode}"
 velocities=(0 0.05 0.1 0.2 0.3)        # strike normal velocity [m/s]
 friction_margins=(0.15 0.3)            # of mu = 0.6: the default and half of mu
@@ -27,7 +27,7 @@ strike_angle="[0.8726646259971648, 2.443460952792061]"  # [50, 140] deg
 sweeps=(--sweep push=-3:3:25 --sweep mass_error=-0.2:0.2:17)
 mkdir -p "$work"
 
-# The base config with the variant's margins and strike; paths made absolute for the work dir.
+# The base config with the variant's margins and strike; paths made absolute for the runs dir.
 write_config() {  # NAME V FRICTION_MARGIN ZMP_MARGIN
   local strike="" top
   if [[ $2 != 0 ]]; then
