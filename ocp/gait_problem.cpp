@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 #include "dynamics/dsp_dynamics.hpp"
@@ -153,9 +154,12 @@ void addPhaseConstraints(GaitProblem& p, const dynamics::Model& model, const Ocp
   if (c.knee_limits && model.legLinks() == 2)
     addPathConstraint(p, phase, "knees", std::make_shared<KneeDirection>(phase.point));
   if (c.ground_contact) {
-    const bool zmp = c.zmp && model.joints().front().actuated;
+    // The ZMP rows only bound an ankle torque, so a passive ankle has none.
+    const auto zmp_foot = c.zmp && model.joints().front().actuated
+                              ? std::optional<dynamics::Foot>(marginFoot(model, c))
+                              : std::nullopt;
     addPathConstraint(p, phase, "ground_contact",
-                      std::make_shared<GroundContact>(model, phase.point, zmp, p.step_length,
+                      std::make_shared<GroundContact>(model, phase.point, zmp_foot, p.step_length,
                                                       frictionBound(model, c)));
   }
   if (!phase.doubleSupport() && c.clearance.enabled)

@@ -10,8 +10,9 @@ using Row = Eigen::Matrix<double, 1, 5>;  // coefficients of (F_Bx, F_By, F_Ex, 
 
 }  // namespace
 
-GroundContact::GroundContact(const dynamics::Model& model, const PointLayout& point, bool zmp,
-                             double step_length, double mu)
+GroundContact::GroundContact(const dynamics::Model& model, const PointLayout& point,
+                             const std::optional<dynamics::Foot>& zmp_foot, double step_length,
+                             double mu)
     : model_(&model), point_(point) {
   const bool dsp = point.hasContactForce();
   std::vector<Row> rows{Row(0, 1, 0, 0, 0), Row(-1, mu, 0, 0, 0), Row(1, mu, 0, 0, 0)};
@@ -20,9 +21,9 @@ GroundContact::GroundContact(const dynamics::Model& model, const PointLayout& po
     rows.push_back(Row(0, 0, -1, mu, 0));
     rows.push_back(Row(0, 0, 1, mu, 0));
   }
-  if (zmp) {
-    const double heel = model.foot().heel;
-    const double hi = (dsp ? step_length : 0.0) + model.foot().toe;
+  if (zmp_foot) {
+    const double heel = zmp_foot->heel;
+    const double hi = (dsp ? step_length : 0.0) + zmp_foot->toe;
     // M = step_length F_Ey - tau0; M + heel Fy >= 0 and hi Fy - M >= 0.
     rows.push_back(Row(0, heel, 0, step_length + heel, -1));
     rows.push_back(Row(0, hi, 0, hi - step_length, 1));
@@ -30,7 +31,7 @@ GroundContact::GroundContact(const dynamics::Model& model, const PointLayout& po
     // stays on it, -heel F_By <= -tau0 <= toe F_By (the hull alone allows far more tau0).
     if (dsp) {
       rows.push_back(Row(0, heel, 0, 0, -1));
-      rows.push_back(Row(0, model.foot().toe, 0, 0, 1));
+      rows.push_back(Row(0, zmp_foot->toe, 0, 0, 1));
     }
   }
   rows_.resize(static_cast<Eigen::Index>(rows.size()), 5);

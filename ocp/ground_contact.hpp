@@ -7,11 +7,15 @@
 ///   M + heel Fy, hi Fy - M                                (ZMP in [-heel, hi], if enabled)
 ///   heel F_By - tau0, toe F_By + tau0                     (foot B's own CoP -tau0 / F_By in
 ///                                                          [-heel, toe], DSP with the ZMP)
-/// with F_B = m (a_com + g e_y) - F_E from total linear momentum (ground.hpp), F_E = lambda,
+/// where heel and toe are those of the foot the ZMP is kept on (the robot's less any margin,
+/// ocp_config.hpp marginFoot),
+/// and F_B = m (a_com + g e_y) - F_E from total linear momentum (ground.hpp), F_E = lambda,
 /// M = x_zmp Fy = step_length F_Ey - tau0 (moment of the ground wrench about B, ground moment
 /// -tau0), Fy = F_By + F_Ey, hi = toe (SSP) or step_length + toe (DSP).
 /// Every row is linear in s = (F_B, F_E, tau0); F_B is the only nonlinear part, so the
 /// derivatives are those of a_com (point_acceleration_derivatives.hpp), exact and cheap.
+#include <optional>
+
 #include "dynamics/model.hpp"
 #include "ocp/point_function.hpp"
 #include "ocp/point_layout.hpp"
@@ -21,9 +25,10 @@ namespace gaitopt::ocp {
 class GroundContact : public PointFunction {
  public:
   /// `point`: the point's layout; with a contact force (double support) both tips carry cones.
+  /// `zmp_foot`: the foot the ZMP and CoP rows keep them on; none: no ZMP rows.
   /// `mu`: the friction coefficient the cones use (the robot's, less any margin).
-  GroundContact(const dynamics::Model& model, const PointLayout& point, bool zmp,
-                double step_length, double mu);
+  GroundContact(const dynamics::Model& model, const PointLayout& point,
+                const std::optional<dynamics::Foot>& zmp_foot, double step_length, double mu);
   int rows() const override { return static_cast<int>(rows_.rows()); }
   void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override;
   void jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const override;

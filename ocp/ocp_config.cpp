@@ -66,11 +66,13 @@ ClearanceProfile readClearance(const YamlReader& r) {
 void readConstraints(const YamlReader& r, OcpConfig& c) {
   r.allowOnly({"torque_limits", "knee_limits", "angle_range", "rate_limit", "joint_velocity_limits",
                "swing_descends", "trailing_lifts", "ground_contact", "impact_friction", "zmp",
-               "clearance", "friction_margin"});
+               "clearance", "friction_margin", "zmp_margin"});
   c.ground_contact = r.booleanOr("ground_contact", true);
   c.impact_friction = r.booleanOr("impact_friction", true);
   c.zmp = r.booleanOr("zmp", true);
   c.friction_margin = r.numberOr("friction_margin", 0.0, config::inRange(0, 1, "(of mu)"));
+  c.zmp_margin = r.numberOr("zmp_margin", 0.0, config::inRange(0, 1, "[m]"));
+  if (c.zmp_margin > 0 && !c.zmp) r.fail("zmp_margin", "a ZMP margin needs zmp: true");
   if (r.has("clearance")) c.clearance = readClearance(r.map("clearance"));
   c.torque_limits = r.booleanOr("torque_limits", true);
   c.knee_limits = r.booleanOr("knee_limits", true);
@@ -79,6 +81,16 @@ void readConstraints(const YamlReader& r, OcpConfig& c) {
   c.joint_velocity_limits = r.booleanOr("joint_velocity_limits", false);
   c.swing_descends = r.booleanOr("swing_descends", true);
   c.trailing_lifts = r.booleanOr("trailing_lifts", true);
+}
+
+/// The margin must leave a foot: under half its length (heel + toe), read from the robot file.
+void checkZmpMargin(const YamlReader& r, const OcpConfig& c) {
+  const dynamics::Foot foot = dynamics::loadRobot(c.robot_path).foot();
+  const double half = (foot.heel + foot.toe) / 2;
+  if (!(c.zmp_margin < half))
+    r.fail("zmp_margin", fmt::format("expected less than half the robot's foot, (heel {} + toe {}) "
+                                     "/ 2 = {} m, got {} m",
+                                     foot.heel, foot.toe, half, c.zmp_margin));
 }
 
 /// A [min, max] pair under `key`, each value checked; min > max is an error naming the key.
@@ -189,7 +201,10 @@ OcpConfig loadOcpConfig(const std::string& path) {
                               "lifts off)");
   c.cost = readCost(root.map("cost"));
   if (root.has("mesh_refinement")) c.refinement = readRefinement(root.map("mesh_refinement"));
-  if (root.has("constraints")) readConstraints(root.map("constraints"), c);
+  if (root.has("constraints")) {
+    readConstraints(root.map("constraints"), c);
+    if (c.zmp_margin > 0) checkZmpMargin(root.map("constraints"), c);
+  }
   if (root.has("touchdown")) {
     c.touchdown = readTouchdown(root.map("touchdown"));
     if (c.impact == ImpactModel::kImpactless)
@@ -206,6 +221,14 @@ double frictionBound(const dynamics::Model& model, const OcpConfig& config) {
   if (!(mu > 0))
     throw std::invalid_argument("friction_margin must be below the robot's friction coefficient");
   return mu;
+}
+
+dynamics::Foot marginFoot(const dynamics::Model& model, const OcpConfig& config) {
+  const dynamics::Foot foot{model.foot().heel - config.zmp_margin,
+                            model.foot().toe - config.zmp_margin};
+  if (!(foot.heel + foot.toe > 0))
+    throw std::invalid_argument("zmp_margin must be below half the robot's foot");
+  return foot;
 }
 
 dynamics::Model problemModel(const OcpConfig& config) {

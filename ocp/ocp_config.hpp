@@ -98,6 +98,9 @@ struct OcpConfig {
   /// Friction cones narrowed to |F_t| <= (mu - friction_margin) F_n, forces and impulses, so a
   /// tracking error does not make the optimum slip (dimensionless, < the robot's mu).
   double friction_margin = 0;
+  /// With zmp: the ZMP (and in the DSP foot B's own CoP) kept this far inside [-heel, toe], so a
+  /// tracking error does not rotate the foot about its edge [m], < half the foot.
+  double zmp_margin = 0;
   SolverOptions solver;
 };
 
@@ -112,6 +115,10 @@ dynamics::Model problemModel(const OcpConfig& config);
 /// The friction coefficient of the optimiser's cones: the robot's, less the configured margin.
 /// @throws std::invalid_argument when the margin leaves no cone.
 double frictionBound(const dynamics::Model& model, const OcpConfig& config);
+
+/// The foot the optimiser keeps the ZMP and CoP on: the robot's, shortened by zmp_margin at the
+/// heel and at the toe. @throws std::invalid_argument when the margin leaves no foot.
+dynamics::Foot marginFoot(const dynamics::Model& model, const OcpConfig& config);
 
 /// A step the two legs cannot span, even stretched, is bad input, not a question for Ipopt
 /// (which would spend its iteration limit on it). @throws std::domain_error naming `path` and

@@ -5,13 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 
 #include <fmt/format.h>
-#include <unistd.h>
 
-#include "config/config_error.hpp"
 #include "dynamics/energy.hpp"
 #include "dynamics/floating_base.hpp"
 #include "dynamics/impact.hpp"
@@ -19,6 +15,7 @@
 #include "gaits/metrics.hpp"
 #include "ocp/gait_problem.hpp"
 #include "ocp/resimulation.hpp"
+#include "support/edited_config.hpp"
 #include "support/solved_config.hpp"
 
 namespace gaitopt::ocp {
@@ -30,28 +27,7 @@ const std::string kConfig =
 /// The message of loading the shipped strike config with `from` replaced by `to` ("" when it
 /// loads).
 std::string loadEdited(const std::string& from, const std::string& to) {
-  const auto path =
-      std::filesystem::temp_directory_path() / fmt::format("gaitopt_strike_{}.yaml", ::getpid());
-  {
-    std::ifstream in(kConfig);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    for (const std::string key : {"robot: ", "initial_guess: "}) {  // relative to the config
-      const auto at = text.find(key);
-      text.insert(at + key.size(), std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/");
-    }
-    const auto at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    text.replace(at, from.size(), to);
-    std::ofstream(path) << text;
-  }
-  std::string message;
-  try {
-    loadOcpConfig(path.string());
-  } catch (const config::ConfigError& e) {
-    message = e.what();
-  }
-  std::filesystem::remove(path);
-  return message;
+  return test::loadEditedOcpConfig(kConfig, from, to);
 }
 
 TEST(DesignedStrikeConfig, ReadsTheRangesInSiUnits) {
@@ -68,7 +44,7 @@ TEST(DesignedStrikeConfig, ReadsTheRangesInSiUnits) {
 TEST(DesignedStrikeConfig, BadRangesAndUnknownKeysAreErrorsNamingFileAndKey) {
   const std::string nv = "normal_velocity: [0.05, 0.3]";
   const std::string reversed = loadEdited(nv, "normal_velocity: [0.3, 0.05]");
-  EXPECT_NE(reversed.find("gaitopt_strike_"), std::string::npos) << reversed;
+  EXPECT_NE(reversed.find("gaitopt_edited_"), std::string::npos) << reversed;
   EXPECT_NE(reversed.find("key 'touchdown.normal_velocity': expected min <= max, got [0.3, "
                           "0.05]"),
             std::string::npos)

@@ -1,6 +1,7 @@
 // One contract over every constraint set and cost term of the shipped gait problems
 // (configs/ocp/*.yaml, on a coarse mesh: the sets are the same code whatever the segments, and
-// the five-link walk with an impactless touchdown, which no shipped config uses):
+// the five-link walk with an impactless touchdown and with a ZMP margin, which no shipped config
+// uses):
 // outputs fully written, derivatives against the set's own central differences, the same
 // sparsity at three random points (tests/support/set_contract.hpp). Each set is its own test,
 // named config_set, so a failure names the set. A last test shows that the contract catches one
@@ -55,6 +56,10 @@ const std::map<std::string, std::unique_ptr<Shipped>>& shippedProblems() {
     OcpConfig impactless = loadOcpConfig((dir / "mu2004_walk.yaml").string());
     impactless.impact = ImpactModel::kImpactless;
     all.emplace("mu2004_walk_impactless", coarseProblem(impactless));
+    // The ZMP and foot-B CoP rows on a foot shortened by constraints.zmp_margin.
+    OcpConfig zmp_margin = loadOcpConfig((dir / "mu2004_walk.yaml").string());
+    zmp_margin.zmp_margin = 0.03;
+    all.emplace("mu2004_walk_zmp_margin", coarseProblem(zmp_margin));
     return all;
   }();
   return problems;

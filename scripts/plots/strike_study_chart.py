@@ -1,0 +1,199 @@
+#!/usr/bin/python3
+"""Cost against robustness of the strike study (scripts/strike_study.sh, issue 15 item 4).
+
+Usage: strike_study_chart.py RUNS_DIR OUT_DIR
+RUNS_DIR holds one gait folder per variant, named v<V>_f<FRICTION_MARGIN>_z<ZMP_MARGIN>
+(summary.json of `gaitopt optimize`; none after a failed solve), and one
+`gaitopt stability` folder per variant and controller, NAME_<controller>/summary.json with the
+push and mass_error sweeps. Writes, printing their paths:
+  OUT_DIR/strike_study.csv  one row per variant and controller: strike velocity, margins, cost,
+                            the optimum's ZMP margin and friction ratio, the walking intervals
+                            (empty when the walk fails at nominal) and the failures beside them
+                            (at nominal: read from the stability folder's sweep_<name>.csv)
+  OUT_DIR/strike_study.md   one row per variant: cost, then push and mass intervals per controller
+  OUT_DIR/strike_study.png  cost against the widest push interval (left) and the widest mass
+                            interval (right) over the controllers, one point per variant: colour
+                            the strike velocity, marker the margins
+A missing or malformed summary ends the script with "error: <file>: ..." and exit code 1.
+"""
+import csv
+import os
+import re
+import sys
+
+import plot_io
+import plot_style as style
+from plot_io import InputError
+
+NAME = re.compile(r"^v([0-9.]+)_f([0-9.]+)_z([0-9.]+)$")
+CONTROLLERS = ["computed_torque", "sliding_mode", "mu_sliding_mode"]
+# Sweep name in summary.json: (column prefix, scale to the table's unit, unit).
+SWEEPS = {"push": ("push", 1.0, "N s"), "mass_error": ("mass", 100.0, "%")}
+MARKERS = ["o", "s", "D", "^", "v", "P", "*", "h"]
+FIELDS = ["variant", "strike_velocity", "friction_margin", "zmp_margin", "status", "cost",
+          "min_zmp_margin", "max_friction_ratio", "controller", "push_from", "push_to",
+          "mass_from", "mass_to", "push_fails", "mass_fails"]
+
+
+def nominal_failure(path, sweep, nominal):
+    """The failure of the walk at the sweep's nominal value, from sweep_<sweep>.csv beside
+    summary.json."""
+    csv_path = os.path.join(os.path.dirname(path), f"sweep_{sweep}.csv")
+    header, rows = plot_io.read_rows(csv_path, "sweep")
+    plot_io.require_columns(csv_path, header, ["value", "failure"])
+    at = {float(r[header.index("value")]): r[header.index("failure")] for r in rows}
+    if nominal not in at:
+        raise InputError(f"{csv_path}: no row at the nominal value {nominal:g}")
+    return at[nominal]
+
+
+def sweep_cells(path, s, sweep):
+    """(from, to, failures) of one sweep, from and to None without a walking interval."""
+    plot_io.require_keys(path, s, ["sweeps"])
+    if sweep not in s["sweeps"]:
+        raise InputError(f"{path}: missing sweep '{sweep}'")
+    w = s["sweeps"][sweep]
+    unit = SWEEPS[sweep][1]
+    fails = [f"{w[k]['value'] * unit:g}: {w[k]['failure']}"
+             for k in ("fails_below", "fails_above") if k in w]
+    if w.get("walks_from") is None:
+        plot_io.require_numbers(path, w, ["nominal"], prefix=f"sweeps.{sweep}.")
+        fails = [f"at nominal: {nominal_failure(path, sweep, w['nominal'])}"]
+    scale = lambda x: None if x is None else x * unit
+    return scale(w.get("walks_from")), scale(w.get("walks_to")), "; ".join(fails)
+
+
+def variant_rows(work, name, match):
+    """The CSV rows of one variant: one per controller swept, one without controller when the
+    solve failed."""
+    row = {"variant": name, "strike_velocity": float(match[1]),
+           "friction_margin": float(match[2]), "zmp_margin": float(match[3])}
+    gait = os.path.join(work, name, "summary.json")
+    if not os.path.exists(gait):
+        return [dict(row, status="solve failed")]
+    g = plot_io.read_json(gait)
+    plot_io.require_numbers(gait, g, ["cost", "min_zmp_margin"])
+    # null: some normal force reached 0 between the nodes (the ratio is unbounded)
+    plot_io.require_numbers(gait, g, ["max_friction_ratio"], nullable=True)
+    row.update(status=g.get("status", ""), cost=g["cost"], min_zmp_margin=g["min_zmp_margin"],
+               max_friction_ratio=g["max_friction_ratio"])
+    rows = []
+    for c in CONTROLLERS:
+        path = os.path.join(work, f"{name}_{c}", "summary.json")
+        if not os.path.exists(path):
+            continue
+        s = plot_io.read_json(path)
+        push = sweep_cells(path, s, "push")
+        mass = sweep_cells(path, s, "mass_error")
+        rows.append(dict(row, controller=c, push_from=push[0], push_to=push[1], mass_from=mass[0],
+                         mass_to=mass[1], push_fails=push[2], mass_fails=mass[2]))
+    return rows
+
+
+def read_study(work):
+    """Every variant's rows, by strike velocity, friction margin, ZMP margin."""
+    names = sorted((m for m in (NAME.match(os.path.splitext(f)[0]) for f in os.listdir(work)
+                                if f.endswith(".yaml")) if m),
+                   key=lambda m: tuple(float(m[i]) for i in (1, 2, 3)))
+    if not names:
+        raise InputError(f"{work}: no variant configs v<V>_f<F>_z<Z>.yaml")
+    return [r for m in names for r in variant_rows(work, m[0], m)]
+
+
+def width(r, column):
+    """Length of a walking interval, 0 when the walk fails at nominal."""
+    lo, hi = r.get(f"{column}_from"), r.get(f"{column}_to")
+    return 0.0 if lo is None else hi - lo
+
+
+def interval(r, column):
+    """'from .. to' of a walking interval, 'fails' when the walk fails at nominal."""
+    lo, hi = r.get(f"{column}_from"), r.get(f"{column}_to")
+    return "fails" if lo is None else f"{lo:g} .. {hi:g}"
+
+
+def write_csv(rows, path):
+    with open(path, "w", newline="", encoding="utf-8") as f:
+        w = csv.DictWriter(f, FIELDS)
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: ("" if r.get(k) is None else r[k]) for k in FIELDS})
+
+
+def by_variant(rows):
+    variants = {}
+    for r in rows:
+        variants.setdefault(r["variant"], []).append(r)
+    return variants
+
+
+def write_markdown(rows, path):
+    controllers = [c for c in CONTROLLERS if any(r.get("controller") == c for r in rows)]
+    head = ["strike v [m/s]", "friction margin", "ZMP margin [m]", "cost"]
+    for c in controllers:
+        head += [f"push [N s], {c}", f"mass [%], {c}"]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for rs in by_variant(rows).values():
+        r = rs[0]
+        cells = [f"{r['strike_velocity']:g}", f"{r['friction_margin']:g}",
+                 f"{r['zmp_margin']:g}", "solve failed" if "cost" not in r else f"{r['cost']:.2f}"]
+        swept = {x["controller"]: x for x in rs if "controller" in x}
+        for c in controllers:
+            x = swept.get(c)
+            cells += [interval(x, "push"), interval(x, "mass")] if x else ["", ""]
+        lines.append("| " + " | ".join(cells) + " |")
+    with open(path, "w", encoding="utf-8") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def chart(rows, path):
+    """Cost against the widest interval over the controllers, one point per variant."""
+    plt = style.pyplot()
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.6), sharey=True)
+    solved = [rs for rs in by_variant(rows).values() if "cost" in rs[0]]
+    velocities = sorted({rs[0]["strike_velocity"] for rs in solved})
+    margins = sorted({(rs[0]["friction_margin"], rs[0]["zmp_margin"]) for rs in solved})
+    cmap = plt.cm.viridis
+    for ax, (sweep, (column, _, unit)) in zip(axes, SWEEPS.items()):
+        for rs in solved:
+            r = rs[0]
+            k = margins.index((r["friction_margin"], r["zmp_margin"]))
+            colour = cmap(velocities.index(r["strike_velocity"]) / max(len(velocities) - 1, 1))
+            ax.scatter(max([width(x, column) for x in rs if "controller" in x], default=0),
+                       r["cost"], color=colour,
+                       marker=MARKERS[k % len(MARKERS)], s=46, edgecolor="0.2", lw=0.5)
+        ax.set_yscale("log")
+        ax.set_yticks([100, 200, 500, 1000, 2000], ["100", "200", "500", "1000", "2000"])
+        style.finish(ax, f"widest walking {sweep} interval over the controllers [{unit}]",
+                     "cost of the optimum [N² m² s]", legend=False)
+    for v in velocities:
+        axes[0].scatter([], [], color=cmap(velocities.index(v) / max(len(velocities) - 1, 1)),
+                        marker="o", label=f"strike {v:g} m/s")
+    for k, (fm, zm) in enumerate(margins):
+        axes[1].scatter([], [], color="0.6", marker=MARKERS[k % len(MARKERS)],
+                        label=f"friction margin {fm:g}, ZMP margin {zm:g} m")
+    axes[0].legend(loc="center right")  # the walking points sit at the top right
+    axes[1].legend(loc="center right")
+    fig.suptitle("Cost against robustness: five-link optimum (mu2004_walk), 20 steps per point")
+    fig.tight_layout()
+    style.save(fig, path)
+
+
+def main(args):
+    work, out = args
+    rows = read_study(work)
+    os.makedirs(out, exist_ok=True)
+    paths = [os.path.join(out, f"strike_study.{ext}") for ext in ("csv", "md", "png")]
+    write_csv(rows, paths[0])
+    write_markdown(rows, paths[1])
+    chart(rows, paths[2])
+    print("\n".join(paths))
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    try:
+        main(sys.argv[1:])
+    except InputError as e:
+        sys.exit(f"error: {e}")
