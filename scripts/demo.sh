@@ -41,8 +41,8 @@ echo "== gaitopt poly: Mu (2004) ch. 3 polynomial gait of the five-link robot"
 echo "== gaitopt optimize: the default five-link problem from the polynomial gait"
 "$bin" optimize --config configs/ocp/mu2004_walk.yaml --out results/opt_mu2004 --quiet
 echo "== gaitopt simulate: 20 steps of the optimal gait under computed torque"
-# --cop-limit fail: a CoP beyond the 5 cm heel is a foot rotation (scripts/closed_loop_demo.sh
-# says why the default, a saturated ankle, does not walk this export).
+# --cop-limit fail: a CoP beyond the 5 cm heel is a foot rotation, the strict rule of the
+# curated walks (scripts/closed_loop_demo.sh).
 "$bin" simulate --reference results/opt_mu2004 --controller computed_torque --steps 20 --rate 50 \
   --cop-limit fail \
   --out results/walk_opt_mu2004_computed_torque --quiet
@@ -55,6 +55,13 @@ done
 if [[ "$full" == --full ]]; then
   echo "== gaitopt optimize: the RABBIT benchmark of Kelly (2017)"
   "$bin" optimize --config configs/ocp/rabbit_kelly2017.yaml --out results/opt_rabbit --quiet
+
+  echo "== gaitopt optimize: the default problem again, exported at 200 Hz (a sample to commit)"
+  "$bin" optimize --config configs/ocp/mu2004_walk.yaml --rate 200 --no-plots --quiet \
+    --out results/sample_opt_mu2004_200hz
+  echo "== gaitopt optimize: the passive compass gait (no torque: a check of the transcription)"
+  "$bin" optimize --config configs/ocp/compass_gait_passive.yaml --out results/opt_compass_passive \
+    --quiet
 
   echo "== gaitopt optimize: least cost of transport, free single/double support split"
   "$bin" optimize --config configs/ocp/mu2004_walk_cot.yaml --out results/opt_cot_mu2004 --quiet
