@@ -112,10 +112,10 @@ void printRegion(const std::string& name, const nlohmann::ordered_json& j) {
   if (!r.is_null())
     fmt::print(
         "  largest walking rectangle around the nominal point: {} {:.4g} .. {:.4g} x {} "
-        "{:.4g} .. {:.4g} ({} points)\n",
+        "{:.4g} .. {:.4g} ({} point{})\n",
         j["a"]["name"].get<std::string>(), r["a_from"].get<double>(), r["a_to"].get<double>(),
         j["b"]["name"].get<std::string>(), r["b_from"].get<double>(), r["b_to"].get<double>(),
-        r["points"].get<int>());
+        r["points"].get<int>(), r["points"].get<int>() == 1 ? "" : "s");
 }
 
 }  // namespace
@@ -213,9 +213,9 @@ void registerStabilityCommand(CLI::App& app) {
       ->option_text("DIR");
   cmd->add_option("--jobs", options->jobs, "Worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
-  cmd->add_flag(
-      "--poincare", options->poincare,
-      "Also the Poincare multipliers of every point (rigid ground; ~2 n + 16 steps more)");
+  cmd->add_flag("--poincare", options->poincare,
+                "Also the Poincare multipliers of every point (rigid ground; about 4 n + 18 steps "
+                "more for n links, more with a controller memory)");
   cmd->add_flag("--quiet", options->quiet, "No progress bar");
   cmd->add_flag("!--no-plots", options->plots, "Skip the picture");
   cmd->footer(

@@ -49,6 +49,10 @@ echo "== gaitopt stability --map: push x mass error, 25 x 17 walks of 20 steps (
 map=(--map push=-3:3:25,mass_error=-0.2:0.2:17 --steps 20 "${rules[@]}" --quiet)
 "$bin" stability --reference results/opt_mu2004 --controller computed_torque "${map[@]}" \
   --out results/map_opt_mu2004_computed_torque
+# Ten times finer around the nominal point, where the coarse map finds the optimum's one walk.
+"$bin" stability --reference results/opt_mu2004 --controller computed_torque --steps 20 \
+  "${rules[@]}" --quiet --map push=-0.5:0.5:21,mass_error=-0.025:0.025:21 \
+  --out results/map_fine_opt_mu2004_computed_torque
 # The polynomial gait's ZMP leaves the shipped 5 cm heel: mapped on the long-heel test robot.
 "$bin" stability --robot tests/apps/mu2004_five_link_long_heel.yaml --reference results/poly_mu2004 \
   --controller mu_sliding_mode "${map[@]}" --out results/map_poly_mu2004_mu_sliding_mode

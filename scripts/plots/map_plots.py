@@ -92,7 +92,8 @@ def mark_nominal_and_rectangle(ax, m):
         ax.add_patch(matplotlib.patches.Rectangle(
             (r["b_from"] - hb, r["a_from"] - ha), r["b_to"] - r["b_from"] + 2 * hb,
             r["a_to"] - r["a_from"] + 2 * ha, fill=False, ec=style.OK, lw=2.5, zorder=3,
-            label=f"walking rectangle around nominal ({r['points']} points)"))
+            label=f"walking rectangle around nominal ({r['points']} point"
+                  f"{'' if r['points'] == 1 else 's'})"))
 
 
 def draw_steps(ax, fig, m):
