@@ -6,6 +6,11 @@
 namespace gaitopt::sim {
 namespace {
 
+/// A grid value as its row key reads it: 0.05, not the 0.050000000000000044 of -0.5 + 11 / 20.
+double keyed(double v) {
+  return std::stod(SweepFile::key(v));
+}
+
 bool walksAll(const SweepRow& r) {
   return !r.fell && r.steps_completed == r.steps_requested;
 }
@@ -24,8 +29,8 @@ nlohmann::ordered_json axisJson(const MapParameter& axis) {
           {"unit", axis.parameter->unit},
           {"meaning", axis.parameter->meaning},
           {"values", axis.values.size()},
-          {"from", axis.values.front()},
-          {"to", axis.values.back()},
+          {"from", keyed(axis.values.front())},
+          {"to", keyed(axis.values.back())},
           {"nominal", axis.nominal}};
 }
 
@@ -33,7 +38,7 @@ nlohmann::ordered_json rectangleJson(const GridRectangle& r, const MapParameter&
                                      const MapParameter& b) {
   if (r.points() == 0) return nullptr;
   const auto at = [](const MapParameter& axis, int i) {
-    return axis.values[static_cast<std::size_t>(i)];
+    return keyed(axis.values[static_cast<std::size_t>(i)]);
   };
   return {{"a_from", at(a, r.a_first)},
           {"a_to", at(a, r.a_last)},
@@ -91,11 +96,12 @@ nlohmann::ordered_json walkingRegion(const MapParameter& a, const MapParameter& 
       walks.back().push_back(w);
       walked += w ? 1 : 0;
       if (it != rows.end())
-        line[SweepFile::key(vb)] = {vb, it->second.steps_completed, it->second.steps_requested,
-                                    it->second.fell, it->second.failure};
+        line[SweepFile::key(vb)] = {keyed(vb), it->second.steps_completed,
+                                    it->second.steps_requested, it->second.fell,
+                                    it->second.failure};
     }
     const nlohmann::ordered_json interval = walkingInterval(*b.parameter, line, b.nominal);
-    per_row.push_back({{a.parameter->name, va},
+    per_row.push_back({{a.parameter->name, keyed(va)},
                        {"walks_from", interval["walks_from"]},
                        {"walks_to", interval["walks_to"]}});
   }
