@@ -57,6 +57,15 @@ map=(--map push=-3:3:25,mass_error=-0.2:0.2:17 --steps 20 "${rules[@]}" --quiet)
 "$bin" stability --robot tests/apps/mu2004_five_link_long_heel.yaml --reference results/poly_mu2004 \
   --controller mu_sliding_mode "${map[@]}" --out results/map_poly_mu2004_mu_sliding_mode
 
+# RABBIT under HZD (its 1 kHz gait is made by scripts/hzd_rabbit.sh): the same map, and a wide
+# one by 1 N s and 10 % to find where it stops.
+if [[ -f results/opt_rabbit/trajectory.csv ]]; then
+  "$bin" stability --reference results/opt_rabbit --controller hzd "${map[@]}" \
+    --out results/map_rabbit_hzd
+  "$bin" stability --reference results/opt_rabbit --controller hzd --steps 20 --quiet \
+    --map push=-12:12:25,mass_error=-0.5:1:16 --out results/map_wide_rabbit_hzd
+fi
+
 echo "== Mu's uncertainty cases 1-3 on the controller's model (results/closed_loop_mu2004/mu_cases.md)"
 bash scripts/mu_cases.sh "$build" results/closed_loop_mu2004
 
