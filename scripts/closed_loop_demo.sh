@@ -46,12 +46,12 @@ done
   --sweep stiffness=1e4:1e9:11 --sweep push=-3:12:16 --out results/stability_opt_mu2004_impedance
 
 echo "== gaitopt stability --map: push x mass error, 25 x 17 walks of 20 steps (results/map_*)"
-map=(--map push=-3:3:25,mass_error=-0.2:0.2:17 --steps 20 "${rules[@]}" --quiet)
+map=(--map "push=-3:3:25,mass_error=-0.2:0.2:17" --steps 20 "${rules[@]}" --quiet)
 "$bin" stability --reference results/opt_mu2004 --controller computed_torque "${map[@]}" \
   --out results/map_opt_mu2004_computed_torque
 # Ten times finer around the nominal point, where the coarse map finds the optimum's one walk.
 "$bin" stability --reference results/opt_mu2004 --controller computed_torque --steps 20 \
-  "${rules[@]}" --quiet --map push=-0.5:0.5:21,mass_error=-0.025:0.025:21 \
+  "${rules[@]}" --quiet --map "push=-0.5:0.5:21,mass_error=-0.025:0.025:21" \
   --out results/map_fine_opt_mu2004_computed_torque
 # The polynomial gait's ZMP leaves the shipped 5 cm heel: mapped on the long-heel test robot.
 "$bin" stability --robot tests/apps/mu2004_five_link_long_heel.yaml --reference results/poly_mu2004 \
@@ -63,7 +63,7 @@ if [[ -f results/opt_rabbit/trajectory.csv ]]; then
   "$bin" stability --reference results/opt_rabbit --controller hzd "${map[@]}" \
     --out results/map_rabbit_hzd
   "$bin" stability --reference results/opt_rabbit --controller hzd --steps 20 --quiet \
-    --map push=-12:12:25,mass_error=-0.5:1:16 --out results/map_wide_rabbit_hzd
+    --map "push=-12:12:25,mass_error=-0.5:1:16" --out results/map_wide_rabbit_hzd
 fi
 
 echo "== Mu's uncertainty cases 1-3 on the controller's model (results/closed_loop_mu2004/mu_cases.md)"

@@ -20,8 +20,8 @@
 /// which strikes transversally, gives 0.5497 at the step start and 0.5496 at mid stance
 /// (tests/sim/hzd_test.cpp). Measured on the optimal five-link gait under computed torque
 /// (--cop-limit fail), with the difference step h = 1e-4 .. 1e-7: at the step start the largest
-/// multiplier drifts 3.5e-3, 3.3e-3, 3.0e-4, 1.5e-5 (the differences do not converge); at mid single
-/// support it stays 3.8e-3, 3.7e-3, 3.5e-3, 3.9e-3, and the GSN 0.01666 .. 0.01669 at both.
+/// multiplier drifts 3.5e-3, 3.3e-3, 3.0e-4, 1.5e-5 (the differences do not converge); at mid
+/// single support it stays 3.8e-3, 3.7e-3, 3.5e-3, 3.9e-3, and the GSN 0.01666 .. 0.01669 at both.
 ///
 /// Beside A = dP/dx, the same differences give the linearised response to a push (the
 /// stability sweeps' pulse, 0.1 s on the hip from mid single support of the step after the

@@ -122,7 +122,7 @@ def draw_causes(ax, m):
     ax.set_title("outcome: walked, or the failure's cause")
 
 
-def map_figure(s, m, title):
+def map_figure(m, title):
     fig, axes = plt.subplots(1, 2, figsize=(13.2, 5.4))
     draw_steps(axes[0], fig, m)
     draw_causes(axes[1], m)
@@ -140,7 +140,7 @@ def draw_maps(result_dir, s, title):
     for name, entry in s.get("maps", {}).items():
         m = Map(result_dir, name, entry)
         path = os.path.join(result_dir, f"map_{name}.png")
-        style.save(map_figure(s, m, f"{title}: {m.a['name']} x {m.b['name']}"), path)
+        style.save(map_figure(m, f"{title}: {m.a['name']} x {m.b['name']}"), path)
         paths.append(path)
     return paths
 
