@@ -36,8 +36,11 @@ void printOutcome(const sim::ScenarioResult& r, int steps) {
              r.walk.fell ? fmt::format(" then fell ({})", r.walk.failure) : "",
              r.walk.max_tracking_error, r.wall_time_s);
   if (r.poincare && r.poincare->ok)
-    fmt::print("simulate: Poincare map: largest multiplier {:.4g} ({})\n",
-               r.poincare->max_multiplier, r.poincare->max_multiplier < 1 ? "stable" : "unstable");
+    fmt::print(
+        "simulate: Poincare map at step clock {:.3g} s: largest multiplier {:.4g} ({}), gait "
+        "sensitivity norm of a push {:.4g}\n",
+        r.poincare->section_clock, r.poincare->max_multiplier,
+        r.poincare->max_multiplier < 1 ? "stable" : "unstable", r.poincare->gait_sensitivity_norm);
   else if (r.poincare)
     fmt::print("simulate: Poincare map failed: {}\n", r.poincare->failure);
   if (r.hzd_map)

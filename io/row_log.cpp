@@ -59,8 +59,11 @@ std::string readAll(const std::string& path) {
 
 }  // namespace
 
-RowLog::RowLog(std::string path, Row header)
-    : path_(std::move(path)), header_(std::move(header)), out_(path_) {
+RowLog::RowLog(std::string path, Row header, std::size_t key_fields)
+    : path_(std::move(path)), header_(std::move(header)), key_fields_(key_fields), out_(path_) {
+  if (key_fields_ < 1 || key_fields_ > header_.size())
+    throw std::logic_error(
+        fmt::format("{}: {} key fields of {}", path_, key_fields_, header_.size()));
   const std::string header_line = joinRow(header_);
   const std::string text = readAll(path_);
   if (text.empty()) {
@@ -84,7 +87,7 @@ RowLog::RowLog(std::string path, Row header)
                                           header_line));
   while (std::getline(in, line)) {
     Row row = splitRow(line);
-    if (row.size() == header_.size()) rows_[row.front()] = std::move(row);
+    if (row.size() == header_.size()) rows_[keyOf(row)] = std::move(row);
   }
 }
 
@@ -94,7 +97,13 @@ void RowLog::append(const Row& row) {
                                        row.size(), header_.size()));
   const std::lock_guard lock(mutex_);
   out_.append(joinRow(row) + '\n');  // one write(2): on disk at once, resumable
-  rows_[row.front()] = row;
+  rows_[keyOf(row)] = row;
+}
+
+std::string RowLog::keyOf(const Row& row) const {
+  std::string key = row.front();
+  for (std::size_t i = 1; i < key_fields_; ++i) key += ',' + row[i];
+  return key;
 }
 
 }  // namespace gaitopt::io

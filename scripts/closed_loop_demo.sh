@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The closed-loop part of `make demo`: walks the polynomial and the optimal five-link gait under
 # computed torque, the boundary-layer law and Mu's integral sliding mode, sweeps where walking
-# stops (20 steps per point, pushes by 0.25 N s, model errors by 2.5 %), walks Mu's uncertainty
-# cases, and charts the ground models' speed against accuracy, into results/. Sweeps resume:
-# delete a stability folder to recompute it.
+# stops (20 steps per point, pushes by 0.25 N s, model errors by 2.5 %) and maps push against
+# mass error, walks Mu's uncertainty cases, and charts the ground models' speed against accuracy,
+# into results/. Sweeps and maps resume: delete a stability or map folder to recompute it.
 # Usage: scripts/closed_loop_demo.sh BUILD_DIR   (run from the repository root)
 set -euo pipefail
 build=${1:-build}
@@ -48,6 +48,27 @@ for gait in poly opt; do
 done
 "$bin" stability --reference results/opt_mu2004 --ground impedance --steps 20 "${rules[@]}" --quiet \
   --sweep stiffness=1e4:1e9:11 --sweep push=-3:12:16 --out results/stability_opt_mu2004_impedance
+
+echo "== gaitopt stability --map: push x mass error, 25 x 17 walks of 20 steps (results/map_*)"
+map=(--map "push=-3:3:25,mass_error=-0.2:0.2:17" --steps 20 "${rules[@]}" --quiet)
+"$bin" stability --reference results/opt_mu2004 --controller computed_torque "${map[@]}" \
+  --out results/map_opt_mu2004_computed_torque
+# Ten times finer around the nominal point, where the coarse map finds the optimum's one walk.
+"$bin" stability --reference results/opt_mu2004 --controller computed_torque --steps 20 \
+  "${rules[@]}" --quiet --map "push=-0.5:0.5:21,mass_error=-0.025:0.025:21" \
+  --out results/map_fine_opt_mu2004_computed_torque
+# The polynomial gait's ZMP leaves the shipped 5 cm heel: mapped on the long-heel test robot.
+"$bin" stability --robot tests/apps/mu2004_five_link_long_heel.yaml --reference results/poly_mu2004 \
+  --controller mu_sliding_mode "${map[@]}" --out results/map_poly_mu2004_mu_sliding_mode
+
+# RABBIT under HZD (its 1 kHz gait is made by scripts/hzd_rabbit.sh): the same map, and a wide
+# one by 1 N s and 10 % to find where it stops.
+if [[ -f results/opt_rabbit/trajectory.csv ]]; then
+  "$bin" stability --reference results/opt_rabbit --controller hzd "${map[@]}" \
+    --out results/map_rabbit_hzd
+  "$bin" stability --reference results/opt_rabbit --controller hzd --steps 20 --quiet \
+    --map "push=-12:12:25,mass_error=-0.5:1:16" --out results/map_wide_rabbit_hzd
+fi
 
 echo "== Mu's uncertainty cases 1-3 on the controller's model (results/closed_loop_mu2004/mu_cases.md)"
 bash scripts/mu_cases.sh "$build" results/closed_loop_mu2004

@@ -84,6 +84,35 @@ StepResult simulateStep(const dynamics::Model& plant, const Controller& controll
                         const std::optional<Push>& push = {}, const ContactRules& rules = {},
                         double stance_velocity = 0);
 
+/// The closed loop inside single support at step clock `clock`, the stance tip sticking where it
+/// was set down: link angles and rates, and the controller's memory (controller.hpp), which is
+/// not zero there. A Poincare section inside single support (poincare.hpp) takes this state.
+struct SspState {
+  double clock = 0;  ///< [s]
+  VecD theta, dtheta;
+  Eigen::VectorXd memory;  ///< size controller.memorySize(kSsp)
+};
+
+/// The step from `s` on (touchdown, impact, DSP, relabelling), as simulateStep from the
+/// step's start; step index 0 (for `push`). ssp_duration counts from the step's start.
+/// @throws std::invalid_argument when s.clock is before the reference's fadeTime(): the
+///         reference there still depends on where the step started.
+StepResult simulateStepFrom(const dynamics::Model& plant, const Controller& controller,
+                            const Reference& ref, const SspState& s,
+                            const EventIntegratorOptions& options, const ContactRules& rules = {},
+                            const std::optional<Push>& push = {});
+
+/// The single support from the step's start (theta0, dtheta0) up to step clock `clock`.
+struct SspRun {
+  bool ok = false;
+  std::string failure;  ///< a failure, a touchdown before `clock`, or B sliding at `clock`
+  SspState state;
+};
+SspRun simulateSingleSupportTo(const dynamics::Model& plant, const Controller& controller,
+                               const Reference& ref, const VecD& theta0, const VecD& dtheta0,
+                               double clock, const EventIntegratorOptions& options,
+                               const ContactRules& rules = {}, double stance_velocity = 0);
+
 struct WalkResult {
   int steps_completed = 0;
   bool fell = false;

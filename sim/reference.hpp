@@ -25,6 +25,7 @@
 ///    progressed as far as the robot's (dspClockAt): a late touchdown finds the hip ahead of the
 ///    plan's DSP start, and fading a posture 0.03 s behind back onto the plan's start within the
 ///    0.1 s DSP asked for 12 m/s^2 at the hip and saturated the stance ankle and knee.
+#include <algorithm>
 #include <optional>
 #include <vector>
 
@@ -80,6 +81,8 @@ class Reference {
 
   double touchdownTime() const { return ssp_end_; }  ///< SSP duration [s]
   double endTime() const { return end_; }            ///< step duration [s]
+  /// When a single support's start no longer shows in its reference (PhaseStart) [s].
+  double fadeTime() const { return std::min(options_.fade, ssp_end_); }
   bool hasDsp() const { return dsp_.has_value(); }
   double stepLength() const { return ssp_.stepLength(); }
   /// The state the step starts from.

@@ -1,7 +1,9 @@
 // One step of the rigid walk (hybrid_walk.hpp): phases of the free-base chain under stick/slide
 // contact modes (contact_dynamics.hpp), switched at located events, and the frictional impact.
+#include <algorithm>
 #include <cmath>
 #include <functional>
+#include <stdexcept>
 
 #include "dynamics/frictional_impact.hpp"
 #include "dynamics/kinematics.hpp"
@@ -284,24 +286,15 @@ TipContact afterImpact(const dynamics::TipImpact& tip) {
                                             : TipContact::stick();
 }
 
-}  // namespace
-
-StepResult simulateStep(const dynamics::Model& plant, const Controller& controller,
-                        const Reference& ref, const VecD& theta0, const VecD& dtheta0,
-                        const EventIntegratorOptions& o, const WalkLog& log, double t0,
-                        int step_index, double stance_x, const std::optional<Push>& push,
-                        const ContactRules& rules, double stance_velocity) {
-  StepResult r;
-  const StepContext c{plant, controller, ref, o, rules, push, step_index};
-  StepRecorder rec{r, log, step_index, stance_x};
-  const ContactSet start{stance_velocity != 0 ? TipContact::slide(stance_velocity > 0 ? 1.0 : -1.0)
-                                              : TipContact::stick(),
-                         TipContact::free()};
-  PhaseEnd phase =
-      runPhase(c, rec, Phase::kSsp, ref.startFrom(Phase::kSsp, 0, theta0, dtheta0), start, 0,
-               contactState(theta0, dtheta0, 0, Vec2d(stance_velocity, 0),
-                            controller.memorySize(Phase::kSsp)),
-               singleSupportEnds(c), t0);
+/// The rest of a step from single support at step clock t, state x (start: the reference's fade
+/// of this step's start): touchdown, the impact, the DSP and relabelling.
+StepResult finishStep(const StepContext& c, StepRecorder& rec, const PhaseStart& start,
+                      const ContactSet& contacts, double t, const Eigen::VectorXd& x, double t0) {
+  StepResult& r = rec.result;
+  std::vector<double> ends = singleSupportEnds(c);
+  ends.erase(std::remove_if(ends.begin(), ends.end() - 1, [t](double end) { return end <= t; }),
+             ends.end() - 1);
+  PhaseEnd phase = runPhase(c, rec, Phase::kSsp, start, contacts, t, x, ends, t0);
   r.ssp_duration = phase.t;
   if (phase.failure.empty() && phase.event.empty())
     phase.failure = "no touchdown within 3 times the planned single support";
@@ -315,19 +308,19 @@ StepResult simulateStep(const dynamics::Model& plant, const Controller& controll
     phase.failure = impact.failure;
     const auto& m = impact.map;
     phase.x = contactState(theta, m.dtheta_plus, phase.x(0), m.base_velocity,
-                           controller.memorySize(Phase::kDsp));
+                           c.controller.memorySize(Phase::kDsp));
     e_velocity = m.leading.slides ? m.leading.velocity(0) : 0.0;
     rec.e_anchor = swingTipOf(c, phase.x)(0);
-    if (phase.failure.empty() && r.impact == "double" && ref.hasDsp()) {
+    if (phase.failure.empty() && r.impact == "double" && c.ref.hasDsp()) {
       rec.e_on_ground = true;
-      const double begin = ref.dspClockAt(theta);
-      const PhaseStart dsp_start = ref.startFrom(Phase::kDsp, begin, theta, m.dtheta_plus);
+      const double begin = c.ref.dspClockAt(theta);
+      const PhaseStart dsp_start = c.ref.startFrom(Phase::kDsp, begin, theta, m.dtheta_plus);
       const ContactSet both{afterImpact(m.trailing), afterImpact(m.leading)};
-      phase = runPhase(c, rec, Phase::kDsp, dsp_start, both, begin, phase.x, {ref.endTime()},
+      phase = runPhase(c, rec, Phase::kDsp, dsp_start, both, begin, phase.x, {c.ref.endTime()},
                        t0 + r.ssp_duration - begin);
       r.dsp_duration = phase.t - begin;
       const State end =
-          ContactLoop(plant, controller, ref, Phase::kDsp, dsp_start, phase.contacts, rules)
+          ContactLoop(c.plant, c.controller, c.ref, Phase::kDsp, dsp_start, phase.contacts, c.rules)
               .at(phase.t, phase.x);
       e_velocity = phase.contacts.e.mode == TipContact::Mode::kSlide
                        ? tangentialVelocity(c, end, true)
@@ -341,9 +334,75 @@ StepResult simulateStep(const dynamics::Model& plant, const Controller& controll
   if (!r.ok) return r;
   r.advance = swingTipOf(c, phase.x)(0);  // lift-off: E becomes the stance
   r.stance_velocity = e_velocity;
-  r.theta = dynamics::relabelAngles<double>(plant, r.theta);
+  r.theta = dynamics::relabelAngles<double>(c.plant, r.theta);
   r.dtheta = dynamics::relabelRates<double>(r.dtheta);
   return r;
+}
+
+ContactSet stepStartContacts(double stance_velocity) {
+  return {stance_velocity != 0 ? TipContact::slide(stance_velocity > 0 ? 1.0 : -1.0)
+                               : TipContact::stick(),
+          TipContact::free()};
+}
+
+}  // namespace
+
+StepResult simulateStep(const dynamics::Model& plant, const Controller& controller,
+                        const Reference& ref, const VecD& theta0, const VecD& dtheta0,
+                        const EventIntegratorOptions& o, const WalkLog& log, double t0,
+                        int step_index, double stance_x, const std::optional<Push>& push,
+                        const ContactRules& rules, double stance_velocity) {
+  StepResult r;
+  const StepContext c{plant, controller, ref, o, rules, push, step_index};
+  StepRecorder rec{r, log, step_index, stance_x};
+  return finishStep(c, rec, ref.startFrom(Phase::kSsp, 0, theta0, dtheta0),
+                    stepStartContacts(stance_velocity), 0,
+                    contactState(theta0, dtheta0, 0, Vec2d(stance_velocity, 0),
+                                 controller.memorySize(Phase::kSsp)),
+                    t0);
+}
+
+StepResult simulateStepFrom(const dynamics::Model& plant, const Controller& controller,
+                            const Reference& ref, const SspState& s,
+                            const EventIntegratorOptions& o, const ContactRules& rules,
+                            const std::optional<Push>& push) {
+  if (s.clock < ref.fadeTime())
+    throw std::invalid_argument(
+        "a step taken up in single support must start past the fade of "
+        "the step's start (reference.hpp)");
+  StepResult r;
+  const StepContext c{plant, controller, ref, o, rules, push, 0};
+  StepRecorder rec{r, {}, 0, 0};
+  Eigen::VectorXd x = contactState(s.theta, s.dtheta, 0, Vec2d::Zero(), 0);
+  x.conservativeResize(x.size() + s.memory.size());
+  x.tail(s.memory.size()) = s.memory;
+  // Past the fade the reference no longer depends on the step's start: no offset to carry.
+  return finishStep(c, rec, PhaseStart{s.clock, 0, {}, {}}, stepStartContacts(0), s.clock, x, 0);
+}
+
+SspRun simulateSingleSupportTo(const dynamics::Model& plant, const Controller& controller,
+                               const Reference& ref, const VecD& theta0, const VecD& dtheta0,
+                               double clock, const EventIntegratorOptions& o,
+                               const ContactRules& rules, double stance_velocity) {
+  StepResult r;
+  const std::optional<Push> no_push;
+  const StepContext c{plant, controller, ref, o, rules, no_push, 0};
+  StepRecorder rec{r, {}, 0, 0};
+  const PhaseEnd end = runPhase(c, rec, Phase::kSsp, ref.startFrom(Phase::kSsp, 0, theta0, dtheta0),
+                                stepStartContacts(stance_velocity), 0,
+                                contactState(theta0, dtheta0, 0, Vec2d(stance_velocity, 0),
+                                             controller.memorySize(Phase::kSsp)),
+                                {clock}, 0);
+  SspRun run;
+  run.failure = !end.failure.empty() ? end.failure
+                : !end.event.empty() ? "touchdown before the section's clock"
+                : end.contacts.b.mode != TipContact::Mode::kStick
+                    ? "the stance tip slides at the section"
+                    : "";
+  run.ok = run.failure.empty();
+  const int n = plant.nLinks();
+  run.state = {end.t, anglesOf(c, end.x), ratesOf(c, end.x), end.x.tail(end.x.size() - 2 * n - 4)};
+  return run;
 }
 
 }  // namespace gaitopt::sim

@@ -6,6 +6,19 @@
 namespace gaitopt::sim {
 namespace {
 
+/// The gait sensitivity norm of a push (poincare.hpp, Hobbelen and Wisse 2007); null values
+/// when the cycle is not stable.
+nlohmann::ordered_json gaitSensitivityJson(const PoincareAnalysis& p) {
+  const auto number = [](double v) {
+    return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json();
+  };
+  return {
+      {"disturbance", "push: horizontal hip impulse [N s], 0.1 s pulse from mid single support"},
+      {"norm", number(p.gait_sensitivity_norm)},
+      {"step_duration_s_per_Ns", number(p.gait_sensitivity_per_indicator(0))},
+      {"step_advance_m_per_Ns", number(p.gait_sensitivity_per_indicator(1))}};
+}
+
 nlohmann::ordered_json poincareJson(const std::optional<PoincareAnalysis>& p) {
   nlohmann::ordered_json j;
   if (!p) {
@@ -24,6 +37,8 @@ nlohmann::ordered_json poincareJson(const std::optional<PoincareAnalysis>& p) {
   j["poincare_max_multiplier"] = p->max_multiplier;
   j["poincare_multipliers"] = multipliers;
   j["poincare_fixed_point_residual"] = p->fixed_point_residual;
+  j["poincare_section_clock_s"] = p->section_clock;
+  j["gait_sensitivity"] = gaitSensitivityJson(*p);
   return j;
 }
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Draws the parameter sweeps of a `gaitopt stability` result folder.
+"""Draws the parameter sweeps and 2-D maps of a `gaitopt stability` result folder.
 
 Usage: stability_plots.py RESULT_DIR
 Reads RESULT_DIR/summary.json (key `sweeps`: per swept parameter its unit, number of values,
@@ -8,7 +8,8 @@ RESULT_DIR/sweep_<parameter>.csv per parameter, and writes RESULT_DIR/stability.
 path:
   one panel per sweep: steps completed against the parameter value (green: walked, red: fell),
   the walking interval shaded, the nominal value marked, and the largest Poincare multiplier on
-  a twin axis where it was computed.
+  a twin axis where it was computed (only when the folder has sweeps);
+and RESULT_DIR/map_<a>_<b>.png per 2-D map (map_plots.py).
 A missing file, column or key, or a malformed value, ends the script with exit code 1.
 """
 import math
@@ -20,6 +21,7 @@ import plot_style as style
 plt = style.pyplot()
 import numpy as np  # noqa: E402
 
+import map_plots  # noqa: E402
 import plot_io  # noqa: E402
 from plot_io import InputError  # noqa: E402
 
@@ -57,10 +59,12 @@ def read_sweep_entry(path, name, entry):
 
 
 def read_summary(path):
-    """summary.json with its `sweeps` object checked, in the file's order."""
+    """summary.json with its `sweeps` object (if any) checked, in the file's order."""
     s = plot_io.read_json(path, "summary")
+    if "sweeps" not in s and "maps" in s:
+        s["sweeps"] = {}
     plot_io.require_type(path, s, "sweeps", dict, "an object with one entry per swept parameter")
-    if not s["sweeps"]:
+    if not s["sweeps"] and not s.get("maps"):
         raise InputError(f"{path}: key 'sweeps': no swept parameter")
     for name, entry in s["sweeps"].items():
         read_sweep_entry(path, name, entry)
@@ -233,10 +237,13 @@ def stability_figure(s, sweeps):
 
 def main(result_dir):
     s, sweeps = read_sweeps(result_dir)
-    fig = stability_figure(s, sweeps)
-    path = os.path.join(result_dir, "stability.png")
-    style.save(fig, path)
-    print(path)
+    if sweeps:
+        path = os.path.join(result_dir, "stability.png")
+        style.save(stability_figure(s, sweeps), path)
+        print(path)
+    title = headline(s).replace("Stability sweeps", "Stability map", 1)
+    for path in map_plots.draw_maps(result_dir, s, title):
+        print(path)
 
 
 if __name__ == "__main__":

@@ -170,6 +170,41 @@ PY
 plot stability_plots.py "$TMP/stab2"
 [[ $RC -eq 0 ]] || fail "(c2) stability_plots.py exited $RC: $(cat "$TMP/err")"
 
+# (c3) a 2-D map alone: map_<a>_<b>.png and no stability.png; the failure cause drops the step;
+# a grid of another size than summary.json's is refused.
+mkdir -p "$TMP/map"
+cat >"$TMP/map/summary.json" <<'JSON'
+{"controller": "computed_torque", "steps_requested": 10, "maps": {"push_friction": {
+ "a": {"name": "push", "unit": "N s", "values": 2, "nominal": 0},
+ "b": {"name": "friction", "unit": "", "values": 3, "nominal": 0.6},
+ "largest_rectangle_around_nominal": {"a_from": 0, "a_to": 0, "b_from": 0.4, "b_to": 0.6,
+                                      "points": 2}}}}
+JSON
+cat >"$TMP/map/map_push_friction.csv" <<'CSV'
+push,friction,steps_completed,steps_requested,fell,failure,max_tracking_error,max_multiplier,mean_advance,wall_time_s
+0,0.2,3,10,1,"step 4: slip: the tip slid 1 cm",0.01,,0.35,0.1
+0,0.4,10,10,0,,0.01,,0.35,0.1
+0,0.6,10,10,0,,0.01,,0.35,0.1
+1,0.2,2,10,1,"step 3: foot rotation: the CoP left [-heel, toe]",0.01,,0.35,0.1
+1,0.4,2,10,1,"step 3: foot rotation: the CoP left [-heel, toe]",0.01,,0.35,0.1
+1,0.6,10,10,0,,0.01,,0.35,0.1
+CSV
+plot stability_plots.py "$TMP/map"
+[[ $RC -eq 0 ]] || fail "(c3) stability_plots.py exited $RC: $(cat "$TMP/err")"
+[[ "$(cat "$TMP/out")" == "$TMP/map/map_push_friction.png" && -s "$TMP/map/map_push_friction.png" &&
+  ! -e "$TMP/map/stability.png" ]] || fail "(c3) output: $(cat "$TMP/out")"
+(cd "$PLOTS" && "$PY" - "$TMP/map" <<'PY') || fail "(c3) map grid"
+import sys, json
+import map_plots as mp
+s = json.load(open(sys.argv[1] + "/summary.json"))
+m = mp.Map(sys.argv[1], "push_friction", s["maps"]["push_friction"])
+assert m.steps.tolist() == [[3, 10, 10], [2, 2, 10]], m.steps
+assert m.outcome.tolist() == [["slip", mp.WALKED, mp.WALKED],
+                              ["foot rotation", "foot rotation", mp.WALKED]], m.outcome
+PY
+edit "$TMP/map/summary.json" "text = text.replace('\"values\": 3', '\"values\": 4')"
+expect_error "(c3) grid size" stability_plots.py "$TMP/map" "$TMP/map/map_push_friction.csv: a 2 x 3 grid, summary.json says 2 x 4"
+
 # (d) broken walk folders.
 make_walk "$TMP/good_walk" 2 0
 W="$TMP/w"

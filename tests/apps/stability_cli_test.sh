@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # End-to-end checks of `gaitopt stability`: a friction sweep finds the slip boundary of the
-# polynomial gait, the rows do not depend on the number of jobs, and an interrupted sweep resumes
-# without redoing finished points.
+# polynomial gait, the rows do not depend on the number of jobs, an interrupted sweep resumes
+# without redoing finished points, a 2-D map is written, summarised and resumed, and bad maps
+# are refused.
 # Usage: stability_cli_test.sh <path to gaitopt binary> <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
@@ -66,4 +67,40 @@ run stability "${ARGS[@]}" --sweep friction=0.1:x:3 --out "$TMP/e"
 [[ $RC -eq 2 ]] && grep -q "not a finite number" "$TMP/err" || fail "(e) range: $(cat "$TMP/err")"
 run stability "${ARGS[@]}" --sweep stiffness=1e5:1e6:2 --out "$TMP/e"
 [[ $RC -eq 2 ]] && grep -q "impedance ground only" "$TMP/err" || fail "(e) stiffness: $(cat "$TMP/err")"
+# (f) a 2-D map: 2 x 3 points in map_push_friction.csv keyed by both values, the walking region
+# in summary.json (friction 0.2 slips, as in (a)); a rerun walks nothing; the picture is drawn.
+run stability "${ARGS[@]}" --map push=-0.5:0.5:2,friction=0.2:0.6:3 --out "$TMP/f"
+[[ $RC -eq 0 ]] || fail "(f) stability exited $RC: $(cat "$TMP/err")"
+[[ $(wc -l <"$TMP/f/map_push_friction.csv") -eq 7 ]] || fail "(f) rows: $(cat "$TMP/f/map_push_friction.csv")"
+head -n 1 "$TMP/f/map_push_friction.csv" | grep -q '^push,friction,steps_completed,' ||
+  fail "(f) header: $(head -n 1 "$TMP/f/map_push_friction.csv")"
+check_json "(f) summary" "$TMP/f/summary.json" <<'PY'
+m = d["maps"]["push_friction"]
+assert m["points"] == 6 and m["a"]["name"] == "push" and m["b"]["nominal"] == 0.6, m
+assert [r["push"] for r in m["per_row"]] == [-0.5, 0.5], m
+for r in m["per_row"]:
+    assert r["walks_to"] in (None, 0.6) and r["walks_from"] != 0.2, r
+assert 0 <= m["points_walked"] <= 4, m
+PY
+grep -q "map push_friction: .* of 6 points walk" "$TMP/out" || fail "(f) stdout: $(cat "$TMP/out")"
+run stability "${ARGS[@]}" --map push=-0.5:0.5:2,friction=0.2:0.6:3 --out "$TMP/f"
+grep -q "0 points to walk (6 done before)" "$TMP/out" || fail "(f) rerun: $(cat "$TMP/out")"
+run stability --robot "$LONG_HEEL" --reference "$TMP/poly" --steps 2 --quiet \
+  --map push=-0.5:0.5:2,friction=0.2:0.6:3 --out "$TMP/f"
+[[ $RC -eq 0 && -s "$TMP/f/map_push_friction.png" ]] || fail "(f) picture: $(cat "$TMP/err")"
+
+# (g) bad maps: one parameter, the same one twice, fewer than 2 values, an unknown name, nothing.
+for bad in "push=-1:1:3" "push=-1:1:3,push=0:1:2" "push=-1:1:1,friction=0.2:0.6:3" \
+  "push,wind=0:1:2"; do
+  run stability "${ARGS[@]}" --map "$bad" --out "$TMP/g"
+  [[ $RC -eq 2 ]] || fail "(g) --map $bad exited $RC"
+done
+run stability "${ARGS[@]}" --map "push=-1:1:3,push=0:1:2" --out "$TMP/g"
+grep -q "the same parameter twice" "$TMP/err" || fail "(g) twice: $(cat "$TMP/err")"
+run stability "${ARGS[@]}" --map "push=-1:1:1,friction=0.2:0.6:3" --out "$TMP/g"
+grep -q "at least 2 values" "$TMP/err" || fail "(g) n < 2: $(cat "$TMP/err")"
+run stability "${ARGS[@]}" --map "push=-1:1:3" --out "$TMP/g"
+grep -q "expected two parameters" "$TMP/err" || fail "(g) one: $(cat "$TMP/err")"
+run stability "${ARGS[@]}" --out "$TMP/g"
+[[ $RC -eq 2 ]] && grep -q "give --sweep or --map" "$TMP/err" || fail "(g) none: $(cat "$TMP/err")"
 echo "stability CLI: all checks passed"

@@ -32,6 +32,21 @@ TEST_F(RowLogTest, ALaterRowReplacesAnEarlierOneOfTheSameKey) {
   EXPECT_EQ(RowLog(file, kHeader).rows().at("a")[1], "2");
 }
 
+// A 2-D map keys a point by both coordinates: (1, 2) and (1, 3) are two rows, not one replaced.
+TEST_F(RowLogTest, RowsKeyedByTwoFieldsKeepPointsOfOneRow) {
+  const std::string file = path("map.csv");
+  {
+    RowLog log(file, kHeader, 2);
+    log.append({"1", "2", "first"});
+    log.append({"1", "3", "second"});
+  }
+  const RowLog back(file, kHeader, 2);
+  ASSERT_EQ(back.rows().size(), 2u);
+  EXPECT_EQ(back.rows().at("1,2")[2], "first");
+  EXPECT_EQ(back.rows().at("1,3")[2], "second");
+  EXPECT_THROW(RowLog(file, kHeader, 4), std::logic_error);
+}
+
 TEST_F(RowLogTest, ATornLastRowIsCutFromTheFile) {
   const std::string file = path("log.csv");
   put(file, "key,value,note\na,1,ok\nb,2,tor");  // killed in the middle of row b

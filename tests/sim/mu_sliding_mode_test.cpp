@@ -12,6 +12,7 @@
 #include "five_link_gait.hpp"
 #include "sim/hybrid_walk.hpp"
 #include "sim/mu_sliding_mode.hpp"
+#include "sim/poincare.hpp"
 
 namespace gaitopt::sim {
 namespace {
@@ -92,6 +93,34 @@ TEST(MuSlidingMode, WalksThePolynomialGaitWithItsModelOffByMusCase2) {
   // The same model under computed torque does not get through the first step.
   const TrackingController ct(model, makeTrackingLaw("computed_torque", TrackingGains{}));
   EXPECT_EQ(simulateWalk(plant, ct, ref, {}).steps_completed, 0);
+}
+
+// At mid single support the integral of the sliding surface (4.1) is part of the section's state
+// (poincare.hpp): the fixed point has 2 n + memory entries there and 2 n at the step's start,
+// where the integral restarts from zero. The extra multipliers are zero, so the largest one
+// (1.0e-4: the law tracks its time-indexed reference almost deadbeat) and the push's gait
+// sensitivity norm (0.018 s per N s, nearly all of it the pushed step's own duration, D) are
+// the same at both sections. Optimised builds only (about 10 s).
+TEST(MuSlidingMode, AtMidStanceTheSectionCarriesTheIntegralAndTheMultipliersAgree) {
+#ifndef NDEBUG
+  GTEST_SKIP() << "two Poincare maps: optimised builds only";
+#endif
+  const auto& plant = test::longHeelRobot();
+  const Reference ref(test::polynomialGait(), plant);
+  const MuSlidingModeController c(plant, muTable42(1), {0.2, 0.2, 0.05, 0.05});
+  PoincareOptions start;
+  start.section_clock = 0;
+  const PoincareAnalysis a = analysePoincare(plant, c, ref, start);
+  const PoincareAnalysis b = analysePoincare(plant, c, ref);
+  ASSERT_TRUE(a.ok && b.ok) << a.failure << b.failure;
+  const int m = c.memorySize(Phase::kSsp);
+  ASSERT_GT(m, 0);
+  EXPECT_EQ(a.fixed_point.size(), 10);
+  EXPECT_EQ(b.fixed_point.size(), 10 + m);
+  EXPECT_LT(a.max_multiplier, 2e-4);
+  EXPECT_NEAR(b.max_multiplier, a.max_multiplier, 0.1 * a.max_multiplier);
+  EXPECT_NEAR(b.gait_sensitivity_norm, a.gait_sensitivity_norm, 0.01 * a.gait_sensitivity_norm);
+  EXPECT_NEAR(a.linearised.d(0, 0), a.gait_sensitivity_norm, 0.01 * a.gait_sensitivity_norm);
 }
 
 }  // namespace
