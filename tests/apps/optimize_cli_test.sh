@@ -35,7 +35,7 @@ run optimize --config "$TMP/short.yaml" --out "$TMP/short" --quiet --no-plots
 grep -q "Maximum_Iterations_Exceeded" "$TMP/err" || fail "(c) $(cat "$TMP/err")"
 [[ ! -e "$TMP/short" && -f "$TMP/short.failed/summary.json" ]] || fail "(c) outputs misplaced"
 # (d) on the five-link problem a warm start from a previous result reaches the same optimum in
-# fewer iterations (measured: 15 against 27).
+# fewer iterations (measured: 12 against 15).
 FIVE="$ROOT/configs/ocp/mu2004_walk.yaml"
 run optimize --config "$FIVE" --out "$TMP/cold5" --quiet --no-plots
 [[ $RC -eq 0 ]] || fail "(d) cold start exited $RC: $(cat "$TMP/err")"
