@@ -266,7 +266,9 @@ SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options) {
   app->Options()->SetStringValue("nlp_scaling_method", options.nlp_scaling_method);
   app->Options()->SetIntegerValue("print_level", options.print_level);
   app->Options()->SetStringValue("sb", "yes");  // no Ipopt banner
-  if (app->Initialize() != Ipopt::Solve_Succeeded)
+  // No options file: Initialize() would read ./ipopt.opt, and a stray one in the working
+  // directory would override these settings unseen by summary.json.
+  if (app->Initialize(std::string()) != Ipopt::Solve_Succeeded)
     throw std::runtime_error("Ipopt could not be initialised (check the solver options)");
   app->Jnlst()->AddJournal(new FactorizationCounter(result.profile.factorizations));
   LeastViolation best;

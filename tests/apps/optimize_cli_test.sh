@@ -34,6 +34,12 @@ run optimize --config "$TMP/short.yaml" --out "$TMP/short" --quiet --no-plots
 [[ $RC -eq 4 ]] || fail "(c) expected exit 4, got $RC"
 grep -q "Maximum_Iterations_Exceeded" "$TMP/err" || fail "(c) $(cat "$TMP/err")"
 [[ ! -e "$TMP/short" && -f "$TMP/short.failed/summary.json" ]] || fail "(c) outputs misplaced"
+# (a2) an ipopt.opt in the working directory does not reach the solver (every setting comes
+# from the config and is echoed in summary.json): one allowed iteration would fail the solve.
+mkdir -p "$TMP/cwd" && printf 'max_iter 1\n' >"$TMP/cwd/ipopt.opt"
+(cd "$TMP/cwd" && run optimize --config "$CONFIG" --out "$TMP/opt_cwd" --quiet --no-plots &&
+  echo "$RC" >"$TMP/cwd/rc")
+[[ $(cat "$TMP/cwd/rc") -eq 0 ]] || fail "(a2) ipopt.opt in the working directory was read"
 # (d) on the five-link problem a warm start from a previous result reaches the same optimum in
 # fewer iterations (measured: 12 against 15).
 FIVE="$ROOT/configs/ocp/mu2004_walk.yaml"
