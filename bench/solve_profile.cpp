@@ -65,7 +65,14 @@ const std::vector<Lever> kLevers = {
     {"nlp_scaling_method none", [](ocp::SolverOptions& o) { o.nlp_scaling_method = "none"; }},
     {"bound_push = bound_frac = 1e-4",
      [](ocp::SolverOptions& o) { o.bound_push = o.bound_frac = 1e-4; }},
-    {"tolerance 1e-5", [](ocp::SolverOptions& o) { o.tolerance = 1e-5; }},
+    {"bound_mult_init_method constant",
+     [](ocp::SolverOptions& o) { o.bound_mult_init_method = "constant"; }},
+    {"tolerance 1e-6", [](ocp::SolverOptions& o) { o.tolerance = 1e-6; }},
+    {"tolerance 1e-6, bound_mult_init_method constant (before issue 16's change)",
+     [](ocp::SolverOptions& o) {
+       o.tolerance = 1e-6;
+       o.bound_mult_init_method = "constant";
+     }},
 };
 /// The levers are measured on the first two problems (the cost-of-transport solve is ten times
 /// longer and would dominate the run).

@@ -251,6 +251,7 @@ SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options) {
   SolveResult result;
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
   app->Options()->SetNumericValue("tol", options.tolerance);
+  app->Options()->SetNumericValue("constr_viol_tol", options.constraint_tolerance);
   app->Options()->SetIntegerValue("max_iter", options.max_iterations);
   app->Options()->SetStringValue("hessian_approximation", options.hessian);
   app->Options()->SetStringValue("jacobian_approximation",
@@ -260,11 +261,14 @@ SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options) {
   app->Options()->SetNumericValue("mu_init", options.mu_init);
   app->Options()->SetNumericValue("bound_push", options.bound_push);
   app->Options()->SetNumericValue("bound_frac", options.bound_frac);
+  app->Options()->SetStringValue("bound_mult_init_method", options.bound_mult_init_method);
   app->Options()->SetIntegerValue("mumps_pivot_order", options.mumps_pivot_order);
   app->Options()->SetStringValue("nlp_scaling_method", options.nlp_scaling_method);
   app->Options()->SetIntegerValue("print_level", options.print_level);
   app->Options()->SetStringValue("sb", "yes");  // no Ipopt banner
-  if (app->Initialize() != Ipopt::Solve_Succeeded)
+  // No options file: Initialize() would read ./ipopt.opt, and a stray one in the working
+  // directory would override these settings unseen by summary.json.
+  if (app->Initialize(std::string()) != Ipopt::Solve_Succeeded)
     throw std::runtime_error("Ipopt could not be initialised (check the solver options)");
   app->Jnlst()->AddJournal(new FactorizationCounter(result.profile.factorizations));
   LeastViolation best;
@@ -290,8 +294,9 @@ SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options) {
 
 SolverOptions warmStarted(SolverOptions options) {
   options.mu_init = 1e-5;
-  options.bound_push = 1e-4;
-  options.bound_frac = 1e-4;
+  options.bound_push = 1e-6;
+  options.bound_frac = 1e-6;
+  options.bound_mult_init_method = "mu-based";
   return options;
 }
 

@@ -113,7 +113,8 @@ class CostTerm {
 /// Triplets compressed to fixed slots: recorded once, then values are summed per slot.
 class SparsityPattern {
  public:
-  /// Records the positions of `entries`; duplicates share a slot.
+  /// Records the positions of `entries`; duplicates share a slot, slots in order of first
+  /// appearance.
   void record(const Triplets& entries);
   int nonZeros() const { return static_cast<int>(rows_.size()); }
   const std::vector<int>& rows() const { return rows_; }

@@ -38,6 +38,7 @@ nlohmann::ordered_json meshHistory(const std::vector<MeshRound>& history) {
 
 nlohmann::ordered_json solverJson(const SolverOptions& s) {
   return {{"tolerance", s.tolerance},
+          {"constraint_tolerance", s.constraint_tolerance},
           {"max_iterations", s.max_iterations},
           {"hessian", s.hessian},
           {"jacobian", s.jacobian},
@@ -46,6 +47,7 @@ nlohmann::ordered_json solverJson(const SolverOptions& s) {
           {"mu_init", s.mu_init},
           {"bound_push", s.bound_push},
           {"bound_frac", s.bound_frac},
+          {"bound_mult_init_method", s.bound_mult_init_method},
           {"mumps_pivot_order", s.mumps_pivot_order},
           {"nlp_scaling_method", s.nlp_scaling_method},
           {"print_level", s.print_level}};

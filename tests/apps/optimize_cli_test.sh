@@ -13,7 +13,9 @@ rows=$(($(wc -l <"$TMP/opt/trajectory.csv") - 1))
 [[ $rows -eq 141 ]] || fail "(a) expected 141 rows at 200 Hz over 0.7 s, got $rows"
 check_json "(a) summary" "$TMP/opt/summary.json" <<'PY'
 assert d["status"] == "Solve_Succeeded", d["status"]
-assert abs(d["cost"] - 390.79) < 0.05, d["cost"]
+assert abs(d["cost"] - 390.79) < 0.005, d["cost"]
+# issue 16: 8 iterations with multipliers started mu-based (13 before); a margin for other BLAS
+assert d["iterations"] <= 10, d["iterations"]
 assert d["iterations"] > 0 and d["wall_time_s"] > d["callback_time_s"] > 0
 assert d["max_violation"] < 1e-6, d["max_violation"]
 assert d["impact_energy_loss_J"] > 0, d["impact_energy_loss_J"]
@@ -34,8 +36,14 @@ run optimize --config "$TMP/short.yaml" --out "$TMP/short" --quiet --no-plots
 [[ $RC -eq 4 ]] || fail "(c) expected exit 4, got $RC"
 grep -q "Maximum_Iterations_Exceeded" "$TMP/err" || fail "(c) $(cat "$TMP/err")"
 [[ ! -e "$TMP/short" && -f "$TMP/short.failed/summary.json" ]] || fail "(c) outputs misplaced"
+# (a2) an ipopt.opt in the working directory does not reach the solver (every setting comes
+# from the config and is echoed in summary.json): one allowed iteration would fail the solve.
+mkdir -p "$TMP/cwd" && printf 'max_iter 1\n' >"$TMP/cwd/ipopt.opt"
+(cd "$TMP/cwd" && run optimize --config "$CONFIG" --out "$TMP/opt_cwd" --quiet --no-plots &&
+  echo "$RC" >"$TMP/cwd/rc")
+[[ $(cat "$TMP/cwd/rc") -eq 0 ]] || fail "(a2) ipopt.opt in the working directory was read"
 # (d) on the five-link problem a warm start from a previous result reaches the same optimum in
-# fewer iterations (measured: 15 against 27).
+# fewer iterations (measured: 12 against 15).
 FIVE="$ROOT/configs/ocp/mu2004_walk.yaml"
 run optimize --config "$FIVE" --out "$TMP/cold5" --quiet --no-plots
 [[ $RC -eq 0 ]] || fail "(d) cold start exited $RC: $(cat "$TMP/err")"
@@ -45,6 +53,8 @@ run optimize --config "$FIVE" --out "$TMP/warm5" --warm-start "$TMP/cold5" --qui
 import json, sys
 cold, warm = (json.load(open(f)) for f in sys.argv[1:3])
 assert abs(warm["cost"] - cold["cost"]) < 1e-4 * cold["cost"], (warm["cost"], cold["cost"])
+# issue 16: 131.516 to 5 digits in 15 iterations (29 before); a margin for other BLAS
+assert abs(cold["cost"] - 131.516) < 5e-4 and cold["iterations"] <= 18, (cold["cost"], cold["iterations"])
 assert warm["iterations"] < cold["iterations"], (warm["iterations"], cold["iterations"])
 PY
 # (e) every shipped OCP config converges.
