@@ -46,7 +46,8 @@ std::vector<std::string> columnNames(const dynamics::Model& model) {
   return names;
 }
 
-Eigen::VectorXd rowNumbers(const Knot& knot, const dynamics::Model& model, double step_length) {
+Eigen::VectorXd rowNumbers(const Knot& knot, const dynamics::Model& model,
+                           const std::vector<PhysicalJoint>& joints, double step_length) {
   const VecD theta = knot.theta, dtheta = knot.dtheta;
   const double zmp = zmpX(knot, step_length);
   if (!std::isfinite(zmp))
@@ -54,7 +55,6 @@ Eigen::VectorXd rowNumbers(const Knot& knot, const dynamics::Model& model, doubl
         "knot at t = {}: the total vertical ground force is zero, so the ZMP is undefined; a "
         "reference trajectory needs its contact forces",
         knot.t));
-  const auto joints = physicalJoints(model);
   const VecD q = dynamics::toJoint(theta), dq = dynamics::toJoint(dtheta);
   const int n = model.nLinks(), p = static_cast<int>(joints.size());
   Eigen::VectorXd row(6 * n + 11 + 3 * p);

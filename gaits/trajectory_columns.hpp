@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "dynamics/model.hpp"
+#include "gaits/physical_joints.hpp"
 #include "gaits/trajectory.hpp"
 
 namespace gaitopt::gaits {
@@ -19,8 +20,10 @@ std::vector<std::string> muColumnNames(int n);
 /// Every column of `model`'s export, "t" and "phase" first.
 std::vector<std::string> columnNames(const dynamics::Model& model);
 
-/// The numbers of one row, after t and phase, in columnNames order.
+/// The numbers of one row, after t and phase, in columnNames order; `joints` are
+/// physicalJoints(model), found once per file.
 /// @throws std::invalid_argument when the knot has no vertical ground force (no ZMP).
-Eigen::VectorXd rowNumbers(const Knot& knot, const dynamics::Model& model, double step_length);
+Eigen::VectorXd rowNumbers(const Knot& knot, const dynamics::Model& model,
+                           const std::vector<PhysicalJoint>& joints, double step_length);
 
 }  // namespace gaitopt::gaits

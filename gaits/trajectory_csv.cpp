@@ -51,9 +51,9 @@ void appendNumbers(fmt::memory_buffer& buf, const Eigen::Ref<const Eigen::Vector
 }
 
 void appendRow(fmt::memory_buffer& buf, const Knot& knot, const dynamics::Model& model,
-               double step_length) {
+               const std::vector<PhysicalJoint>& joints, double step_length) {
   fmt::format_to(std::back_inserter(buf), "{:.17g},{}", knot.t, toString(knot.phase));
-  appendNumbers(buf, rowNumbers(knot, model, step_length));
+  appendNumbers(buf, rowNumbers(knot, model, joints, step_length));
   buf.push_back('\n');
 }
 
@@ -128,11 +128,11 @@ ConfigError headerMismatch(const std::string& path, const std::vector<std::strin
       fmt::format("column {} is {}, expected '{}' {}", i + 1, quotedField(*f), *e, format));
 }
 
-void checkHeader(const std::string& path, const std::string& line, const dynamics::Model& model) {
+void checkHeader(const std::string& path, const std::string& line, const dynamics::Model& model,
+                 const std::vector<std::string>& expected) {
   const int n = model.nLinks();
   std::vector<std::string> found;
   for (const auto field : splitFields(line)) found.emplace_back(field);
-  const std::vector<std::string> expected = columnNames(model);
   if (found == expected) return;
   const int n_file = linksInHeader(found);
   const std::vector<std::string> mu = muColumnNames(n_file);
@@ -219,7 +219,8 @@ struct Row {
   double swing_x = 0;
 };
 
-Row parseRow(RowParser& row, const dynamics::Model& model) {
+Row parseRow(RowParser& row, const dynamics::Model& model,
+             const std::vector<PhysicalJoint>& joints) {
   const int n = model.nLinks();
   Row out;
   Knot& k = out.knot;
@@ -237,7 +238,6 @@ Row parseRow(RowParser& row, const dynamics::Model& model) {
   row.numbers(3);  // zmp_x, hip_x, hip_y: outputs for controllers, recomputed when writing
   out.swing_x = row.number();
   row.numbers(3);  // swing_y, com_x, com_y
-  const auto joints = physicalJoints(model);
   row.derived(physicalValues(joints, q, true), "the physical joint of q");
   row.derived(physicalValues(joints, dq, false), "the physical joint rate of dq");
   row.derived(physicalValues(joints, VecD(k.tau), false), "the physical joint torque of tau");
@@ -256,7 +256,8 @@ void writeTrajectoryCsv(const Trajectory& traj, const dynamics::Model& model,
   fmt::memory_buffer buf;
   const std::vector<std::string> names = columnNames(model);
   fmt::format_to(std::back_inserter(buf), "{}\n", fmt::join(names, ","));
-  for (const Knot& knot : traj.knots()) appendRow(buf, knot, model, traj.stepLength());
+  const std::vector<PhysicalJoint> joints = physicalJoints(model);
+  for (const Knot& knot : traj.knots()) appendRow(buf, knot, model, joints, traj.stepLength());
   writeAtomically(path, buf);
 }
 
@@ -266,16 +267,17 @@ Trajectory readTrajectoryCsv(const std::string& path, const dynamics::Model& mod
   if (lines.empty())
     throw ConfigError(path, "", 0,
                       fmt::format("empty file, expected the header {}", headerSummary(n)));
-  checkHeader(path, lines.front(), model);
+  const std::vector<std::string> names = columnNames(model);
+  checkHeader(path, lines.front(), model, names);
   if (lines.size() < 2) throw ConfigError(path, "", 1, "no data rows after the header");
 
-  const std::vector<std::string> names = columnNames(model);
+  const std::vector<PhysicalJoint> joints = physicalJoints(model);
   std::vector<Knot> knots;
   double step_length = 0;
   for (size_t i = 1; i < lines.size(); ++i) {
     const int line = static_cast<int>(i) + 1;
     RowParser parser(path, line, names, splitFields(lines[i]));
-    Row row = parseRow(parser, model);
+    Row row = parseRow(parser, model, joints);
     if (!knots.empty() && row.knot.t < knots.back().t)
       throw ConfigError(path, "t", line,
                         fmt::format("time {:.17g} is before the previous row's {:.17g}; rows "

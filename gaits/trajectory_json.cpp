@@ -10,12 +10,13 @@ namespace gaitopt::gaits {
 void writeTrajectoryJson(const Trajectory& traj, const dynamics::Model& model,
                          const std::string& path) {
   const std::vector<std::string> names = columnNames(model);
+  const std::vector<PhysicalJoint> joints = physicalJoints(model);
   nlohmann::ordered_json data = nlohmann::ordered_json::object();
   for (const auto& name : names) data[name] = nlohmann::ordered_json::array();
   for (const Knot& knot : traj.knots()) {
     data["t"].push_back(knot.t);
     data["phase"].push_back(toString(knot.phase));
-    const Eigen::VectorXd row = rowNumbers(knot, model, traj.stepLength());
+    const Eigen::VectorXd row = rowNumbers(knot, model, joints, traj.stepLength());
     for (Eigen::Index i = 0; i < row.size(); ++i)
       data[names[static_cast<size_t>(i) + 2]].push_back(row(i));
   }

@@ -44,48 +44,47 @@ int segmentAt(const PhaseLayout& layout, double t, double total) {
 
 namespace {
 
-/// The point at phase time t with the first `integrated` components of x taken as the
-/// integral of the interpolated xdot from the segment's first point, the rest as the
-/// Lagrange interpolation of the points.
-Eigen::VectorXd pointAt(const PhaseLayout& l, const Eigen::VectorXd& decision, double t,
-                        int integrated) {
+/// Where phase time t falls: the points first .. first + count - 1 of its segment, the
+/// segment's length h and the local time s = (t - t_k) / h in [0, 1].
+struct SegmentPlace {
+  int first = 0, count = 0;
+  double h = 0, s = 0;
+};
+
+SegmentPlace placeOf(const PhaseLayout& l, const Eigen::VectorXd& decision, double t) {
   const double total = l.durationAt(decision);
   const int k = segmentAt(l, t, total);
   const double h = total * l.segmentFraction(k);
-  const double s = std::clamp((t - total * l.fraction(k)) / h, 0.0, 1.0);
-  const int first = k * l.pointsPerSegment(), count = l.pointsPerSegment() + 1;
-  const Basis value = lagrange(l.scheme, s), integral = lagrangeIntegral(l.scheme, s);
-  Eigen::VectorXd point = Eigen::VectorXd::Zero(l.pointSize());
-  for (int j = 0; j < count; ++j)
-    point += value[static_cast<size_t>(j)] * l.point(decision, first + j);
-  for (int i = 0; i < integrated; ++i) {  // x = x_k + integral of the interpolated xdot
-    double x = decision(l.x(first, i));
-    for (int j = 0; j < count; ++j)
-      x += h * integral[static_cast<size_t>(j)] * decision(l.xdot(first + j, i));
-    point(i) = x;
-  }
-  return point;
+  return {k * l.pointsPerSegment(), l.pointsPerSegment() + 1, h,
+          std::clamp((t - total * l.fraction(k)) / h, 0.0, 1.0)};
 }
 
 }  // namespace
 
 Eigen::VectorXd interpolatePoint(const PhaseLayout& l, const Eigen::VectorXd& decision, double t) {
-  return pointAt(l, decision, t, l.nx);
+  const SegmentPlace p = placeOf(l, decision, t);
+  const Basis value = lagrange(l.scheme, p.s), integral = lagrangeIntegral(l.scheme, p.s);
+  Eigen::VectorXd point = Eigen::VectorXd::Zero(l.pointSize());
+  for (int j = 0; j < p.count; ++j)
+    point += value[static_cast<size_t>(j)] * l.point(decision, p.first + j);
+  for (int i = 0; i < l.nx; ++i) {  // x = x_k + integral of the interpolated xdot
+    double x = decision(l.x(p.first, i));
+    for (int j = 0; j < p.count; ++j)
+      x += p.h * integral[static_cast<size_t>(j)] * decision(l.xdot(p.first + j, i));
+    point(i) = x;
+  }
+  return point;
 }
 
 Eigen::VectorXd exportPoint(const PhaseLayout& l, const Eigen::VectorXd& decision, double t) {
   Eigen::VectorXd point = interpolatePoint(l, decision, t);
   if (l.nq == 0) return point;
-  const double total = l.durationAt(decision);
-  const int k = segmentAt(l, t, total);
-  const double h = total * l.segmentFraction(k);
-  const double s = std::clamp((t - total * l.fraction(k)) / h, 0.0, 1.0);
-  const Basis twice = lagrangeDoubleIntegral(l.scheme, s);
-  const int first = k * l.pointsPerSegment(), count = l.pointsPerSegment() + 1;
+  const SegmentPlace p = placeOf(l, decision, t);
+  const Basis twice = lagrangeDoubleIntegral(l.scheme, p.s);
   for (int i = 0; i < l.nq; ++i) {  // q = q_k + v_k (t - t_k) + double integral of a
-    double q = decision(l.x(first, i)) + h * s * decision(l.x(first, l.nq + i));
-    for (int j = 0; j < count; ++j)
-      q += h * h * twice[static_cast<size_t>(j)] * decision(l.xdot(first + j, l.nq + i));
+    double q = decision(l.x(p.first, i)) + p.h * p.s * decision(l.x(p.first, l.nq + i));
+    for (int j = 0; j < p.count; ++j)
+      q += p.h * p.h * twice[static_cast<size_t>(j)] * decision(l.xdot(p.first + j, l.nq + i));
     point(i) = q;
   }
   return point;
