@@ -54,6 +54,13 @@ void addScenarioOptions(CLI::App* cmd, sim::ScenarioSettings& o) {
                   "(Mu's setting: the gait then still fits the plant)")
       ->check(CLI::IsMember({"plant", "controller"}))
       ->capture_default_str();
+  cmd->add_option("--mass-error", o.mass_error,
+                  "Relative error of the masses and inertias (replaces the case's; a sweep's "
+                  "mass_error point)")
+      ->check(CLI::Range(-0.5, 2.0));
+  cmd->add_option("--length-error", o.length_error,
+                  "Relative error of the lengths and CoM offsets (replaces the case's)")
+      ->check(CLI::Range(-0.5, 0.5));
   cmd->add_option("--friction", o.friction, "Ground friction coefficient (default: the robot's)")
       ->check(CLI::Range(0.0, 10.0));
   cmd->add_option(

@@ -34,6 +34,8 @@ Scenario makeScenario(const ScenarioSettings& o) {
   if (s.errors_on_controller) s.uncertainty_bound = s.parameter_errors;
   if (o.friction >= 0) s.friction = o.friction;
   if (o.push != 0) setSweepValue(s, "push", o.push);
+  if (o.mass_error) setSweepValue(s, "mass_error", *o.mass_error);
+  if (o.length_error) setSweepValue(s, "length_error", *o.length_error);
   s.gain_scale = o.gain_scale;
   s.rules = o.rules;
   return s;

@@ -2,6 +2,7 @@
 /// @file scenario_settings.hpp
 /// The settings of `gaitopt simulate` and `gaitopt stability` (which gait, controller, ground and
 /// plant to walk) turned into a Scenario, the files it reads, and its record in summary.json.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,8 @@ struct ScenarioSettings {
   std::string uncertainty_on = "plant";  ///< or "controller" (Mu's setting)
   double friction = -1;                  ///< < 0: the robot's
   double push = 0;  ///< horizontal hip impulse, 0.1 s pulse from mid single support of step 2 [N s]
+  /// Relative errors that replace the uncertainty case's (a sweep's point walked on its own).
+  std::optional<double> mass_error, length_error;
   double gain_scale = 1;
   ContactRules rules;  ///< slip, CoP and restitution settings (contact_rules.hpp)
 };

@@ -58,6 +58,15 @@ assert d["fell"] is True and d["steps_completed"] < 3 and d["failure"].startswit
 assert d["parameter_errors"] == {"mass": 1.0, "inertia": 1.0, "length": 0.4, "com": 0.4}
 PY
 
+# (c2) one point of a stability sweep walked on its own: --mass-error and --length-error replace
+# the case's errors (here case 3's), so a failing sweep point can be looked at.
+run simulate --robot "$LONG_HEEL" --reference "$REF" --steps 1 --uncertainty-case 3 \
+  --mass-error -0.05 --length-error 0.025 --no-plots --no-poincare --out "$TMP/point"
+[[ $RC -eq 0 ]] || fail "(c2) expected exit 0, got $RC: $(cat "$TMP/err")"
+check_json "(c2) summary" "$TMP/point/summary.json" <<'PY'
+assert d["parameter_errors"] == {"mass": -0.05, "inertia": -0.05, "length": 0.025, "com": 0.025}, d
+PY
+
 # (d) bad input: exit 2 with a message naming what is wrong, and the old result untouched.
 bad() {
   local name=$1 pattern=$2
@@ -71,6 +80,7 @@ bad "unknown controller" "controller" --reference "$REF" --controller pid
 sed 's/^stiffness: .*/stiffness: -1/' configs/grounds/impedance.yaml >"$TMP/ground.yaml"
 bad "bad ground" "stiffness" --reference "$REF" --ground "$TMP/ground.yaml"
 bad "case 4" "uncertainty-case" --reference "$REF" --uncertainty-case 4
+bad "mass error below -50 %" "mass-error" --reference "$REF" --mass-error -0.9
 bad "hzd with a DSP" "controller hzd.*double support" --reference "$REF" --controller hzd
 [[ $(wc -l <"$TMP/rigid/steps.csv") -eq 3 ]] || fail "(d) a failed run touched the old result"
 echo "simulate CLI: all checks passed"
