@@ -38,7 +38,8 @@ void runInterpolate(InterpolateOptions o) {
   for (const auto& [p, w] : library::cellWeights(lib.grid, o.values))
     corners.push_back({{"point", lib.grid.point(p).name}, {"weight", w}});
   out.write([&](const std::string& dir) {
-    ocp::writeGaitFiles(dir, traj, model, summary, report::gaitPictures(o.output.plots));
+    ocp::writeGaitFiles(dir, traj, model, o.output.rate_hz, summary,
+                        report::gaitPictures(o.output.plots));
   });
   fmt::print(
       "interpolate: {} corners; max dynamics residual {:.3g} N m, periodicity error "

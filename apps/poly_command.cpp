@@ -42,8 +42,10 @@ void runPoly(const PolyOptions& options) {
 
   auto summary = gaits::gaitSummary(traj, model, {options.gait_path, "designed", 0, elapsed, 0});
   summary.update(gaits::designJson(params, search));
+  size_t samples = 0;
   out.write([&](const std::string& dir) {
-    ocp::writeGaitFiles(dir, traj, model, summary, report::gaitPictures(options.output.plots));
+    samples = ocp::writeGaitFiles(dir, traj, model, options.output.rate_hz, summary,
+                                  report::gaitPictures(options.output.plots));
   });
   fmt::print(
       "poly: energy {:.2f} J, CoT {:.4f}, min normal force {:.1f} N, max friction ratio "
@@ -52,7 +54,7 @@ void runPoly(const PolyOptions& options) {
       summary["min_normal_force"].get<double>(), summary["max_friction_ratio"].get<double>(),
       summary["min_zmp_margin"].get<double>());
   fmt::print("poly: wrote {}/trajectory.csv ({} samples), summary.json and pictures\n", out.path(),
-             traj.knots().size());
+             samples);
 }
 
 void registerPolyCommand(CLI::App& app) {

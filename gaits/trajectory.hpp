@@ -6,7 +6,9 @@
 /// Knots are sorted by time. A phase switch (SSP -> DSP at touchdown) is stored as two knots at
 /// the same time, the last SSP knot and the first DSP knot, because rates, accelerations and
 /// forces may jump there. Evaluation at a switch time is right-continuous (returns the DSP knot),
-/// except at the final time of the step.
+/// except at the final time of the step. The exported files instead put the step on one
+/// fixed-rate grid with strictly increasing time and keep the switch pairs and the last knot
+/// beside it (grid_export.hpp); their reader rebuilds this form.
 #include <string>
 #include <vector>
 

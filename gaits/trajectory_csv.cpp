@@ -1,7 +1,6 @@
 #include "gaits/trajectory_csv.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -14,11 +13,11 @@
 #include <fmt/format.h>
 
 #include "config/config_error.hpp"
-#include "dynamics/joint_coordinates.hpp"
-#include "dynamics/kinematics.hpp"
-#include "gaits/metrics.hpp"
+#include "gaits/grid_export.hpp"
 #include "gaits/physical_joints.hpp"
+#include "gaits/switch_states.hpp"
 #include "gaits/trajectory_columns.hpp"
+#include "gaits/trajectory_row.hpp"
 #include "io/checked_write.hpp"
 
 namespace gaitopt::gaits {
@@ -26,9 +25,9 @@ namespace {
 
 using config::ConfigError;
 
-/// q and dq are redundant with theta and dtheta (Mu 2.41); a file whose copies disagree by more
-/// than this was edited by hand or written for another convention [rad, rad/s].
-constexpr double kDerivedTolerance = 1e-9;
+/// How far a row's time may be from i / rate in a file on the grid: 17 digits are written, so
+/// only a file edited by hand misses by more [s].
+constexpr double kGridTolerance = 1e-12;
 
 /// The header in the short form used in error messages.
 std::string headerSummary(int n) {
@@ -90,13 +89,6 @@ std::vector<std::string_view> splitFields(std::string_view line) {
   }
 }
 
-/// A field quoted for an error message, shortened so a corrupt line cannot flood the terminal.
-std::string quotedField(std::string_view text) {
-  constexpr size_t kMax = 40;
-  return text.size() <= kMax ? fmt::format("'{}'", text)
-                             : fmt::format("'{}...'", text.substr(0, kMax - 3));
-}
-
 /// Number of links a header is written for (count of theta<i> columns).
 int linksInHeader(const std::vector<std::string>& fields) {
   return static_cast<int>(std::count_if(fields.begin(), fields.end(), [](const std::string& f) {
@@ -144,120 +136,70 @@ void checkHeader(const std::string& path, const std::string& line, const dynamic
   throw headerMismatch(path, found, expected, n);
 }
 
-/// Reads the fields of one data row in column order, naming file, line and column on error.
-class RowParser {
- public:
-  RowParser(const std::string& path, int line, const std::vector<std::string>& names,
-            std::vector<std::string_view> fields)
-      : path_(path), line_(line), names_(names), fields_(std::move(fields)) {
-    if (fields_.size() != names_.size())
-      throw ConfigError(
-          path_, "", line_,
-          fmt::format("expected {} comma-separated fields (one per header column), found {}{}",
-                      names_.size(), fields_.size(),
-                      fields_.size() < names_.size() ? " (truncated line?)" : ""));
-  }
-
-  double number() {
-    const double value = current();
-    ++next_;
-    return value;
-  }
-
-  Eigen::VectorXd numbers(int n) {
-    Eigen::VectorXd v(n);
-    for (int i = 0; i < n; ++i) v(i) = number();
-    return v;
-  }
-
-  Phase phase() {
-    const std::string_view text = fields_[next_];
-    if (text != "SSP" && text != "DSP")
-      fail(fmt::format("unknown phase {}, expected SSP or DSP", quotedField(text)));
-    ++next_;
-    return text == "SSP" ? Phase::kSsp : Phase::kDsp;
-  }
-
-  /// Reads redundant columns that must equal `expected` (e.g. q = M theta).
-  void derived(const VecD& expected, const char* relation) {
-    for (int i = 0; i < expected.size(); ++i) {
-      const double value = current();
-      if (std::abs(value - expected(i)) > kDerivedTolerance)
-        fail(fmt::format("{:.17g} disagrees with {} = {:.17g} (tolerance {})", value, relation,
-                         expected(i), kDerivedTolerance));
-      ++next_;
-    }
-  }
-
-  /// Throws a ConfigError about the current column.
-  [[noreturn]] void fail(const std::string& message) const {
-    throw ConfigError(path_, names_[next_], line_, message);
-  }
-
- private:
-  /// The current field as a finite number; from_chars is locale-independent and strict (no
-  /// spaces, no leading '+', the whole field must be consumed).
-  double current() const {
-    const std::string_view text = fields_[next_];
-    double value = 0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (text.empty() || ec != std::errc() || end != text.data() + text.size())
-      fail(fmt::format("expected a number, found {}", quotedField(text)));
-    if (!std::isfinite(value)) fail(fmt::format("non-finite value {}", quotedField(text)));
-    return value;
-  }
-
-  const std::string& path_;
-  int line_;
-  const std::vector<std::string>& names_;
-  std::vector<std::string_view> fields_;
-  size_t next_ = 0;
+/// The data rows' knots in file order and the last row's swing_x: the step length of a file
+/// that ends at the period (E at touchdown, or pinned there through the DSP).
+struct DataRows {
+  std::vector<Knot> knots;
+  double last_swing_x = 0;
 };
 
-struct Row {
-  Knot knot;
-  double swing_x = 0;
-};
-
-Row parseRow(RowParser& row, const dynamics::Model& model,
-             const std::vector<PhysicalJoint>& joints) {
-  const int n = model.nLinks();
-  Row out;
-  Knot& k = out.knot;
-  k.t = row.number();
-  k.phase = row.phase();
-  k.theta = row.numbers(n);
-  k.dtheta = row.numbers(n);
-  k.ddtheta = row.numbers(n);
-  const VecD q = dynamics::toJoint(VecD(k.theta)), dq = dynamics::toJoint(VecD(k.dtheta));
-  row.derived(q, "M theta (Mu 2.41)");
-  row.derived(dq, "M dtheta (Mu 2.41)");
-  k.tau = row.numbers(n);
-  k.force_stance = row.numbers(2);
-  k.force_swing = row.numbers(2);
-  row.numbers(3);  // zmp_x, hip_x, hip_y: outputs for controllers, recomputed when writing
-  out.swing_x = row.number();
-  row.numbers(3);  // swing_y, com_x, com_y
-  row.derived(physicalValues(joints, q, true), "the physical joint of q");
-  row.derived(physicalValues(joints, dq, false), "the physical joint rate of dq");
-  row.derived(physicalValues(joints, VecD(k.tau), false), "the physical joint torque of tau");
+DataRows dataRows(const std::string& path, const std::vector<std::string>& lines,
+                  const std::vector<std::string>& names, const dynamics::Model& model) {
+  const std::vector<PhysicalJoint> joints = physicalJoints(model);
+  DataRows out;
+  for (size_t i = 1; i < lines.size(); ++i) {
+    const int line = static_cast<int>(i) + 1;
+    Row row = parseRow({path, line, ""}, names, splitFields(lines[i]), model, joints);
+    if (!out.knots.empty() && row.knot.t < out.knots.back().t)
+      throw ConfigError(path, "t", line,
+                        fmt::format("time {:.17g} is before the previous row's {:.17g}; rows "
+                                    "must be sorted by time",
+                                    row.knot.t, out.knots.back().t));
+    out.last_swing_x = row.swing_x;
+    out.knots.push_back(std::move(row.knot));
+  }
   return out;
+}
+
+/// Rows with switch states must be the whole grid t_i = i / rate up to the step's end: a file
+/// cut short or edited would otherwise be read as a step that jumps from its last row to the
+/// stored end state. Rows are numbered as in the file (row i on line i + 2).
+void checkGrid(const std::string& path, const std::vector<Knot>& rows, const SwitchStates& s) {
+  const double span = s.end.knot.t * s.rate_hz;  // N plus a fraction; any number in a bad file
+  const bool plausible = span >= 0 && span < static_cast<double>(rows.size()) + 1;
+  if (!plausible || rows.size() != gridSize(s.end.knot.t, s.rate_hz))
+    throw ConfigError(path, "", 0,
+                      fmt::format("{} row(s) on the grid, but t_i = i / {} Hz up to the step's "
+                                  "end at {} s (summary.json) makes {:.0f}: a truncated or "
+                                  "edited file",
+                                  rows.size(), s.rate_hz, s.end.knot.t, std::floor(span) + 1));
+  for (size_t i = 0; i < rows.size(); ++i)
+    if (std::abs(rows[i].t - static_cast<double>(i) / s.rate_hz) > kGridTolerance)
+      throw ConfigError(path, "t", static_cast<int>(i) + 2,
+                        fmt::format("time {:.17g} is not i / rate = {} / {} Hz (summary.json)",
+                                    rows[i].t, i, s.rate_hz));
+}
+
+/// The summary.json in the folder of `path`, where a gait folder keeps its switch states.
+std::string summaryBeside(const std::string& path) {
+  return (std::filesystem::path(path).parent_path() / "summary.json").string();
 }
 
 }  // namespace
 
-void writeTrajectoryCsv(const Trajectory& traj, const dynamics::Model& model,
-                        const std::string& path) {
-  if (traj.knots().empty())
+void writeTrajectoryCsv(const std::vector<Knot>& rows, double step_length,
+                        const dynamics::Model& model, const std::string& path) {
+  if (rows.empty())
     throw std::invalid_argument(fmt::format("cannot write an empty trajectory to '{}'", path));
-  if (traj.nLinks() != model.nLinks())
+  if (rows.front().theta.size() != model.nLinks())
     throw std::invalid_argument(fmt::format("trajectory has {} links but robot '{}' has {}",
-                                            traj.nLinks(), model.name(), model.nLinks()));
+                                            rows.front().theta.size(), model.name(),
+                                            model.nLinks()));
   fmt::memory_buffer buf;
   const std::vector<std::string> names = columnNames(model);
   fmt::format_to(std::back_inserter(buf), "{}\n", fmt::join(names, ","));
   const std::vector<PhysicalJoint> joints = physicalJoints(model);
-  for (const Knot& knot : traj.knots()) appendRow(buf, knot, model, joints, traj.stepLength());
+  for (const Knot& knot : rows) appendRow(buf, knot, model, joints, step_length);
   writeAtomically(path, buf);
 }
 
@@ -270,28 +212,21 @@ Trajectory readTrajectoryCsv(const std::string& path, const dynamics::Model& mod
   const std::vector<std::string> names = columnNames(model);
   checkHeader(path, lines.front(), model, names);
   if (lines.size() < 2) throw ConfigError(path, "", 1, "no data rows after the header");
-
-  const std::vector<PhysicalJoint> joints = physicalJoints(model);
-  std::vector<Knot> knots;
-  double step_length = 0;
-  for (size_t i = 1; i < lines.size(); ++i) {
-    const int line = static_cast<int>(i) + 1;
-    RowParser parser(path, line, names, splitFields(lines[i]));
-    Row row = parseRow(parser, model, joints);
-    if (!knots.empty() && row.knot.t < knots.back().t)
-      throw ConfigError(path, "t", line,
-                        fmt::format("time {:.17g} is before the previous row's {:.17g}; rows "
-                                    "must be sorted by time",
-                                    row.knot.t, knots.back().t));
-    step_length = row.swing_x;  // the last row's swing tip: E at touchdown (header doc)
-    knots.push_back(std::move(row.knot));
-  }
+  DataRows rows = dataRows(path, lines, names, model);
+  const auto states = readSwitchStates(summaryBeside(path), model);
+  if (states) checkGrid(path, rows.knots, *states);
   try {
-    return Trajectory(model.name(), step_length, std::move(knots));
+    if (states)
+      return joinGrid(model.name(), states->end.swing_x, rows.knots, states->switches,
+                      states->end.knot);
+    return Trajectory(model.name(), rows.last_swing_x, std::move(rows.knots));
   } catch (const std::invalid_argument& e) {
     throw ConfigError(
         path, "", 0,
-        fmt::format("rows do not form a trajectory: {} (knot k is on line k + 2)", e.what()));
+        fmt::format("rows do not form a trajectory: {} ({})", e.what(),
+                    states ? "with the switch states of the summary.json beside it"
+                           : "knot k is on line k + 2; rows on one fixed-rate grid need the "
+                             "phase_switches of the summary.json beside them"));
   }
 }
 

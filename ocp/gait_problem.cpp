@@ -268,7 +268,8 @@ gaits::Knot exportKnot(const Phase& phase, const dynamics::Model& model, const E
   return knot;
 }
 
-/// Knots on the grid j / rate_hz inside the phase plus both ends (exportKnot).
+/// Knots on the grid j / rate_hz inside the phase plus both ends (exportKnot); the grid is the
+/// step's, not restarted at the phase start.
 void appendDenseKnots(std::vector<gaits::Knot>& knots, const Phase& phase,
                       const dynamics::Model& model, const Eigen::VectorXd& x, double t0,
                       double rate_hz) {
@@ -279,7 +280,11 @@ void appendDenseKnots(std::vector<gaits::Knot>& knots, const Phase& phase,
   for (auto j = static_cast<long>(std::floor(t0 * rate_hz)) + 1;; ++j) {
     const double t = static_cast<double>(j) / rate_hz - t0;
     if (t > total - gap) break;
-    if (t > gap) add(t);
+    if (t <= gap) continue;
+    add(t);
+    // Exactly on the export grid (gaits/grid_export.hpp), which then takes this knot as it is
+    // rather than a quintic re-interpolation an ulp away from t0 + (j / rate - t0).
+    knots.back().t = static_cast<double>(j) / rate_hz;
   }
   add(total);
 }

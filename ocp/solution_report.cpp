@@ -7,10 +7,9 @@
 
 #include "gaits/consistency.hpp"
 #include "gaits/export_checks.hpp"
+#include "gaits/gait_export.hpp"
 #include "gaits/gait_summary.hpp"
 #include "gaits/metrics.hpp"
-#include "gaits/trajectory_csv.hpp"
-#include "gaits/trajectory_json.hpp"
 #include "io/checked_write.hpp"
 #include "io/output_folder.hpp"
 
@@ -141,13 +140,12 @@ FailureReport failureReport(const GaitSolution& solution, const std::string& dir
 
 }  // namespace
 
-void writeGaitFiles(const std::string& dir, const gaits::Trajectory& traj,
-                    const dynamics::Model& model, const nlohmann::ordered_json& summary,
-                    const FolderPictures& pictures) {
-  gaits::writeTrajectoryCsv(traj, model, dir + "/trajectory.csv");
-  gaits::writeTrajectoryJson(traj, model, dir + "/trajectory.json");
-  gaits::writeJsonFile(summary, dir + "/summary.json");
+size_t writeGaitFiles(const std::string& dir, const gaits::Trajectory& traj,
+                      const dynamics::Model& model, double rate_hz,
+                      const nlohmann::ordered_json& summary, const FolderPictures& pictures) {
+  const size_t samples = gaits::writeGaitExport(dir, traj, model, rate_hz, summary);
   if (pictures) pictures(dir);
+  return samples;
 }
 
 nlohmann::ordered_json betweenNodeMetrics(const gaits::Trajectory& dense,
@@ -221,7 +219,7 @@ nlohmann::ordered_json writeGaitResult(const GaitResultOptions& o, const dynamic
   const gaits::Trajectory dense =
       reconstructDense(solution.problem, model, solution.result.x, o.rate_hz);
   const auto summary = solutionSummary(o, model, config, solution, failure, dense);
-  writeGaitFiles(dir, dense, model, summary, o.pictures);
+  writeGaitFiles(dir, dense, model, o.rate_hz, summary, o.pictures);
   return summary;
 }
 

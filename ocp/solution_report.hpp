@@ -4,6 +4,7 @@
 /// trajectory.csv along the scheme's own polynomials, summary.json with the metrics, the
 /// solver's account and the constraints between the nodes, and pictures; a failed solve goes
 /// to a folder of its own, marked by FAILED.txt.
+#include <cstddef>
 #include <functional>
 #include <string>
 
@@ -26,10 +27,12 @@ struct GaitResultOptions {
 };
 
 /// The files of every gait folder (designed, optimised or interpolated) into `dir`:
-/// trajectory.csv, summary.json, then the pictures when `pictures` is set.
-void writeGaitFiles(const std::string& dir, const gaits::Trajectory& traj,
-                    const dynamics::Model& model, const nlohmann::ordered_json& summary,
-                    const FolderPictures& pictures);
+/// trajectory.csv and trajectory.json on the grid t_i = i / rate_hz, summary.json with the
+/// switch states (gaits/gait_export.hpp), then the pictures when `pictures` is set. Returns the
+/// number of samples.
+size_t writeGaitFiles(const std::string& dir, const gaits::Trajectory& traj,
+                      const dynamics::Model& model, double rate_hz,
+                      const nlohmann::ordered_json& summary, const FolderPictures& pictures);
 
 /// How far the constraints that hold at the collocation points are missed between them, on the
 /// dense export `dense` sampled at `rate_hz`: max_dynamics_defect [N m] and per peak torque,

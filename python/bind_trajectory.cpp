@@ -1,11 +1,14 @@
 /// @file bind_trajectory.cpp
 /// gaitopt.Trajectory (gaits/trajectory.hpp) with its knots as numpy arrays, the polynomial gait
-/// of Mu ch. 3 (design_poly) and trajectory.csv (read_trajectory, write_trajectory).
+/// of Mu ch. 3 (design_poly) and a gait folder's trajectory.csv (read_trajectory,
+/// write_trajectory).
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
 #include "dynamics/model_variation.hpp"
+#include "gaits/gait_export.hpp"
 #include "gaits/gait_params.hpp"
+#include "gaits/gait_summary.hpp"
 #include "gaits/hip_plan_search.hpp"
 #include "gaits/polynomial_gait.hpp"
 #include "gaits/trajectory_csv.hpp"
@@ -42,6 +45,13 @@ Trajectory designPoly(const dynamics::Model& robot, const std::string& gait_path
   const dynamics::Model model = dynamics::withSlope(robot, params.slope);
   const gaits::HipPlanSearch search = gaits::searchHipPlan(model, params);
   return gaits::buildTrajectory(gaits::PolynomialGait(model, params, search.plan), model, rate_hz);
+}
+
+/// A gait folder of `traj` (trajectory files and summary.json) in the existing folder `dir`.
+size_t writeFolder(const Trajectory& traj, const dynamics::Model& robot, const std::string& dir,
+                   double rate_hz) {
+  return gaits::writeGaitExport(dir, traj, robot, rate_hz,
+                                gaits::gaitSummary(traj, robot, {"", "exported"}));
 }
 
 }  // namespace
@@ -96,9 +106,13 @@ void bindTrajectory(py::module_& m) {
         "The polynomial gait of Mu (2004) ch. 3 for a gait YAML (configs/gaits/); "
         "InfeasibleError when the robot cannot realise it.");
   m.def("read_trajectory", &gaits::readTrajectoryCsv, py::arg("path"), py::arg("robot"),
-        "Reads a trajectory.csv for the robot.");
-  m.def("write_trajectory", &gaits::writeTrajectoryCsv, py::arg("trajectory"), py::arg("robot"),
-        py::arg("path"), "Writes trajectory.csv (DESIGN.md sec. 5).");
+        "Reads a trajectory.csv for the robot, with the switch states of the summary.json "
+        "beside it put back.");
+  m.def("write_trajectory", &writeFolder, py::arg("trajectory"), py::arg("robot"), py::arg("dir"),
+        py::arg("rate_hz") = 1000.0,
+        "Writes DIR/trajectory.csv and trajectory.json on the grid t_i = i / rate_hz and "
+        "DIR/summary.json with the metrics and the switch states (DESIGN.md sec. 5); returns "
+        "the number of samples.");
 }
 
 }  // namespace gaitopt::python

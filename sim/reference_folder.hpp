@@ -20,7 +20,9 @@ struct ReferenceFolder {
 /// no FAILED.txt, not "converged": false, and summary.json's robot (when recorded) is model's.
 void requireGaitOf(const std::string& dir, const dynamics::Model& model);
 
-/// Reads DIR/trajectory.csv for the robot `robot_path`, or, when that is empty, for
+/// Reads DIR/trajectory.csv (with the switch states of DIR/summary.json put back, so the step's
+/// SSP ends at the touchdown in the pre-impact state and its DSP ends at the period:
+/// gaits/trajectory_csv.hpp) for the robot `robot_path`, or, when that is empty, for
 /// configs/robots/<summary.json's "robot">.yaml under the working directory. The model carries
 /// summary.json's "slope_rad" (0 when absent), so a simulation walks the reference's slope.
 /// @throws config::ConfigError naming the file and what is wrong (missing folder, unknown robot,

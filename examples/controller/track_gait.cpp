@@ -3,6 +3,9 @@
 /// steps under computed-torque tracking on the nominal robot, and checks that the walk stays on
 /// the reference: every step completed, the angles within 0.01 rad of the reference, and each
 /// step advancing the reference's step length (within 1 mm).
+/// The file is read with the switch states of the summary.json beside it (the touchdown's pre-
+/// and post-impact states and the period's, which its fixed-rate grid does not sample), so give
+/// the trajectory.csv inside its gait folder.
 /// Usage: track_gait ROBOT.yaml trajectory.csv [STEPS]; exit 0 on the reference, 1 off it,
 /// 2 bad input.
 #include <cmath>

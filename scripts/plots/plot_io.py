@@ -7,11 +7,16 @@ inside a field).
 """
 import csv
 import json
+import os
 import sys
 
 import numpy as np
 
 NUMBER_WORDS = {2: "two", 3: "three"}
+
+# A grid sample this close to a stored switch or end state is that instant [s]
+# (gaits/grid_export.cpp).
+SWITCH_TOLERANCE_S = 1e-9
 
 
 class InputError(Exception):
@@ -154,7 +159,8 @@ def read_trajectory(path, need=()):
     Requires t, phase, theta1..thetaN (N >= 2, the contiguous run from theta1) and the columns
     in `need`; every row must have the header's number of fields (a torn row is an error naming
     its line), every value but the phase a finite number, phase SSP rows then DSP rows, and t
-    non-decreasing."""
+    non-decreasing. The rows on the fixed-rate grid get back the switch and end states of the
+    summary.json beside the file (switch_rows), so the step is the one the gait was sampled from."""
     header, rows = read_rows(path, "trajectory", min_rows=2)
     require_columns(path, header, ["t", "phase", "theta1"])
     thetas = numbered_names(header, "theta", 1)
@@ -166,8 +172,50 @@ def read_trajectory(path, need=()):
     phase = col.pop("phase")
     check_phases(path, phase)
     check_increasing(path, "t", col["t"])
+    col, phase = with_switch_rows(col, phase, switch_rows(path, names))
     return Trajectory(path, header, col, phase, len(thetas),
                       len(numbered_names(header, "tau", 0)))
+
+
+def switch_rows(path, names):
+    """The rows a fixed-rate export keeps in the summary.json beside `path` (gaits/
+    switch_states.hpp): each phase switch's 'before' and 'after' rows, then 'step_end'; empty
+    for a folder without them (its CSV repeats the switch time and ends at the period)."""
+    summary = os.path.join(os.path.dirname(path), "summary.json")
+    if not os.path.isfile(summary):
+        return []
+    s = read_json(summary)
+    if "phase_switches" not in s:
+        return []
+    require_type(summary, s, "phase_switches", list, "a list")
+    require_keys(summary, s, ["step_end"])
+    keyed = [(f"phase_switches[{i}].{side}", sw.get(side) if isinstance(sw, dict) else None)
+             for i, sw in enumerate(s["phase_switches"]) for side in ("before", "after")]
+    keyed.append(("step_end", s["step_end"]))
+    for key, row in keyed:
+        if not isinstance(row, dict):
+            raise InputError(f"{summary}: key '{key}': expected a trajectory.csv row object")
+        require_numbers(summary, row, [n for n in names if n != "phase"], prefix=key + ".")
+        check_values(summary, key + ".phase", [row.get("phase")], ("SSP", "DSP"))
+    return [row for _, row in keyed]
+
+
+def with_switch_rows(col, phase, extra):
+    """The columns with the `extra` rows put back in time order, as the C++ reader does: a grid
+    row within 1e-9 s of one of them is dropped (the stored state stands for it), so the SSP
+    rows end at the touchdown in the pre-impact state and the DSP rows start there in the
+    post-impact state and end at the period."""
+    if not extra:
+        return col, phase
+    t = col["t"]
+    keep = np.ones(len(t), dtype=bool)
+    for row in extra:
+        keep &= np.abs(t - row["t"]) > SWITCH_TOLERANCE_S
+    merged = {name: np.concatenate([values[keep], [float(row[name]) for row in extra]])
+              for name, values in col.items()}
+    order = np.argsort(merged["t"], kind="stable")  # a switch's two rows keep their order
+    phases = np.concatenate([phase[keep], np.array([row["phase"] for row in extra], dtype=str)])
+    return {name: values[order] for name, values in merged.items()}, phases[order]
 
 
 def wrap(angle):

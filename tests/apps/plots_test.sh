@@ -366,6 +366,41 @@ assert (len(frames) - sum(g.dsp[frames]), sum(g.dsp[frames])) == (12, 4), frames
 assert g.foot == (0.05, 0.15) and g.foot_source == "summary.json", (g.foot, g.foot_source)
 assert abs(g.zmp_margin().min() - g.s["min_zmp_margin"]) < 1e-9, g.zmp_margin().min()
 PY
+# (h) a gait folder on the fixed-rate grid: the touchdown's two rows and the end row come from
+# summary.json (phase_switches, step_end) and plot_io puts them back in time order, replacing
+# the grid rows at 0.6 s and 0.7 s (DESIGN.md sec. 5, gaits/switch_states.hpp).
+make_gait "$TMP/grid"
+(cd "$PLOTS" && "$PY" - "$TMP/grid" <<'PY') || fail "(h) switch rows from summary.json"
+import csv, json, sys
+import plot_io
+d = sys.argv[1]
+with open(f"{d}/trajectory.csv") as f:
+    header, *rows = list(csv.reader(f))
+row = lambda r: {h: (v if h == "phase" else float(v)) for h, v in zip(header, r)}
+at = {round(float(r[0]), 9): r for r in rows}
+before, end = row(at[0.6]), row(at[0.7])
+before["tau0"] = 123.0  # a marker: the summary's row, not the CSV's
+after = dict(before, phase="DSP", tau0=-123.0)
+at[0.6] = [str(after[h]) for h in header]  # the grid's sample at the switch: post-impact
+with open(f"{d}/trajectory.csv", "w") as f:
+    csv.writer(f, lineterminator="\n").writerows([header] + [at[t] for t in sorted(at)])
+s = json.load(open(f"{d}/summary.json"))
+s["phase_switches"] = [{"t": 0.6, "from": "SSP", "to": "DSP", "before": before, "after": after}]
+s["step_end"] = end
+json.dump(s, open(f"{d}/summary.json", "w"))
+g = plot_io.read_trajectory(f"{d}/trajectory.csv")
+assert len(g.t) == 72, len(g.t)  # 71 grid rows, less 0.6 and 0.7, plus before, after, end
+assert list(g.phase[59:63]) == ["SSP", "SSP", "DSP", "DSP"], g.phase[59:63]
+assert g.t[60] == g.t[61] == 0.6 and g.t_touchdown == 0.6 and g.t[-1] == 0.7, g.t[58:63]
+assert g.col["tau0"][60] == 123.0 and g.col["tau0"][61] == -123.0, g.col["tau0"][59:63]
+s["step_end"] = {"t": 0.7}
+json.dump(s, open(f"{d}/summary.json", "w"))
+try:
+    plot_io.read_trajectory(f"{d}/trajectory.csv")
+    raise SystemExit("a step_end without its columns was accepted")
+except plot_io.InputError as e:
+    assert "key 'step_end.phase'" in str(e) or "key 'step_end.theta1'" in str(e), e
+PY
 make_gait "$TMP/pointfoot" none
 plot gait_plots.py "$TMP/pointfoot"
 [[ $RC -eq 0 ]] && grep -q "ZMP drawn against point tips" "$TMP/err" || fail "(h) no foot: $(cat "$TMP/err")"

@@ -11,7 +11,15 @@ run poly --robot "$ROBOT" --gait "$GAIT" --out "$TMP/poly" --rate 200 --no-plots
 [[ $RC -eq 0 ]] || fail "(a) poly exited $RC: $(cat "$TMP/err")"
 [[ -f "$TMP/poly/trajectory.csv" && -f "$TMP/poly/summary.json" ]] || fail "(a) outputs missing"
 rows=$(($(wc -l <"$TMP/poly/trajectory.csv") - 1))
-[[ $rows -eq 142 ]] || fail "(a) expected 141 grid samples + the touchdown pair = 142 rows, got $rows"
+[[ $rows -eq 141 ]] || fail "(a) expected the 141 grid samples t_i = i / 200, i = 0..140, got $rows"
+"$PY" - "$TMP/poly/trajectory.csv" <<'PY' || fail "(a) the CSV is not on the grid i / 200"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+t = [float(r["t"]) for r in rows]
+assert all(abs(ti - i / 200) < 1e-12 for i, ti in enumerate(t)), "off the grid"
+assert all(b > a for a, b in zip(t, t[1:])), "time not strictly increasing"
+assert all(r["phase"] == ("SSP" if float(r["t"]) < 0.6 else "DSP") for r in rows), "phases"
+PY
 check_json "(a) summary values" "$TMP/poly/summary.json" <<'PY'
 assert d["status"] == "designed" and d["robot"] == "mu2004_five_link"
 assert abs(d["step_length"] - 0.35) < 1e-12 and abs(d["duration"] - 0.7) < 1e-12
@@ -23,6 +31,12 @@ assert d["max_defect"] < 1e-8, d["max_defect"]
 assert d["periodicity_error"] < 1e-10, d["periodicity_error"]
 assert d["impact_energy_loss_J"] < 1e-10, d["impact_energy_loss_J"]
 assert abs(d["cost_of_transport"] - d["energy_J"] / (d["total_mass"] * 9.81 * 0.35)) < 1e-12
+# the states the grid does not sample: the touchdown's two and the end's
+assert d["sample_rate_hz"] == 200
+[s] = d["phase_switches"]
+assert s["t"] == 0.6 and s["before"]["phase"] == "SSP" and s["after"]["phase"] == "DSP", s["t"]
+assert s["before"]["t"] == s["after"]["t"] == 0.6
+assert d["step_end"]["t"] == d["duration"] and d["step_end"]["phase"] == "DSP"
 PY
 
 # (b) a gait file with a typo names the file and key; exit code 2.

@@ -12,11 +12,12 @@
 #include "dynamics/robot_config.hpp"
 #include "dynamics/ssp_dynamics.hpp"
 #include "gaits/dsp_force_distribution.hpp"
+#include "gaits/gait_export.hpp"
 #include "gaits/hip_plan_search.hpp"
 #include "gaits/metrics.hpp"
 #include "gaits/trajectory_csv.hpp"
-#include "support/fixtures.hpp"
 #include "support/chain_simulation.hpp"
+#include "support/fixtures.hpp"
 
 namespace gaitopt::test {
 namespace {
@@ -105,14 +106,16 @@ TEST_F(MuGaitPhysics, DspZmpStaysWellInsideTheSupportAndEqualsTheCentreOfPressur
 }
 
 TEST_F(MuGaitPhysics, ExportedTorquesReproduceTheSspByForwardSimulation) {
-  // Export, re-import, then integrate D ddtheta + N = M^T tau(t) from the exported initial state
-  // with tau linear between the 1 kHz samples (as a controller would apply them).
-  const std::string path =
-      (std::filesystem::temp_directory_path() / fmt::format("gaitopt_resim_{}.csv", ::getpid()))
-          .string();
-  gaits::writeTrajectoryCsv(*traj_, *model_, path);
-  const gaits::Trajectory imported = gaits::readTrajectoryCsv(path, *model_);
-  std::filesystem::remove(path);
+  // Export (1 kHz grid, switch states in summary.json), re-import, then integrate
+  // D ddtheta + N = M^T tau(t) from the exported initial state with tau linear between the
+  // samples (as a controller would apply them).
+  const auto dir =
+      std::filesystem::temp_directory_path() / fmt::format("gaitopt_resim_{}", ::getpid());
+  std::filesystem::create_directories(dir);
+  gaits::writeGaitExport(dir.string(), *traj_, *model_, 1000, nlohmann::ordered_json::object());
+  const gaits::Trajectory imported =
+      gaits::readTrajectoryCsv((dir / "trajectory.csv").string(), *model_);
+  std::filesystem::remove_all(dir);
 
   const double t_s = params_->ssp_duration - 1e-12;  // the SSP side of the touchdown
   double max_err = 0;

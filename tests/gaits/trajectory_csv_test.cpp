@@ -106,7 +106,7 @@ class TrajectoryCsv : public ::testing::Test {
            fmt::format("gaitopt_csv_{}_{}", info->name(), ::getpid());
     std::filesystem::create_directories(dir_);
     good_ = path("good.csv");
-    gaits::writeTrajectoryCsv(traj_, model_, good_);
+    gaits::writeTrajectoryCsv(traj_.knots(), traj_.stepLength(), model_, good_);
     lines_ = split(readText(good_), '\n');
     header_ = split(lines_.front(), ',');
   }
@@ -168,14 +168,14 @@ TEST_F(TrajectoryCsv, RoundTripIsExactAndByteIdentical) {
   EXPECT_EQ(back.stepLength(), traj_.stepLength());
   EXPECT_EQ(back.robot(), "mu2004_five_link");
   const std::string again = path("again.csv");
-  gaits::writeTrajectoryCsv(back, model_, again);
+  gaits::writeTrajectoryCsv(back.knots(), back.stepLength(), model_, again);
   EXPECT_EQ(readText(again), readText(good_));
   EXPECT_FALSE(std::filesystem::exists(again + ".tmp")) << "temporary file left behind";
 }
 
 TEST_F(TrajectoryCsv, JsonVariantHoldsTheSameColumnsAndNumbers) {
   const std::string json_path = path("trajectory.json");
-  gaits::writeTrajectoryJson(traj_, model_, json_path);
+  gaits::writeTrajectoryJson(traj_.knots(), traj_.stepLength(), model_, json_path);
   const auto json = nlohmann::json::parse(readText(json_path));
   EXPECT_EQ(json["robot"], "mu2004_five_link");
   EXPECT_EQ(json["step_length"].get<double>(), traj_.stepLength());
@@ -234,7 +234,8 @@ TEST_F(TrajectoryCsv, DerivedColumnsComeFromTheModel) {
 
 TEST_F(TrajectoryCsv, WriterRejectsAnotherRobot) {
   const auto three = loadNamed("three_link");
-  EXPECT_THROW(gaits::writeTrajectoryCsv(traj_, three, path("x.csv")), std::invalid_argument);
+  EXPECT_THROW(gaits::writeTrajectoryCsv(traj_.knots(), traj_.stepLength(), three, path("x.csv")),
+               std::invalid_argument);
 }
 
 // --- malformed files -------------------------------------------------------------------------

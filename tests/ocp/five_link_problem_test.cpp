@@ -14,6 +14,7 @@
 #include "dynamics/robot_config.hpp"
 #include "gaits/consistency.hpp"
 #include "gaits/export_checks.hpp"
+#include "gaits/grid_export.hpp"
 #include "gaits/metrics.hpp"
 #include "ocp/collocation_interpolation.hpp"
 #include "ocp/gait_problem.hpp"
@@ -200,6 +201,34 @@ TEST_F(FiveLinkSolution, DenseExportHoldsItsContactsAndIsConsistentBetweenTheNod
     if (sample.phase != node.phase) continue;
     EXPECT_LT((sample.tau - node.tau).cwiseAbs().maxCoeff(), 1e-3 * peak) << "t = " << node.t;
   }
+}
+
+TEST_F(FiveLinkSolution, DenseExportOnOneGridKeepsEveryKnot) {
+  // Issue 15 item 6: the controller's samples are exactly i / 1000 with time strictly
+  // increasing; the touchdown, off the grid for the free durations, falls inside one interval,
+  // and the grid with its switch states is the dense export knot for knot.
+  const gaits::Trajectory dense = reconstructDense(*problem_, *model_, result_->x, 1000.0);
+  const gaits::GridExport grid = gaits::exportGrid(dense, 1000.0);
+  const double t_switch = dense.phaseDurations().front().second;
+  RecordProperty("samples", static_cast<int>(grid.samples.size()));
+  RecordProperty("touchdown_s", fmt::format("{:.6f}", t_switch));
+  EXPECT_EQ(grid.samples.size(), static_cast<size_t>(std::floor(dense.endTime() * 1000)) + 1);
+  for (size_t i = 0; i < grid.samples.size(); ++i) {
+    EXPECT_EQ(grid.samples[i].t, static_cast<double>(i) / 1000) << i;
+    EXPECT_EQ(grid.samples[i].phase,
+              grid.samples[i].t < t_switch ? gaits::Phase::kSsp : gaits::Phase::kDsp);
+  }
+  ASSERT_EQ(grid.switches.size(), 1u);
+  EXPECT_EQ(grid.switches[0].before.t, t_switch);
+  const gaits::Trajectory joined =
+      gaits::joinGrid(dense.robot(), dense.stepLength(), grid.samples, grid.switches, grid.end);
+  ASSERT_EQ(joined.knots().size(), dense.knots().size());
+  for (size_t k = 0; k < dense.knots().size(); ++k) {
+    EXPECT_EQ(joined.knots()[k].t, dense.knots()[k].t) << k;
+    EXPECT_EQ(joined.knots()[k].theta, dense.knots()[k].theta) << k;
+    EXPECT_EQ(joined.knots()[k].tau, dense.knots()[k].tau) << k;
+  }
+  EXPECT_EQ(gaits::maxRateMismatch(joined), gaits::maxRateMismatch(dense));
 }
 
 TEST_F(FiveLinkSolution, SegmentwiseResimulationThroughTheHybridModelReproducesTheOptimum) {

@@ -37,6 +37,23 @@ def test_poly_gait_boundary_conditions(robot, poly_gait):
         robot.inverse_dynamics(theta[k], g.dtheta[k], g.ddtheta[k]), g.tau[k], atol=1e-6)
 
 
+def test_written_folder_is_on_one_grid_and_reads_back(robot, poly_gait, tmp_path):
+    # DSP time 0.6 s and end 0.7 s are off the 128 Hz grid: trajectory.csv holds t_i = i / 128,
+    # summary.json the touchdown's two states and the end's, and reading gives the step back.
+    step = poly_gait.resample(128)
+    assert gaitopt.write_trajectory(step, robot, str(tmp_path), rate_hz=128) == 90
+    t = np.loadtxt(tmp_path / "trajectory.csv", delimiter=",", skiprows=1, usecols=0)
+    np.testing.assert_allclose(t, np.arange(90) / 128, rtol=0, atol=1e-12)
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    [switch] = summary["phase_switches"]
+    assert switch["t"] == pytest.approx(0.6) and summary["step_end"]["t"] == step.duration
+    back = gaitopt.read_trajectory(str(tmp_path / "trajectory.csv"), robot)
+    np.testing.assert_array_equal(back.t, step.t)
+    np.testing.assert_array_equal(back.theta, step.theta)
+    np.testing.assert_array_equal(back.dtheta, step.dtheta)
+    assert back.phase == step.phase
+
+
 def test_optimize_cost_equals_the_cli(cli, tmp_path):
     py = gaitopt.optimize(RABBIT_OCP)
     assert py["status"] == "Solve_Succeeded" and py["max_violation"] < 1e-6
