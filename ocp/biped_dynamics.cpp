@@ -13,15 +13,19 @@ dynamics::DynamicsPoint unpack(const Eigen::VectorXd& v, const PointLayout& l) {
 
 }  // namespace
 
-BipedDynamics::BipedDynamics(const dynamics::Model& model, const PointLayout& point)
-    : model_(&model), point_(point) {}
+BipedDynamics::BipedDynamics(const dynamics::Model& model, const PointLayout& point,
+                             bool tip_acceleration_rows)
+    : model_(&model),
+      point_(point),
+      rows_(tip_acceleration_rows ? dynamics::residualRows(model, point.hasContactForce())
+                                  : model.nLinks()) {}
 
 int BipedDynamics::rows() const {
-  return dynamics::residualRows(*model_, point_.hasContactForce());
+  return rows_;
 }
 
 void BipedDynamics::evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const {
-  f = dynamics::residual(*model_, unpack(v, point_), point_.hasContactForce());
+  f = dynamics::residual(*model_, unpack(v, point_), point_.hasContactForce()).head(rows_);
 }
 
 void BipedDynamics::jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const {
@@ -29,13 +33,17 @@ void BipedDynamics::jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixX
   const Eigen::MatrixXd rj =
       dynamics::residualJacobian(*model_, unpack(v, point_), point_.hasContactForce());
   jac.setZero();
-  jac.leftCols(rj.cols()) = rj;
+  jac.leftCols(rj.cols()) = rj.topRows(rows_);
 }
 
 void BipedDynamics::hessian(const Eigen::VectorXd& v, const Eigen::VectorXd& weights,
                             Eigen::Ref<Eigen::MatrixXd> hess) const {
+  // Rows left out weigh nothing.
+  Eigen::VectorXd all =
+      Eigen::VectorXd::Zero(dynamics::residualRows(*model_, point_.hasContactForce()));
+  all.head(rows_) = weights;
   const Eigen::MatrixXd rh =
-      dynamics::residualHessian(*model_, unpack(v, point_), point_.hasContactForce(), weights);
+      dynamics::residualHessian(*model_, unpack(v, point_), point_.hasContactForce(), all);
   hess.setZero();
   hess.topLeftCorner(rh.rows(), rh.cols()) = rh;
 }

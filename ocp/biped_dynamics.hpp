@@ -5,6 +5,8 @@
 /// torques in q-space, lambda the ground force at E (DSP only). Rows:
 ///   SSP: D ddtheta + H dtheta + G - M^T tau = 0           (Mu 2.7, 2.43)
 ///   DSP: ... - J^T lambda = 0 and J ddtheta + Jdot dtheta = 0   (Mu 2.11, 2.9)
+/// The DSP's second rows (E's acceleration) are left out where the tip is pinned at position
+/// level instead (dsp_pin.hpp).
 /// Derivatives are the analytic ones of dynamics/residual_derivatives.hpp.
 #include "dynamics/model.hpp"
 #include "ocp/point_function.hpp"
@@ -15,7 +17,9 @@ namespace gaitopt::ocp {
 class BipedDynamics : public PointFunction {
  public:
   /// The point carries lambda (and the DSP rows apply) when `point` has a contact force.
-  BipedDynamics(const dynamics::Model& model, const PointLayout& point);
+  /// @param tip_acceleration_rows  DSP only: include J ddtheta + Jdot dtheta = 0
+  BipedDynamics(const dynamics::Model& model, const PointLayout& point,
+                bool tip_acceleration_rows = true);
   int rows() const override;
   void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override;
   void jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const override;
@@ -25,6 +29,7 @@ class BipedDynamics : public PointFunction {
  private:
   const dynamics::Model* model_;
   PointLayout point_;
+  int rows_;
 };
 
 }  // namespace gaitopt::ocp

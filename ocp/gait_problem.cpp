@@ -12,6 +12,7 @@
 #include "ocp/autodiff_constraint.hpp"
 #include "ocp/biped_dynamics.hpp"
 #include "ocp/collocation_interpolation.hpp"
+#include "ocp/dsp_pin.hpp"
 #include "ocp/gait_links.hpp"
 #include "ocp/ground_contact.hpp"
 #include "ocp/path_functions.hpp"
@@ -93,6 +94,9 @@ Phase addPhase(GaitProblem& p, const dynamics::Model& model, const OcpConfig& c,
   const int n = model.nLinks();
   Phase phase;
   phase.kind = kind;
+  // The trapezoid has one free tip force per segment, not the two the position pin needs.
+  phase.position_pinned =
+      phase.doubleSupport() && c.dsp_position_pin && c.scheme == Scheme::kHermiteSimpson;
   phase.point = PointLayout::biped(n, phase.doubleSupport(), c.cost.needsWorkSlacks());
   phase.layout = PhaseLayout{.scheme = c.scheme,
                              .segments = config.segments,
@@ -147,7 +151,9 @@ void addPhaseConstraints(GaitProblem& p, const dynamics::Model& model, const Ocp
                          const Phase& phase) {
   p.nlp.addConstraint(
       std::make_unique<CollocationDefects>(phase.name() + "_defects", phase.name(), phase.layout));
-  addPathConstraint(p, phase, "dynamics", std::make_shared<BipedDynamics>(model, phase.point));
+  addPathConstraint(p, phase, "dynamics",
+                    std::make_shared<BipedDynamics>(model, phase.point, !phase.position_pinned));
+  if (phase.position_pinned) addDspPin(p.nlp, model, phase, p.step_length);
   if (c.joint_velocity_limits)
     addPathConstraint(p, phase, "joint_rates",
                       std::make_shared<JointRateLimits>(model, phase.point));

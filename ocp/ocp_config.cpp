@@ -66,7 +66,7 @@ ClearanceProfile readClearance(const YamlReader& r) {
 void readConstraints(const YamlReader& r, OcpConfig& c) {
   r.allowOnly({"torque_limits", "knee_limits", "angle_range", "rate_limit", "joint_velocity_limits",
                "swing_descends", "trailing_lifts", "ground_contact", "impact_friction", "zmp",
-               "clearance", "friction_margin", "zmp_margin"});
+               "clearance", "friction_margin", "zmp_margin", "dsp_position_pin"});
   c.ground_contact = r.booleanOr("ground_contact", true);
   c.impact_friction = r.booleanOr("impact_friction", true);
   c.zmp = r.booleanOr("zmp", true);
@@ -81,6 +81,7 @@ void readConstraints(const YamlReader& r, OcpConfig& c) {
   c.joint_velocity_limits = r.booleanOr("joint_velocity_limits", false);
   c.swing_descends = r.booleanOr("swing_descends", true);
   c.trailing_lifts = r.booleanOr("trailing_lifts", true);
+  c.dsp_position_pin = r.booleanOr("dsp_position_pin", false);
 }
 
 /// The margin must leave a foot: under half its length (heel + toe), read from the robot file.

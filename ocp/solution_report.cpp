@@ -202,10 +202,12 @@ nlohmann::ordered_json solutionSummary(const GaitResultOptions& o, const dynamic
   // The constraints hold at the collocation points; the dense export shows how far they are
   // missed between them.
   summary["between_nodes"] = betweenNodeMetrics(dense, model, o.rate_hz);
-  summary["nlp"] = {{"variables", problem.nlp.variables()},
-                    {"constraints", problem.nlp.constraints()},
-                    {"segments", solution.history.back().segments},
-                    {"scheme", toString(problem.ssp.layout.scheme)}};
+  summary["nlp"] = {
+      {"variables", problem.nlp.variables()},
+      {"constraints", problem.nlp.constraints()},
+      {"segments", solution.history.back().segments},
+      {"scheme", toString(problem.ssp.layout.scheme)},
+      {"dsp_pin", problem.dsp && problem.dsp->position_pinned ? "position" : "acceleration"}};
   summary["mesh_history"] = meshHistory(solution.history);
   summary["solver"] = solverSettings(config);
   return summary;

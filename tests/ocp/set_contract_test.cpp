@@ -60,6 +60,10 @@ const std::map<std::string, std::unique_ptr<Shipped>>& shippedProblems() {
     OcpConfig zmp_margin = loadOcpConfig((dir / "mu2004_walk.yaml").string());
     zmp_margin.zmp_margin = 0.03;
     all.emplace("mu2004_walk_zmp_margin", coarseProblem(zmp_margin));
+    // The DSP tip pinned at position level (dsp_pin.hpp).
+    OcpConfig position_pin = loadOcpConfig((dir / "mu2004_walk.yaml").string());
+    position_pin.dsp_position_pin = true;
+    all.emplace("mu2004_walk_position_pin", coarseProblem(position_pin));
     return all;
   }();
   return problems;
@@ -143,6 +147,8 @@ TEST(SetContractCoverage, EverySetOfTheGaitProblemIsChecked) {
                            "ssp_clearance",
                            "ssp_work_split",
                            "dsp_defects",
+                           "dsp_pin_start",
+                           "dsp_pin_1",
                            "dsp_dynamics",
                            "dsp_knees",
                            "dsp_ground_contact",
