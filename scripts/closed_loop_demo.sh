@@ -16,7 +16,7 @@ bin="$build/apps/gaitopt"
 rules=(--cop-limit fail)
 
 echo "== gaitopt simulate: 20 steps of each five-link gait on rigid ground (Poincare map)"
-for gait in poly opt; do
+for gait in poly opt opt_robust; do
   for controller in computed_torque sliding_mode mu_sliding_mode; do
     "$bin" simulate --reference "results/${gait}_mu2004" --controller "$controller" --steps 20 \
       "${rules[@]}" --rate 50 --out "results/walk_${gait}_mu2004_${controller}" --quiet
@@ -32,7 +32,7 @@ echo "== RABBIT under HZD: Kelly's optimum, 20 steps, restricted Poincare map"
 bash scripts/hzd_rabbit.sh "$build"
 
 echo "== Poincare multipliers of the walks on the unit circle (results/poincare_multipliers.png)"
-walks=(results/walk_{poly,opt}_mu2004_{computed_torque,sliding_mode,mu_sliding_mode}
+walks=(results/walk_{poly,opt,opt_robust}_mu2004_{computed_torque,sliding_mode,mu_sliding_mode}
   results/walk_opt_mu2004_{impedance,lcp})
 [[ -f results/walk_rabbit_hzd/summary.json ]] && walks+=(results/walk_rabbit_hzd)
 /usr/bin/python3 scripts/plots/multipliers_plot.py results/poincare_multipliers.png "${walks[@]}"
@@ -40,7 +40,7 @@ walks=(results/walk_{poly,opt}_mu2004_{computed_torque,sliding_mode,mu_sliding_m
 echo "== gaitopt stability: where walking stops (20 steps per point)"
 sweeps=(--sweep push=-3:3:25 --sweep mass_error=-0.2:0.2:17 --sweep length_error=-0.05:0.05:5
   --sweep friction=0.1:0.6:11 --sweep gain_scale=0.2:3:15)
-for gait in poly opt; do
+for gait in poly opt opt_robust; do
   for controller in computed_torque sliding_mode mu_sliding_mode; do
     "$bin" stability --reference "results/${gait}_mu2004" --controller "$controller" --steps 20 \
       "${rules[@]}" "${sweeps[@]}" --quiet --out "results/stability_${gait}_mu2004_${controller}"
@@ -53,6 +53,9 @@ echo "== gaitopt stability --map: push x mass error, 25 x 17 walks of 20 steps (
 map=(--map "push=-3:3:25,mass_error=-0.2:0.2:17" --steps 20 "${rules[@]}" --quiet)
 "$bin" stability --reference results/opt_mu2004 --controller computed_torque "${map[@]}" \
   --out results/map_opt_mu2004_computed_torque
+# The gait designed to be walked (configs/ocp/mu2004_walk_robust.yaml) under Mu's sliding mode.
+"$bin" stability --reference results/opt_robust_mu2004 --controller mu_sliding_mode "${map[@]}" \
+  --out results/map_opt_robust_mu2004_mu_sliding_mode
 # Ten times finer around the nominal point, where the coarse map finds the optimum's one walk.
 "$bin" stability --reference results/opt_mu2004 --controller computed_torque --steps 20 \
   "${rules[@]}" --quiet --map "push=-0.5:0.5:21,mass_error=-0.025:0.025:21" \

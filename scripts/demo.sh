@@ -63,6 +63,9 @@ if [[ "$full" == --full ]]; then
   "$bin" optimize --config configs/ocp/compass_gait_passive.yaml --out results/opt_compass_passive \
     --quiet
 
+  echo "== gaitopt optimize: the default problem designed to be walked (strike, margins)"
+  "$bin" optimize --config configs/ocp/mu2004_walk_robust.yaml --out results/opt_robust_mu2004 \
+    --quiet
   echo "== gaitopt optimize: least cost of transport, free single/double support split"
   "$bin" optimize --config configs/ocp/mu2004_walk_cot.yaml --out results/opt_cot_mu2004 --quiet
 

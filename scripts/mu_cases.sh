@@ -17,10 +17,12 @@ mkdir -p "$out"
 "$bin" poly --robot configs/robots/mu2004_five_link.yaml --gait configs/gaits/mu2004.yaml \
   --out "$work/poly" --no-plots >/dev/null
 "$bin" optimize --config configs/ocp/mu2004_walk.yaml --out "$work/opt" --no-plots --quiet >/dev/null
+"$bin" optimize --config configs/ocp/mu2004_walk_robust.yaml --out "$work/opt_robust" --no-plots \
+  --quiet >/dev/null
 declare -A robots=([shipped]=configs/robots/mu2004_five_link.yaml
   [long_heel]=tests/apps/mu2004_five_link_long_heel.yaml)
 echo "gait,robot,controller,case,steps,max_tracking_error_rad,max_slip_m,failure" >"$out/mu_cases.csv"
-for gait in poly opt; do
+for gait in poly opt opt_robust; do
   for robot in shipped long_heel; do
     for controller in computed_torque sliding_mode mu_sliding_mode; do
       for c in 1 2 3; do
