@@ -1,5 +1,7 @@
 #include "sim/compliant_walk.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 #include <Eigen/Cholesky>
 
@@ -48,6 +50,11 @@ ImpedanceGround withPlantFriction(const dynamics::Model& plant, const CompliantG
   return g;
 }
 
+/// The depth at which the ground carries `normal_force` at rest, k delta^n = F [m].
+double staticDepth(const ImpedanceGround& g, double normal_force) {
+  return normal_force > 0 ? std::pow(normal_force / g.stiffness, 1 / g.exponent) : 0.0;
+}
+
 }  // namespace
 
 ContactStep compliantContactStep(const dynamics::Model& plant, const CompliantGround& ground,
@@ -91,7 +98,8 @@ WalkResult walkCompliant(const dynamics::Model& plant, const Controller& control
   const FreeBaseGround free_base{"compliant", ground.time_step,
                                  [&](const FreeBaseState& s, const TorqueFeedback& torque) {
                                    return compliantContactStep(plant, ground, s, torque);
-                                 }};
+                                 },
+                                 staticDepth(ground.contact, ref.start().force_stance(1))};
   return walkFreeBase(plant, controller, ref, free_base, plan, log, theta0, dtheta0);
 }
 

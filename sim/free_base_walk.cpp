@@ -269,8 +269,9 @@ WalkResult walkFreeBase(const dynamics::Model& plant, const Controller& controll
     throw std::invalid_argument(fmt::format("{} ground: time step must be positive, got {}",
                                             ground.name, ground.time_step));
   const Walker walker{plant, controller, ref, ground, plan.rules, log};
-  FreeBaseState s = freeBaseStart(plant, theta0.size() ? theta0 : VecD(ref.start().theta),
-                                  dtheta0.size() ? dtheta0 : VecD(ref.start().dtheta));
+  FreeBaseState s =
+      freeBaseStart(plant, theta0.size() ? theta0 : VecD(ref.start().theta),
+                    dtheta0.size() ? dtheta0 : VecD(ref.start().dtheta), 0, -ground.start_depth);
   WalkResult w;
   double t = 0;
   for (int k = 0; k < plan.steps; ++k) {

@@ -64,6 +64,10 @@ struct FreeBaseGround {
   std::string name;  ///< StepResult::impact: "compliant" or "lcp"
   double time_step;  ///< h > 0 [s]
   ContactLaw step;
+  /// The stance tip starts this far into the ground [m]: a compliant ground carries the
+  /// reference's first stance force only when pressed in (at zero depth the tip carried 0.015 N
+  /// and the first ankle torque already put the centre of pressure off the foot).
+  double start_depth = 0;
 };
 
 /// A stance tip without normal force for this long has left the ground [s].

@@ -113,6 +113,21 @@ TEST(GroundWalk, PolynomialGaitWalksTenStepsOnEveryGroundAsOnRigidGround) {
 #endif
 }
 
+TEST(GroundWalk, ACompliantWalkStartsWithTheStanceTipCarryingItsLoad) {
+  // Pressed in to the static depth k delta^n = F of the reference's first stance force, the
+  // ground carries that force from the first sample (at zero depth it carried next to nothing,
+  // and any ankle torque put the centre of pressure off the foot at once).
+  const Reference ref(test::polynomialGait());
+  const double planned = ref.start().force_stance(1);
+  ASSERT_GT(planned, 100.0);
+  std::vector<double> normal;
+  const auto log = [&](const WalkSample& s) { normal.push_back(s.force_stance(1)); };
+  walk(test::longHeelRobot(), test::computedTorque(), ref, shippedGround("impedance"), {1, {}},
+       log);
+  ASSERT_GE(normal.size(), 2U);
+  EXPECT_NEAR(normal.front(), planned, 0.05 * planned);
+}
+
 TEST(GroundWalk, TooLongRk4StepOnAStiffGroundIsReportedAsDiverged) {
   auto ground = std::get<CompliantGround>(shippedGround("impedance"));
   ground.contact.stiffness *= 100;  // 1e9 N/m^1.5, the same restitution (damping ratio c / k)
