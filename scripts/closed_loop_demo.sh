@@ -28,6 +28,14 @@ for ground in impedance lcp; do
     --rate 50 --out "results/walk_opt_mu2004_${ground}" --quiet
 done
 
+for ground in impedance lcp; do
+  for controller in computed_torque mu_sliding_mode; do
+    "$bin" simulate --reference results/opt_robust_mu2004 --ground "$ground" --controller \
+      "$controller" --steps 20 "${rules[@]}" --rate 50 --quiet \
+      --out "results/walk_opt_robust_mu2004_${ground}_${controller}"
+  done
+done
+
 echo "== RABBIT under HZD: Kelly's optimum, 20 steps, restricted Poincare map"
 bash scripts/hzd_rabbit.sh "$build"
 
@@ -48,6 +56,13 @@ for gait in poly opt opt_robust; do
 done
 "$bin" stability --reference results/opt_mu2004 --ground impedance --steps 20 "${rules[@]}" --quiet \
   --sweep stiffness=1e4:1e9:11 --sweep push=-3:12:16 --out results/stability_opt_mu2004_impedance
+
+# The gait designed to be walked under the other CoP rule: the controller clips the ankle torque
+# where the centre of pressure reaches the heel or the toe (--cop-limit saturate), as a
+# controller that knows its foot does, instead of counting that as a foot rotation.
+"$bin" stability --reference results/opt_robust_mu2004 --controller mu_sliding_mode --steps 20 \
+  --cop-limit saturate --quiet --sweep push=-6:6:49 --sweep mass_error=-0.4:0.4:33 \
+  --sweep length_error=-0.1:0.1:9 --out results/stability_opt_robust_mu2004_mu_sliding_mode_saturate
 
 echo "== gaitopt stability --map: push x mass error, 25 x 17 walks of 20 steps (results/map_*)"
 map=(--map "push=-3:3:25,mass_error=-0.2:0.2:17" --steps 20 "${rules[@]}" --quiet)
