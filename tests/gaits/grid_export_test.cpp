@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "gaits/grid_export.hpp"
+#include "support/same_knots.hpp"
 
 namespace gaitopt::test {
 namespace {
@@ -43,22 +44,6 @@ Trajectory stepWithSwitch(double h, double t_switch, double t_end) {
     if (grid(k) > t_switch + 1e-9) add(grid(k), Phase::kDsp);
   add(t_end, Phase::kDsp);
   return Trajectory("synthetic", 0.35, knots);
-}
-
-void expectSameKnot(const Knot& x, const Knot& y, size_t k) {
-  EXPECT_EQ(x.t, y.t) << "knot " << k;
-  EXPECT_EQ(x.phase, y.phase) << "knot " << k;
-  EXPECT_EQ(x.theta, y.theta) << "knot " << k;
-  EXPECT_EQ(x.dtheta, y.dtheta) << "knot " << k;
-  EXPECT_EQ(x.ddtheta, y.ddtheta) << "knot " << k;
-  EXPECT_EQ(x.tau, y.tau) << "knot " << k;
-  EXPECT_EQ(x.force_stance, y.force_stance) << "knot " << k;
-  EXPECT_EQ(x.force_swing, y.force_swing) << "knot " << k;
-}
-
-void expectSameKnots(const Trajectory& a, const Trajectory& b) {
-  ASSERT_EQ(a.knots().size(), b.knots().size());
-  for (size_t k = 0; k < a.knots().size(); ++k) expectSameKnot(a.knots()[k], b.knots()[k], k);
 }
 
 TEST(GridExport, SamplesLieOnOneGridWithTimeStrictlyIncreasing) {

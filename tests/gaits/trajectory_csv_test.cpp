@@ -21,6 +21,7 @@
 #include "gaits/trajectory_csv.hpp"
 #include "gaits/trajectory_json.hpp"
 #include "support/fixtures.hpp"
+#include "support/same_knots.hpp"
 
 namespace gaitopt::test {
 namespace {
@@ -80,22 +81,6 @@ Trajectory syntheticStep(const dynamics::Model& model) {
   // The reader takes the step length from the last swing_x, so the writer's must agree.
   const double step_length = dynamics::swingTip(model, VecD(knots.back().theta))(0);
   return Trajectory(model.name(), step_length, knots);
-}
-
-void expectSameKnots(const Trajectory& a, const Trajectory& b) {
-  ASSERT_EQ(a.knots().size(), b.knots().size());
-  for (size_t k = 0; k < a.knots().size(); ++k) {
-    const Knot& x = a.knots()[k];
-    const Knot& y = b.knots()[k];
-    EXPECT_EQ(x.t, y.t) << "knot " << k;
-    EXPECT_EQ(x.phase, y.phase) << "knot " << k;
-    EXPECT_EQ(x.theta, y.theta) << "knot " << k;
-    EXPECT_EQ(x.dtheta, y.dtheta) << "knot " << k;
-    EXPECT_EQ(x.ddtheta, y.ddtheta) << "knot " << k;
-    EXPECT_EQ(x.tau, y.tau) << "knot " << k;
-    EXPECT_EQ(x.force_stance, y.force_stance) << "knot " << k;
-    EXPECT_EQ(x.force_swing, y.force_swing) << "knot " << k;
-  }
 }
 
 class TrajectoryCsv : public ::testing::Test {

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "gaits/trajectory.hpp"
+#include "support/same_knots.hpp"
 
 namespace gaitopt::test {
 namespace {
@@ -110,17 +111,6 @@ Trajectory stepWithSwitch(double t_switch = 0.6, double t_end = 0.7) {
   add(t_switch, Phase::kDsp, 0.4);  // rates, torques and forces jump at touchdown
   add(t_end, Phase::kDsp, 0.5);
   return Trajectory("test", 0.3, knots);
-}
-
-void expectSameKnot(const Knot& a, const Knot& b) {
-  EXPECT_EQ(a.t, b.t);
-  EXPECT_EQ(a.phase, b.phase);
-  EXPECT_EQ(a.theta, b.theta);
-  EXPECT_EQ(a.dtheta, b.dtheta);
-  EXPECT_EQ(a.ddtheta, b.ddtheta);
-  EXPECT_EQ(a.tau, b.tau);
-  EXPECT_EQ(a.force_stance, b.force_stance);
-  EXPECT_EQ(a.force_swing, b.force_swing);
 }
 
 /// Expects the constructor to throw std::invalid_argument with `text` in its message.
