@@ -6,6 +6,7 @@
 /// corrected). Each takes the stacked variables it names, in the order documented.
 #include <numbers>
 
+#include "dynamics/dsp_dynamics.hpp"
 #include "dynamics/floating_base.hpp"
 #include "dynamics/kinematics.hpp"
 #include "ocp/point_layout.hpp"
@@ -18,10 +19,7 @@ struct TipAtTouchdown {
   double step_length;
   template <class S>
   dynamics::VecX<S> operator()(const dynamics::VecX<S>& y) const {
-    const Vec2<S> tip = dynamics::swingTip<S>(*model, y);
-    dynamics::VecX<S> g(2);
-    g << tip(0) - step_length, tip(1);
-    return g;
+    return dynamics::dspConstraint<S>(*model, y, step_length);  // the DSP's pin, Mu (2.9)
   }
 };
 
