@@ -4,7 +4,8 @@
 /// one step, SSP then optionally DSP, read on the step clock (0 at every SSP start). Three
 /// choices make it survive timing errors (issue 14 item 1; DESIGN.md sec. 7 item 4):
 ///  - Past the planned touchdown the SSP reference does not freeze: it goes on at the touchdown
-///    rates, with the swing tip's downward speed raised to at least `strike_velocity`. A gait
+///    rates, its touchdown accelerations faded out over 20 ms (reference.cpp says why), with the
+///    swing tip's downward speed raised to at least `strike_velocity`. A gait
 ///    designed to land at rest (Mu ch. 3: touchdown time goes as the square root of a height
 ///    error) would otherwise hover a lagging robot at its final posture while the feed-forward
 ///    still has rates. The extra swing-leg rate Delta is phased in over the `strike_window`
