@@ -11,17 +11,26 @@ SAN_BUILD ?= build-sanitize
 # -O0 made the sanitizer suite several times slower than the Release one for no extra findings.
 # The Python module is left out there: its test runs in the Release build only.
 SAN_OPT ?= -g -O1
-CMAKE_GEN := $(shell command -v ninja >/dev/null 2>&1 && echo "-G Ninja")
+# Looked up when a recipe runs (=, not :=): on a fresh machine ninja arrives with the deps.
+CMAKE_GEN = $(shell command -v ninja >/dev/null 2>&1 && echo "-G Ninja")
 
 .PHONY: deps configure build test test-release test-sanitize valgrind demo demo-full bench format clean
 
-deps:
-	@bash scripts/install-deps.sh
+# Each target names every option, so one build folder serves them all in any order.
+# The demo builds the CLI alone and needs none of the test, benchmark, binding or MPI packages;
+# the tests do not need the benchmarks (CI time); build, bench and demo-full have everything.
+DEMO_FLAGS := -DGAITOPT_BUILD_TESTS=OFF -DGAITOPT_BUILD_BENCH=OFF -DGAITOPT_PYTHON=OFF \
+  -DGAITOPT_MPI=OFF
+TEST_FLAGS := -DGAITOPT_BUILD_TESTS=ON -DGAITOPT_BUILD_BENCH=OFF -DGAITOPT_PYTHON=ON -DGAITOPT_MPI=ON
+FULL_FLAGS := -DGAITOPT_BUILD_TESTS=ON -DGAITOPT_BUILD_BENCH=ON -DGAITOPT_PYTHON=ON -DGAITOPT_MPI=ON
+CONFIGURE_FLAGS = $(FULL_FLAGS)
+DEPS_FLAGS =
+demo: CONFIGURE_FLAGS = $(DEMO_FLAGS)
+demo: DEPS_FLAGS = --demo
+test-release: CONFIGURE_FLAGS = $(TEST_FLAGS)
 
-# The tests do not need the benchmarks: `make test` leaves them out of the build (CI time),
-# `make bench` puts them back; demo and build keep whatever the build folder has.
-test-release: CONFIGURE_FLAGS = -DGAITOPT_BUILD_BENCH=OFF
-bench: CONFIGURE_FLAGS = -DGAITOPT_BUILD_BENCH=ON
+deps:
+	@bash scripts/install-deps.sh $(DEPS_FLAGS)
 
 configure: deps
 	@cmake -S . -B $(BUILD) $(CMAKE_GEN) -DCMAKE_BUILD_TYPE=Release $(CONFIGURE_FLAGS) >/dev/null

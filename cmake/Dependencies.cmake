@@ -7,7 +7,11 @@ find_package(yaml-cpp REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(nlohmann_json 3.11 REQUIRED)
 find_package(fmt REQUIRED)
-find_package(Boost 1.74 REQUIRED)
+if(GAITOPT_BUILD_TESTS OR GAITOPT_BUILD_BENCH)
+  # Odeint, for the independent re-simulations of ocp/chain_simulation.hpp: only the tests and
+  # benchmarks include it, so the CLI (make demo) builds without Boost.
+  find_package(Boost 1.74 REQUIRED)
+endif()
 if(GAITOPT_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()

@@ -28,6 +28,8 @@
 ///
 /// A step: SSP (B pinned) -> impact at E -> DSP (B and E pinned, E = B + (step_length, 0)) ->
 /// relabel (2.38, corrected) -> next step.
+#include <limits>
+
 #include <Eigen/Core>
 
 #include "config/units.hpp"  // kDeg: one degree in radians (pi is std::numbers::pi)
@@ -36,6 +38,9 @@ namespace gaitopt {
 
 /// Largest chain the fixed-capacity matrices hold (five-link robots use 5).
 inline constexpr int kMaxLinks = 7;
+
+/// The start of a running minimum (a least margin before any sample lowers it).
+inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 template <class S>
 using Vec = Eigen::Matrix<S, Eigen::Dynamic, 1, 0, kMaxLinks, 1>;

@@ -9,10 +9,6 @@
 namespace gaitopt::dynamics {
 namespace {
 
-double a(const Link& link) {
-  return link.continues ? 1.0 : 0.0;
-}
-
 /// Sum of the masses of links first..last (inclusive, 0-based; empty when last < first).
 double massRange(const Model& model, int first, int last) {
   double m = 0;
@@ -36,11 +32,11 @@ MatD impactW(const Model& model, const VecD& theta) {
   MatD w = MatD::Zero(n, n);
   for (int i = 0; i < n; ++i) {
     const Link& li = model.link(i);
-    const double ai = a(li);
+    const double ai = li.a();
     w(i, i) = li.inertia - li.mass * li.com * (ai * li.length - li.com);
     for (int j = 0; j < i; ++j) {
       const Link& lj = model.link(j);
-      const double aj = a(lj);
+      const double aj = lj.a();
       w(i, j) = -(ai * lj.mass * lj.com * li.length +
                   aj * li.mass * (ai * li.length - li.com) * lj.length +
                   ai * aj * massRange(model, j + 1, i - 1) * li.length * lj.length) *
@@ -57,7 +53,7 @@ Eigen::Matrix<double, Eigen::Dynamic, 2, 0, kMaxLinks, 2> impactU(const Model& m
   for (int i = 0; i < n; ++i) {
     const Link& li = model.link(i);
     const double c =
-        -li.mass * (a(li) * li.length - li.com) - massRange(model, 0, i - 1) * a(li) * li.length;
+        -li.mass * (li.a() * li.length - li.com) - massRange(model, 0, i - 1) * li.a() * li.length;
     u(i, 0) = c * std::cos(theta(i));
     u(i, 1) = -c * std::sin(theta(i));
   }

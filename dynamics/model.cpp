@@ -10,10 +10,6 @@
 namespace gaitopt::dynamics {
 namespace {
 
-double a(const Link& link) {
-  return link.continues ? 1.0 : 0.0;
-}
-
 /// Mass of the links after index i in chain order (sum_{k>i} m_k of eq. 2.8).
 double massBeyond(const std::vector<Link>& links, int i) {
   double m = 0;
@@ -87,12 +83,12 @@ void Model::precompute() {
   for (int i = 0; i < n; ++i) {
     const Link& li = links_[static_cast<size_t>(i)];
     p_(i, i) = li.inertia + li.mass * li.com * li.com +
-               a(li) * massBeyond(links_, i) * li.length * li.length;
-    g_(i) = (li.mass * li.com + a(li) * massBeyond(links_, i) * li.length) * gravity_;
+               li.a() * massBeyond(links_, i) * li.length * li.length;
+    g_(i) = (li.mass * li.com + li.a() * massBeyond(links_, i) * li.length) * gravity_;
     for (int j = i + 1; j < n; ++j) {
       const Link& lj = links_[static_cast<size_t>(j)];
-      p_(i, j) = a(li) * lj.mass * lj.com * li.length +
-                 a(li) * a(lj) * massBeyond(links_, j) * li.length * lj.length;
+      p_(i, j) = li.a() * lj.mass * lj.com * li.length +
+                 li.a() * lj.a() * massBeyond(links_, j) * li.length * lj.length;
       p_(j, i) = p_(i, j);
     }
   }
@@ -104,7 +100,7 @@ void Model::precompute() {
   joint_.assign(static_cast<size_t>(n), ChainPoint::Zero(n));
   for (int i = 0; i < n; ++i) {
     const Link& li = links_[static_cast<size_t>(i)];
-    tip_(i) = a(li) * li.length;
+    tip_(i) = li.a() * li.length;
     if (i < leg_links_) hip_(i) = li.length;
     for (int j = 0; j < i; ++j) joint_[static_cast<size_t>(i)](j) = tip_(j);
     com_[static_cast<size_t>(i)] = joint_[static_cast<size_t>(i)];

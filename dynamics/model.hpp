@@ -27,6 +27,9 @@ struct Link {
   double length = 0;      ///< l_i [m]
   double com = 0;         ///< d_i: CoM distance from the proximal joint along the link [m]
   bool continues = true;  ///< a_i: does the chain continue through the distal end?
+
+  /// a_i of Mu (2.8) as the number the sums multiply by.
+  double a() const { return continues ? 1.0 : 0.0; }
 };
 
 /// One joint of q-space (q0 = stance ankle, then one per consecutive link pair).

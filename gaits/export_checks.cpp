@@ -9,8 +9,6 @@
 namespace gaitopt::gaits {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
 /// d f / dt at the middle of three samples (t0 < t1 < t2), exact for quadratics.
 Eigen::VectorXd threePointDerivative(const Knot& a, const Knot& b, const Knot& c) {
   const double h1 = b.t - a.t, h2 = c.t - b.t;

@@ -8,10 +8,6 @@
 namespace gaitopt::gaits {
 namespace {
 
-/// A sample this close to a switch or to the end is that instant: the stored knot stands for it
-/// (the same tolerance as Trajectory::resample) [s].
-constexpr double kTimeTolerance = 1e-9;
-
 std::vector<PhaseSwitch> switchesOf(const std::vector<Knot>& knots) {
   std::vector<PhaseSwitch> out;
   for (size_t k = 0; k + 1 < knots.size(); ++k)

@@ -16,8 +16,6 @@
 namespace gaitopt::gaits {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
 /// Trapezoidal rule over consecutive knots. A switch pair has zero width, so it adds nothing and
 /// the integrand may jump there (DESIGN.md sec. 5: integrals per phase).
 template <class F>

@@ -11,10 +11,6 @@
 namespace gaitopt::gaits {
 namespace {
 
-/// Grid points this close to the end of the step or to a phase switch are taken to be on it, so
-/// a rate that divides the duration up to rounding gives no sliver sample [s].
-constexpr double kTimeTolerance = 1e-9;
-
 // ---------------------------------------------------------------------------------------------
 // Validation (constructor)
 

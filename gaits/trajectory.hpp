@@ -18,6 +18,11 @@
 
 namespace gaitopt::gaits {
 
+/// Grid points this close to the end of the step or to a phase switch are on it (a rate that
+/// divides the duration up to rounding gives no sliver sample; the exported switch sample stands
+/// for the instant) [s].
+inline constexpr double kTimeTolerance = 1e-9;
+
 enum class Phase { kSsp, kDsp };
 const char* toString(Phase phase);
 /// @throws std::invalid_argument for anything but "SSP" or "DSP".

@@ -1,18 +1,23 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages gaitopt needs, only those that are missing.
 # Idempotent: a machine that has everything runs no apt-get at all.
-# Usage: scripts/install-deps.sh [--fuzz]
+# Usage: scripts/install-deps.sh [--demo | --fuzz]
+#   --demo  only what make demo builds and runs (the CLI and its pictures): a fresh machine shows
+#           a result minutes sooner without the test, benchmark, browser and MPI packages.
 #   --fuzz  also clang and libFuzzer (libclang-rt-14-dev), for scripts/fuzz.sh only: make demo
 #           and make test build with GCC and never need them.
 set -euo pipefail
 
+# What `make demo` needs: the compiler, the libraries of the CLI, and matplotlib for its pictures.
 packages=(
   build-essential cmake pkg-config ninja-build
   coinor-libipopt-dev libeigen3-dev libnlopt-cxx-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libfmt-dev
-  libboost-dev
   python3 python3-matplotlib python3-numpy python3-pil
+)
+# What the tests, benchmarks, bindings, report test and MPI libraries add (make test, make build).
+full_packages=(
+  libgtest-dev libgmock-dev libbenchmark-dev libboost-dev
   python3-dev pybind11-dev python3-pytest
   chromium
   valgrind
@@ -21,9 +26,10 @@ packages=(
 fuzz_packages=(clang libclang-rt-14-dev)
 
 case "${1:-}" in
-  "") ;;
-  --fuzz) packages+=("${fuzz_packages[@]}") ;;
-  *) echo "usage: $0 [--fuzz]" >&2; exit 2 ;;
+  "") packages+=("${full_packages[@]}") ;;
+  --demo) ;;
+  --fuzz) packages+=("${full_packages[@]}" "${fuzz_packages[@]}") ;;
+  *) echo "usage: $0 [--demo | --fuzz]" >&2; exit 2 ;;
 esac
 
 missing=()
