@@ -22,6 +22,8 @@ for gait in poly opt opt_robust; do
       "${rules[@]}" --rate 50 --out "results/walk_${gait}_mu2004_${controller}" --quiet
   done
 done
+# The README's front-page animation is this walk's walk.gif: a re-walk clears the folder.
+"$bin" report results/walk_opt_mu2004_computed_torque
 echo "== gaitopt simulate: the optimal gait on the impedance and LCP grounds"
 for ground in impedance lcp; do
   "$bin" simulate --reference results/opt_mu2004 --ground "$ground" --steps 20 "${rules[@]}" \

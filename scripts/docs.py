@@ -5,7 +5,9 @@ number they show is read from the file in results/ that made it.
     scripts/docs.py render [--root DIR]   write README.md and docs/*.md from docs/src/*.md
     scripts/docs.py check  [--root DIR]   exit 1, naming the first difference, when a rendered
                                           page differs from the committed one (a number changed
-                                          by hand, or a result regenerated without rendering)
+                                          by hand, or a result regenerated without rendering),
+                                          or when a page links a file that is not there (a
+                                          picture a regeneration deleted)
 
 In a template, `{{ EXPR }}` or `{{ EXPR | SPEC }}` is replaced by the value of the Python
 expression EXPR formatted with the format spec SPEC (e.g. `.3g`). EXPR may call:
@@ -23,6 +25,8 @@ import sys
 from pathlib import Path
 
 PLACEHOLDER = re.compile(r"\{\{(.+?)\}\}", re.S)
+# The target of a markdown link or image: ](path) or ](path#anchor).
+LINK = re.compile(r"\]\(([^)#\s]+)")
 
 
 class Sources:
@@ -88,6 +92,12 @@ def pages(root):
         yield template, target
 
 
+def missing_links(text, page):
+    """Local link and image targets of a page that do not exist, relative to the page."""
+    return [t for t in LINK.findall(text)
+            if not re.match(r"[a-z]+:", t) and not (page.parent / t).exists()]
+
+
 def first_difference(a, b):
     for i, (x, y) in enumerate(zip(a.splitlines(), b.splitlines()), 1):
         if x != y:
@@ -114,9 +124,12 @@ def main():
             print(f"docs: {name}:{line} differs from its template and results/:\n"
                   f"  committed: {have}\n  rendered:  {want}", file=sys.stderr)
             stale += 1
+        for link in missing_links(rendered, target):
+            print(f"docs: {name} links {link}, which is not there", file=sys.stderr)
+            stale += 1
     if args.mode == "check":
-        print(f"docs: {stale} of {len(list(pages(args.root)))} pages differ"
-              if stale else "docs: every page matches its template and results/")
+        print(f"docs: {stale} differences or missing links"
+              if stale else "docs: every page matches its template and results/, and its links")
     return 1 if stale else 0
 
 

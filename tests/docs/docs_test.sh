@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The README and docs/ pages against results/: they match (scripts/docs.py check), and a number
-# changed by hand in the README, or a result regenerated without rendering, makes the check fail.
+# changed by hand in the README, a result regenerated without rendering, or a linked picture
+# that a regeneration deleted makes the check fail.
 # Usage: docs_test.sh SOURCE_DIR
 set -euo pipefail
 src="$1"
@@ -31,4 +32,14 @@ PY
 if $docs check --root "$tmp" 2>/dev/null; then
   echo "FAIL: a changed result passed the check"; exit 1
 fi
-echo "docs: check passes on the tree and fails on a hand edit and on a stale result"
+
+# A picture the README shows, deleted (a regeneration once dropped the front page's walk.gif).
+cp "$src/results/opt_mu2004/summary.json" "$tmp/results/opt_mu2004/summary.json"
+$docs check --root "$tmp" >/dev/null
+rm "$tmp/results/opt_mu2004/overview.png"
+if $docs check --root "$tmp" 2>"$tmp/err"; then
+  echo "FAIL: a README picture that is not there passed the check"; exit 1
+fi
+grep -q "links results/opt_mu2004/overview.png, which is not there" "$tmp/err" ||
+  { cat "$tmp/err"; echo "FAIL: missing picture not named"; exit 1; }
+echo "docs: check passes on the tree and fails on a hand edit, a stale result and a missing picture"
