@@ -30,9 +30,10 @@ cp /etc/resolv.conf "$jail/etc/resolv.conf"
 mount -t proc proc "$jail/proc"
 mount --bind /dev "$jail/dev"
 git clone -q "$root" "$jail/root/gaitopt"
+commit=$(git -C "$root" rev-parse --short HEAD)  # the chroot has no git: make demo needs none
 
 echo "fresh_machine_demo: apt, build and demo in the chroot (timed)"
-chroot "$jail" /bin/bash -euo pipefail -c '
+chroot "$jail" /usr/bin/env COMMIT="$commit" /bin/bash -euo pipefail -c '
   export DEBIAN_FRONTEND=noninteractive
   cd /root/gaitopt
   t0=$(date +%s.%N)
@@ -44,7 +45,7 @@ chroot "$jail" /bin/bash -euo pipefail -c '
   t2=$(date +%s.%N)
   test -s results/walk_opt_mu2004_computed_torque/report.html
   build=$(awk "NR > 1 && \$2 > m { m = \$2 } END { print m / 1000 }" build/.ninja_log)
-  python3 - "$t0" "$t1" "$t2" "$build" "$(git rev-parse --short HEAD)" "$(nproc)" <<"PY" >/root/fresh.json
+  python3 - "$t0" "$t1" "$t2" "$build" "$COMMIT" "$(nproc)" <<"PY" >/root/fresh.json
 import json, sys, time
 t0, t1, t2, build = map(float, sys.argv[1:5])
 print(json.dumps({
