@@ -29,23 +29,23 @@ EOF
 cp /etc/resolv.conf "$jail/etc/resolv.conf"
 mount -t proc proc "$jail/proc"
 mount --bind /dev "$jail/dev"
-git clone -q "$root" "$jail/root/gaitopt"
+git clone -q "$root" "$jail/opt/gaitopt"
 commit=$(git -C "$root" rev-parse --short HEAD)  # the chroot has no git: make demo needs none
 
 echo "fresh_machine_demo: apt, build and demo in the chroot (timed)"
 chroot "$jail" /usr/bin/env COMMIT="$commit" /bin/bash -euo pipefail -c '
   export DEBIAN_FRONTEND=noninteractive
-  cd /root/gaitopt
+  cd /opt/gaitopt
   t0=$(date +%s.%N)
-  apt-get -o DPkg::Lock::Timeout=600 update -q >/root/log 2>&1
-  apt-get -o DPkg::Lock::Timeout=600 install -y -q make >>/root/log 2>&1
-  bash scripts/install-deps.sh --demo >>/root/log 2>&1
+  apt-get -o DPkg::Lock::Timeout=600 update -q >/tmp/demo.log 2>&1
+  apt-get -o DPkg::Lock::Timeout=600 install -y -q make >>/tmp/demo.log 2>&1
+  bash scripts/install-deps.sh --demo >>/tmp/demo.log 2>&1
   t1=$(date +%s.%N)
-  make demo >>/root/log 2>&1
+  make demo >>/tmp/demo.log 2>&1
   t2=$(date +%s.%N)
   test -s results/walk_opt_mu2004_computed_torque/report.html
   build=$(awk "NR > 1 && \$2 > m { m = \$2 } END { print m / 1000 }" build/.ninja_log)
-  python3 - "$t0" "$t1" "$t2" "$build" "$COMMIT" "$(nproc)" <<"PY" >/root/fresh.json
+  python3 - "$t0" "$t1" "$t2" "$build" "$COMMIT" "$(nproc)" <<"PY" >/tmp/fresh.json
 import json, sys, time
 t0, t1, t2, build = map(float, sys.argv[1:5])
 print(json.dumps({
@@ -56,6 +56,6 @@ print(json.dumps({
     "configure_and_demo_s": round(t2 - t1 - build, 1), "total_s": round(t2 - t0, 1),
     "report_page": "results/walk_opt_mu2004_computed_torque/report.html"}, indent=2))
 PY
-' || { tail -30 "$jail/root/log" >&2; exit 1; }
-cp "$jail/root/fresh.json" "$out"
+' || { tail -30 "$jail/tmp/demo.log" >&2; exit 1; }
+cp "$jail/tmp/fresh.json" "$out"
 cat "$out"
