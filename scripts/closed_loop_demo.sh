@@ -65,6 +65,11 @@ done
 "$bin" stability --reference results/opt_robust_mu2004 --controller mu_sliding_mode --steps 20 \
   --cop-limit saturate --quiet --sweep push=-6:6:49 --sweep mass_error=-0.4:0.4:33 \
   --sweep length_error=-0.1:0.1:9 --out results/stability_opt_robust_mu2004_mu_sliding_mode_saturate
+# And under the strict rule at a softer bandwidth: what stiff tracking costs in pushes, and what
+# soft tracking costs in model errors.
+"$bin" stability --reference results/opt_robust_mu2004 --controller mu_sliding_mode --steps 20 \
+  --gain-scale 0.3 "${rules[@]}" --quiet --sweep push=-4:4:33 --sweep mass_error=-0.3:0.3:25 \
+  --sweep length_error=-0.1:0.1:9 --out results/stability_opt_robust_mu2004_mu_sliding_mode_gain0.3
 
 echo "== gaitopt stability --map: push x mass error, 25 x 17 walks of 20 steps (results/map_*)"
 map=(--map "push=-3:3:25,mass_error=-0.2:0.2:17" --steps 20 "${rules[@]}" --quiet)

@@ -206,12 +206,18 @@ def draw_sweep(ax, sw):
 
 def headline(s):
     """What was swept around, from the summary keys that are present: the gait (the reference
-    folder's name), the controller, the robot and the ground."""
+    folder's name), the controller with its bandwidth factor and CoP rule where they are not the
+    defaults (two sweeps of one gait must not share a title), the robot and the ground."""
     parts = []
     if isinstance(s.get("reference"), str):
         parts.append(f"gait {os.path.basename(s['reference'].rstrip('/'))}")
     if isinstance(s.get("controller"), str):
-        parts.append(f"{s['controller']} controller")
+        gain = s.get("gain_scale")
+        parts.append(f"{s['controller']} controller"
+                     + (f" at {gain:g} x its gains" if plot_io.is_number(gain) and gain != 1 else ""))
+    rules = s.get("contact_rules")
+    if isinstance(rules, dict) and isinstance(rules.get("cop_limit"), str):
+        parts.append(f"CoP limit: {rules['cop_limit']}")
     if isinstance(s.get("robot"), str):
         parts.append(s["robot"])
     if isinstance(s.get("ground"), str):

@@ -166,6 +166,10 @@ assert friction.log_spaced() and not push.log_spaced()
 assert friction.interval_text() == "falls at the nominal 0.1; walks at 2 of 3 values (0.3 .. 0.9)", friction.interval_text()
 assert push.interval_text() == "falls at every tested value (3 values)", push.interval_text()
 assert sp.headline(s).startswith("Stability sweeps: gait gait_x, computed_torque controller"), sp.headline(s)
+# Two sweeps of one gait at other gains or another CoP rule do not share a title.
+s2 = dict(s, gain_scale=0.3, contact_rules={"cop_limit": "fail"})
+assert "computed_torque controller at 0.3 x its gains, CoP limit: fail" in sp.headline(s2), sp.headline(s2)
+assert " x its gains" not in sp.headline(dict(s, gain_scale=1.0)), sp.headline(s)
 PY
 plot stability_plots.py "$TMP/stab2"
 [[ $RC -eq 0 ]] || fail "(c2) stability_plots.py exited $RC: $(cat "$TMP/err")"
