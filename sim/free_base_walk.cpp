@@ -35,7 +35,7 @@ struct StepRun {
   double b_x0 = 0;  ///< world x of the stance tip at the step start [m]
   double e_x0 = 0;  ///< world x of the swing tip at touchdown [m]
   TipForces force;
-  Eigen::VectorXd memory;  ///< the controller's, zero at each phase start
+  Eigen::VectorXd memory;  ///< the controller's, from phaseStartMemory at each phase start
 };
 
 /// The stance ankle's torque and what the foot can carry (contact_rules.hpp), at B's normal force
@@ -77,13 +77,14 @@ struct Walker {
     };
   }
 
-  /// The phase starts with the controller's memory at zero. The reference is not faded from the
-  /// robot here (reference.hpp PhaseStart): at a touchdown on a compliant ground the tips bounce,
-  /// and fading that transient into the reference made the polynomial gait fall at step 2 on
-  /// the impedance ground, which it walks without the fade.
+  /// The phase starts with the controller's memory for the robot's state (phaseStartMemory).
+  /// The reference is not faded from the robot here (reference.hpp PhaseStart): at a touchdown
+  /// on a compliant ground the tips bounce, and fading that transient into the reference made
+  /// the polynomial gait fall at step 2 on the impedance ground, which it walks without the fade.
   void startPhase(StepRun& run, Phase phase) const {
     run.phase = phase;
-    run.memory = Eigen::VectorXd::Zero(controller.memorySize(phase));
+    run.memory = controller.phaseStartMemory(phase, anglesOf(plant, run.s.q),
+                                             anglesOf(plant, run.s.v), ref.at(phase, run.clock));
   }
 
   /// The controller's memory over one time step h (explicit Euler at the step's start).
