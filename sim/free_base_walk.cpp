@@ -35,7 +35,8 @@ struct StepRun {
   double b_x0 = 0;  ///< world x of the stance tip at the step start [m]
   double e_x0 = 0;  ///< world x of the swing tip at touchdown [m]
   TipForces force;
-  Eigen::VectorXd memory;  ///< the controller's, zero at each phase start
+  Eigen::VectorXd memory;  ///< the controller's, from phaseStartMemory at each phase start
+  PhaseStart start;        ///< the robot's departure faded out of the reference (SSP only)
 };
 
 /// The stance ankle's torque and what the foot can carry (contact_rules.hpp), at B's normal force
@@ -71,25 +72,33 @@ struct Walker {
     return [this, &run, limit, saturate](double dt, const Eigen::VectorXd& q,
                                          const Eigen::VectorXd& v) {
       VecD tau = controller.torque(run.phase, anglesOf(plant, q), anglesOf(plant, v),
-                                   ref.at(run.phase, run.clock + dt), run.memory);
+                                   ref.at(run.phase, run.clock + dt, run.start), run.memory);
       if (saturate) tau(0) = std::clamp(tau(0), limit.lower, limit.upper);
       return tau;
     };
   }
 
-  /// The phase starts with the controller's memory at zero. The reference is not faded from the
-  /// robot here (reference.hpp PhaseStart): at a touchdown on a compliant ground the tips bounce,
-  /// and fading that transient into the reference made the polynomial gait fall at step 2 on
-  /// the impedance ground, which it walks without the fade.
+  /// The phase starts with the controller's memory for the robot's state (phaseStartMemory) and,
+  /// in single support, the reference faded from the robot (reference.hpp PhaseStart), as on
+  /// rigid ground. Not at touchdown: on a compliant ground the tips bounce, and fading that
+  /// transient into the reference made the polynomial gait fall at step 2 on the impedance
+  /// ground. The lift-off is no bounce, and there a DSP that could not match the plan's posture
+  /// (E set down early, 2.6 mm short) handed the SSP 0.025 rad, 0.3 rad/s errors that Mu's SSP
+  /// law (Lambda^2 = 625) turned into a stance ankle torque of +25 N m, the CoP 0.11 m behind
+  /// the ankle (heel 0.05 m).
   void startPhase(StepRun& run, Phase phase) const {
+    const VecD theta = anglesOf(plant, run.s.q), dtheta = anglesOf(plant, run.s.v);
     run.phase = phase;
-    run.memory = Eigen::VectorXd::Zero(controller.memorySize(phase));
+    run.start = phase == Phase::kSsp ? ref.startFrom(phase, run.clock, theta, dtheta)
+                                     : PhaseStart{run.clock, 0, {}, {}};
+    run.memory =
+        controller.phaseStartMemory(phase, theta, dtheta, ref.at(phase, run.clock, run.start));
   }
 
   /// The controller's memory over one time step h (explicit Euler at the step's start).
   void advanceMemory(StepRun& run, const FreeBaseState& before, double h) const {
     if (run.memory.size() == 0) return;
-    const gaits::Knot k = ref.at(run.phase, run.clock);
+    const gaits::Knot k = ref.at(run.phase, run.clock, run.start);
     run.memory += h * controller.memoryRate(run.phase, anglesOf(plant, before.q),
                                             anglesOf(plant, before.v), k, run.memory);
   }
@@ -144,7 +153,7 @@ struct Walker {
 
   void record(const StepRun& run, double t0, int index, StepResult& r) const {
     const VecD theta = anglesOf(plant, run.s.q), dtheta = anglesOf(plant, run.s.v);
-    const gaits::Knot k = ref.at(run.phase, run.clock);
+    const gaits::Knot k = ref.at(run.phase, run.clock, run.start);
     r.max_tracking_error =
         std::max(r.max_tracking_error, (theta - VecD(k.theta)).cwiseAbs().maxCoeff());
     r.slip = std::max(r.slip, slip(run));

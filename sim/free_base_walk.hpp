@@ -5,7 +5,8 @@
 /// both tips, B (stance) and E (swing). The contact law is the only thing that differs between
 /// grounds (compliant_walk.hpp: Hunt-Crossley with RK4; lcp_walk.hpp: Stewart-Trinkle time
 /// stepping); the phases, relabelling and failures are here, once.
-///   SSP: the controller runs on the step clock from the reference start. Touchdown: the first
+///   SSP: the controller runs on the step clock from the reference start, the robot's departure
+///   from it faded out (reference.hpp PhaseStart; not at touchdown). Touchdown: the first
 ///   step at whose end E, ahead of B, carries a normal force > 0 or is at or below the ground;
 ///   the clock jumps to the reference touchdown time.
 ///   DSP (only if the reference has one): until the reference ends or, in its second half, the

@@ -171,6 +171,15 @@ VecD MuSlidingModeController::torque(gaits::Phase phase, const VecD& theta, cons
   return clipTorque(model_, unclippedTorque(phase, theta, dtheta, ref, memory));
 }
 
+Eigen::VectorXd MuSlidingModeController::phaseStartMemory(gaits::Phase phase, const VecD& theta,
+                                                          const VecD& dtheta,
+                                                          const gaits::Knot& ref) const {
+  // (4.1) at z = 0 is edot + 2 Lambda e; the z that cancels it.
+  const Eigen::VectorXd z0 = Eigen::VectorXd::Zero(memorySize(phase));
+  const double lambda = phase == gaits::Phase::kSsp ? gains_.ssp_lambda : gains_.dsp_lambda;
+  return -errors(phase, theta, dtheta, ref, z0).s / (lambda * lambda);
+}
+
 Eigen::VectorXd MuSlidingModeController::memoryRate(gaits::Phase phase, const VecD& theta,
                                                     const VecD& dtheta, const gaits::Knot& ref,
                                                     const Eigen::VectorXd& memory) const {

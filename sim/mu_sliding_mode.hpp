@@ -2,7 +2,7 @@
 /// @file mu_sliding_mode.hpp
 /// The sliding-mode controller of Mu (2004) ch. 4 as written, on the controller's model (the
 /// hatted matrices) with a known bound on how far the true robot may be from it.
-///  SSP, joint coordinates q (2.39), e = q - q_d, memory z = int e:
+///  SSP, joint coordinates q (2.39), e = q - q_d, memory z = int e (from phaseStartMemory):
 ///    s = edot + 2 Lambda e + Lambda^2 z                                        (4.1)
 ///    u = qdd_d - 2 Lambda edot - Lambda^2 e,  v = qdot_d - 2 Lambda e - Lambda^2 z  (4.2)
 ///    T^ = D^_q u + H^_q v + G^_q   (equivalent control, H as a matrix)          (4.4)
@@ -53,6 +53,16 @@ class MuSlidingModeController : public Controller {
                        const gaits::Knot& ref, const Eigen::VectorXd& memory) const;
   /// n in the SSP (int e over q), n - 2 in the DSP (over p).
   int memorySize(gaits::Phase phase) const override;
+  /// The integral of (4.1) starts where the surface passes through the robot, s(t0) = 0:
+  /// z(t0) = -(edot + 2 Lambda e) / Lambda^2 at the phase start. Mu starts on the reference
+  /// (e = 0, so s = 0, sec. 4.3) and lets the errors a phase inherits decay under u's
+  /// K_P = Lambda^2, K_D = 2 Lambda (4.2, 4.10); the switching term (4.6, 4.14) is sized for
+  /// the model's uncertainty (4.8-4.9, 4.16-4.17), not for that reaching. From z = 0 it took
+  /// the reaching on: at the early touchdown on the impedance ground, s = (-0.25, 0.015, -0.32)
+  /// put tanh(alpha s) near 1, and (4.14) through C^- took 897 N off the leading tip's planned
+  /// 175 N on the controller's pinned model: the tip left the ground 0.8 ms after touchdown.
+  Eigen::VectorXd phaseStartMemory(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
+                                   const gaits::Knot& ref) const override;
   /// e: the memory is the integral of the tracking error of (4.1).
   Eigen::VectorXd memoryRate(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
                              const gaits::Knot& ref, const Eigen::VectorXd& memory) const override;
