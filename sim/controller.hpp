@@ -5,14 +5,24 @@
 /// knot of the step clock (tracking_controller.hpp); a state-feedback law such as HZD
 /// (hzd_controller.hpp) may ignore it. A controller with memory (the integral of Mu's sliding
 /// surface, 4.1) names how many states it keeps in a phase; the walk integrates them beside the
-/// plant's state. The rigid walk starts them from zero at every phase start; the free-base walk
-/// (free_base_walk.hpp) from phaseStartMemory.
+/// plant's state. Every walk starts them at a phase start from phaseStartMemory, which at the
+/// switch from single to double support also sees the end of the single support
+/// (PhaseHandover); the rigid walk starts a step's single support from zero.
 #include <Eigen/Core>
 
 #include "dynamics/conventions.hpp"
 #include "gaits/trajectory.hpp"
 
 namespace gaitopt::sim {
+
+/// The end of the phase before a switch: the last state, reference knot and memory the
+/// controller saw in it.
+struct PhaseHandover {
+  gaits::Phase phase = gaits::Phase::kSsp;
+  VecD theta, dtheta;
+  gaits::Knot ref;
+  Eigen::VectorXd memory;
+};
 
 class Controller {
  public:
@@ -24,10 +34,11 @@ class Controller {
   /// How many states the controller integrates in `phase` (0: none).
   virtual int memorySize(gaits::Phase /*phase*/) const { return 0; }
   /// The memory a phase starts with at (theta, dtheta) and the phase's first reference knot
-  /// (size memorySize(phase)); zero unless the controller says otherwise.
+  /// (size memorySize(phase)); `previous` is the end of the phase before, or null at a step's
+  /// start. Zero unless the controller says otherwise.
   virtual Eigen::VectorXd phaseStartMemory(gaits::Phase phase, const VecD& /*theta*/,
-                                           const VecD& /*dtheta*/,
-                                           const gaits::Knot& /*ref*/) const {
+                                           const VecD& /*dtheta*/, const gaits::Knot& /*ref*/,
+                                           const PhaseHandover* /*previous*/) const {
     return Eigen::VectorXd::Zero(memorySize(phase));
   }
   /// d(memory)/dt at the same arguments (size memorySize(phase)).

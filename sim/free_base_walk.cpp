@@ -86,13 +86,19 @@ struct Walker {
   /// (E set down early, 2.6 mm short) handed the SSP 0.025 rad, 0.3 rad/s errors that Mu's SSP
   /// law (Lambda^2 = 625) turned into a stance ankle torque of +25 N m, the CoP 0.11 m behind
   /// the ankle (heel 0.05 m).
-  void startPhase(StepRun& run, Phase phase) const {
+  void startPhase(StepRun& run, Phase phase, const PhaseHandover* previous) const {
     const VecD theta = anglesOf(plant, run.s.q), dtheta = anglesOf(plant, run.s.v);
     run.phase = phase;
     run.start = phase == Phase::kSsp ? ref.startFrom(phase, run.clock, theta, dtheta)
                                      : PhaseStart{run.clock, 0, {}, {}};
-    run.memory =
-        controller.phaseStartMemory(phase, theta, dtheta, ref.at(phase, run.clock, run.start));
+    run.memory = controller.phaseStartMemory(phase, theta, dtheta,
+                                             ref.at(phase, run.clock, run.start), previous);
+  }
+
+  /// The phase now running, as it ends (before the clock moves on).
+  PhaseHandover handover(const StepRun& run) const {
+    return {run.phase, anglesOf(plant, run.s.q), anglesOf(plant, run.s.v),
+            ref.at(run.phase, run.clock, run.start), run.memory};
   }
 
   /// The controller's memory over one time step h (explicit Euler at the step's start).
@@ -191,8 +197,9 @@ struct Walker {
       if (!touchedDown(run)) return true;
       r.ssp_duration = run.elapsed;
       run.e_x0 = dynamics::floatingSwingTip(plant, run.s.q)(0);
+      const PhaseHandover single_support = handover(run);
       run.clock = ref.dspClockAt(anglesOf(plant, run.s.q));
-      startPhase(run, Phase::kDsp);
+      startPhase(run, Phase::kDsp, &single_support);
       return ref.hasDsp();
     }
     // The trailing tip unloading ends the DSP early, as the trailing-force event of the rigid
@@ -212,7 +219,7 @@ struct Walker {
     StepRun run;
     run.s = s;
     run.b_x0 = s.q(0);
-    startPhase(run, Phase::kSsp);
+    startPhase(run, Phase::kSsp, nullptr);
     const auto max_ticks = static_cast<long>(std::ceil(3 * ref.endTime() / ground.time_step));
     long ticks = 0;
     // The push's force at the middle of each time step, held over it.

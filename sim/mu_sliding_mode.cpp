@@ -93,17 +93,20 @@ MuSlidingModeController::MuSlidingModeController(dynamics::Model model, MuSlidin
   requirePositive(gains.dsp_lambda, "DSP Lambda");
   requirePositive(gains.dsp_alpha, "DSP alpha");
   requirePositive(gains.dsp_sigma, "DSP sigma");
+  requirePositive(gains.handover_time, "handover time");
 }
 
-int MuSlidingModeController::memorySize(gaits::Phase phase) const {
+int MuSlidingModeController::surfaceMemorySize(gaits::Phase phase) const {
   return phase == gaits::Phase::kSsp ? model_.nLinks() : model_.nLinks() - 2;
 }
 
-MuSlidingModeController::Errors MuSlidingModeController::errors(gaits::Phase phase,
-                                                                const VecD& theta,
-                                                                const VecD& dtheta,
-                                                                const gaits::Knot& ref,
-                                                                const Eigen::VectorXd& z) const {
+int MuSlidingModeController::memorySize(gaits::Phase phase) const {
+  return surfaceMemorySize(phase) + model_.nLinks();
+}
+
+MuSlidingModeController::Errors MuSlidingModeController::errors(
+    gaits::Phase phase, const VecD& theta, const VecD& dtheta, const gaits::Knot& ref,
+    const Eigen::VectorXd& memory) const {
   Errors r;
   Eigen::VectorXd dd_ref, d_ref;
   double lambda = 0;
@@ -123,6 +126,7 @@ MuSlidingModeController::Errors MuSlidingModeController::errors(gaits::Phase pha
     dd_ref = want.r * ref.ddtheta + want.rdot_dth;
   }
   const double l2 = lambda * lambda;
+  const Eigen::VectorXd z = memory.head(surfaceMemorySize(phase));
   r.s = r.edot + 2 * lambda * r.e + l2 * z;
   r.u = dd_ref - 2 * lambda * r.edot - l2 * r.e;
   r.v = d_ref - 2 * lambda * r.e - l2 * z;
@@ -132,15 +136,21 @@ MuSlidingModeController::Errors MuSlidingModeController::errors(gaits::Phase pha
 VecD MuSlidingModeController::sspTorque(const VecD& theta, const VecD& dtheta,
                                         const Errors& err) const {
   const VecD own = sspEquivalent(model_, theta, dtheta, err.u, err.v);
+  return own + sspSwitching(theta, dtheta, err, own);
+}
+
+VecD MuSlidingModeController::sspSwitching(const VecD& theta, const VecD& dtheta, const Errors& err,
+                                           const VecD& own) const {
   const VecD eta = uncertaintyBound(corners_, own, [&](const dynamics::Model& m) {
     return sspEquivalent(m, theta, dtheta, err.u, err.v);
   });
   const Eigen::VectorXd switching = (gains_.ssp_gamma * err.s).array().tanh();
-  return own - ((eta.array() + gains_.ssp_sigma) * switching.array()).matrix();
+  return -((eta.array() + gains_.ssp_sigma) * switching.array()).matrix();
 }
 
 VecD MuSlidingModeController::dspTorque(const VecD& theta, const VecD& dtheta,
-                                        const gaits::Knot& ref, const Errors& err) const {
+                                        const gaits::Knot& ref, const Errors& err,
+                                        const VecD& carried) const {
   const auto equivalent = [&](const dynamics::Model& m) -> VecD {
     return dspComputedTorque(m, theta, dtheta, err.u, ref.force_stance, ref.force_swing);
   };
@@ -155,15 +165,16 @@ VecD MuSlidingModeController::dspTorque(const VecD& theta, const VecD& dtheta,
   const Eigen::VectorXd per_output =
       (gains_.dsp_alpha * err.s).array().tanh() *
       (c.cwiseAbs() * (eta.array() + gains_.dsp_sigma).matrix()).array();
-  return own - c_pinv * per_output;
+  return own + carried - c_pinv * per_output;
 }
 
 VecD MuSlidingModeController::unclippedTorque(gaits::Phase phase, const VecD& theta,
                                               const VecD& dtheta, const gaits::Knot& ref,
                                               const Eigen::VectorXd& memory) const {
   const Errors err = errors(phase, theta, dtheta, ref, memory);
-  return phase == gaits::Phase::kSsp ? sspTorque(theta, dtheta, err)
-                                     : dspTorque(theta, dtheta, ref, err);
+  return phase == gaits::Phase::kSsp
+             ? sspTorque(theta, dtheta, err)
+             : dspTorque(theta, dtheta, ref, err, memory.tail(model_.nLinks()));
 }
 
 VecD MuSlidingModeController::torque(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
@@ -173,17 +184,33 @@ VecD MuSlidingModeController::torque(gaits::Phase phase, const VecD& theta, cons
 
 Eigen::VectorXd MuSlidingModeController::phaseStartMemory(gaits::Phase phase, const VecD& theta,
                                                           const VecD& dtheta,
-                                                          const gaits::Knot& ref) const {
+                                                          const gaits::Knot& ref,
+                                                          const PhaseHandover* previous) const {
+  Eigen::VectorXd memory = Eigen::VectorXd::Zero(memorySize(phase));
   // (4.1) at z = 0 is edot + 2 Lambda e; the z that cancels it.
-  const Eigen::VectorXd z0 = Eigen::VectorXd::Zero(memorySize(phase));
   const double lambda = phase == gaits::Phase::kSsp ? gains_.ssp_lambda : gains_.dsp_lambda;
-  return -errors(phase, theta, dtheta, ref, z0).s / (lambda * lambda);
+  memory.head(surfaceMemorySize(phase)) =
+      -errors(phase, theta, dtheta, ref, memory).s / (lambda * lambda);
+  if (phase == gaits::Phase::kDsp && previous != nullptr && previous->phase == gaits::Phase::kSsp) {
+    memory.tail(model_.nLinks()) = previous->memory.tail(model_.nLinks());
+    memory(surfaceMemorySize(phase)) = 0;  // not the stance ankle's (mu_sliding_mode.hpp)
+  }
+  return memory;
 }
 
 Eigen::VectorXd MuSlidingModeController::memoryRate(gaits::Phase phase, const VecD& theta,
                                                     const VecD& dtheta, const gaits::Knot& ref,
                                                     const Eigen::VectorXd& memory) const {
-  return errors(phase, theta, dtheta, ref, memory).e;
+  Eigen::VectorXd rate = Eigen::VectorXd::Zero(memorySize(phase));
+  const Errors err = errors(phase, theta, dtheta, ref, memory);
+  rate.head(surfaceMemorySize(phase)) = err.e;
+  if (phase == gaits::Phase::kSsp) {
+    const VecD own = sspEquivalent(model_, theta, dtheta, err.u, err.v);
+    rate.tail(model_.nLinks()) =
+        (sspSwitching(theta, dtheta, err, own) - memory.tail(model_.nLinks())) /
+        gains_.handover_time;
+  }
+  return rate;
 }
 
 Eigen::VectorXd MuSlidingModeController::slidingVariable(gaits::Phase phase, const VecD& theta,

@@ -17,10 +17,27 @@
 /// (1 + b) of its own either way, and eta_i is the largest |T^_i - T_i| over the 2^3 corner
 /// models of that box (masses, inertias, geometry; the torques are multilinear in masses and
 /// inertias at fixed state, so the corners bound them in practice; not a proof).
-/// One deviation, for the contact: Mu's T^ in the DSP (4.12) is the minimum-norm solution
-/// C^- (u - B^ pdot) + N^, which leaves the split of the load between the two tips to chance;
-/// here T^ gives pdd = u with the leading tip carrying the reference's ground force (the planned
-/// load sharing, inside its friction cone), computed_torque.hpp. The switching term is Mu's.
+/// Two deviations. For the switch to double support, a "bumpless transfer": the SSP law also
+/// low-passes its switching term -(eta + sigma) o tanh(gamma s) (4.5) into T_c,
+///    dT_c/dt = (-(eta + sigma) o tanh(gamma s) - T_c) / t_h,   T_c = 0 at the step's start,
+/// and the DSP law adds the T_c the SSP ended with, held over the DSP, except at the stance ankle:
+/// the DSP starts with the correction the SSP law had found for its model instead of jumping back
+/// to T^. In the SSP all five joints are tracked, so that correction includes what the DSP's
+/// switching term (on the three p, through C^-) cannot see: torques that only press the tips
+/// against each other. Without T_c, on Mu's case 3 (the model twice the robot's mass) T^ pressed
+/// the trailing tip with 826 N, 2.8 times the robot's 292 N weight, 1 ms into the DSP, the torques
+/// hit their 150 N m limits and the leading tip lifted off at 4 ms
+/// (results/closed_loop_mu2004/mu_cases.md). The stance ankle is left out because in the SSP it
+/// carries the whole robot's moment about the stance tip, which the DSP shares with the leading
+/// tip's force: carried, its -55 N m (t_h = 0.1 s) lifted the polynomial gait's leading tip off
+/// (0.30 m heel, model mass +60 %, which walks without T_c). The filter keeps a reaching transient
+/// at touchdown out of T_c (the last instant's switching term was -179 N m there). t_h = 0.05 s:
+/// the robust optimum's case 3 and the polynomial gait's case 2 walk 20 steps for t_h from 0.03 to
+/// 0.3 s, and the polynomial gait with the model's mass +80 % only at 0.05 s. For the contact: Mu's
+/// T^ in the DSP (4.12) is the minimum-norm solution C^- (u - B^ pdot) + N^, which leaves the split
+/// of the load between the two tips to chance; here T^ gives pdd = u with the leading tip carrying
+/// the reference's ground force (the planned load sharing, inside its friction cone),
+/// computed_torque.hpp. The switching term is Mu's.
 #include <vector>
 
 #include "dynamics/model.hpp"
@@ -33,6 +50,7 @@ namespace gaitopt::sim {
 struct MuSlidingModeGains {
   double ssp_lambda = 25, ssp_gamma = 1, ssp_sigma = 2;   ///< [1/s], [s/rad], [N m]
   double dsp_lambda = 10, dsp_alpha = 5, dsp_sigma = 10;  ///< [1/s], [s/m], [N m]
+  double handover_time = 0.05;  ///< t_h of the SSP's low-passed switching term T_c [s] (not Mu's)
 };
 
 /// Table 4.2 for Mu's uncertainty case 1, 2 or 3. @throws std::invalid_argument otherwise.
@@ -51,7 +69,7 @@ class MuSlidingModeController : public Controller {
   /// The same before clipping to the torque limits (Mu's proof assumes no saturation).
   VecD unclippedTorque(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
                        const gaits::Knot& ref, const Eigen::VectorXd& memory) const;
-  /// n in the SSP (int e over q), n - 2 in the DSP (over p).
+  /// int e (n over q in the SSP, n - 2 over p in the DSP), then the n torques T_c.
   int memorySize(gaits::Phase phase) const override;
   /// The integral of (4.1) starts where the surface passes through the robot, s(t0) = 0:
   /// z(t0) = -(edot + 2 Lambda e) / Lambda^2 at the phase start. Mu starts on the reference
@@ -61,9 +79,11 @@ class MuSlidingModeController : public Controller {
   /// the reaching on: at the early touchdown on the impedance ground, s = (-0.25, 0.015, -0.32)
   /// put tanh(alpha s) near 1, and (4.14) through C^- took 897 N off the leading tip's planned
   /// 175 N on the controller's pinned model: the tip left the ground 0.8 ms after touchdown.
+  /// T_c: zero in the SSP; in the DSP the SSP's at `previous` (zero without one).
   Eigen::VectorXd phaseStartMemory(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
-                                   const gaits::Knot& ref) const override;
-  /// e: the memory is the integral of the tracking error of (4.1).
+                                   const gaits::Knot& ref,
+                                   const PhaseHandover* previous) const override;
+  /// e for the integral of (4.1); T_c's filter in the SSP, held in the DSP.
   Eigen::VectorXd memoryRate(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
                              const gaits::Knot& ref, const Eigen::VectorXd& memory) const override;
 
@@ -81,8 +101,14 @@ class MuSlidingModeController : public Controller {
   Errors errors(gaits::Phase phase, const VecD& theta, const VecD& dtheta, const gaits::Knot& ref,
                 const Eigen::VectorXd& memory) const;
   VecD sspTorque(const VecD& theta, const VecD& dtheta, const Errors& err) const;
-  VecD dspTorque(const VecD& theta, const VecD& dtheta, const gaits::Knot& ref,
-                 const Errors& err) const;
+  VecD dspTorque(const VecD& theta, const VecD& dtheta, const gaits::Knot& ref, const Errors& err,
+                 const VecD& carried) const;
+  /// The SSP's switching term -(eta + sigma) o tanh(gamma s) of (4.5)-(4.6) at that state,
+  /// `own` its equivalent control (4.4).
+  VecD sspSwitching(const VecD& theta, const VecD& dtheta, const Errors& err,
+                    const VecD& own) const;
+  /// The integral z of (4.1) inside the memory of `phase`.
+  int surfaceMemorySize(gaits::Phase phase) const;
 
   dynamics::Model model_;
   MuSlidingModeGains gains_;

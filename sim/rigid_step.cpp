@@ -53,6 +53,11 @@ VecD ratesOf(const StepContext& c, const Eigen::VectorXd& x) {
   return x.segment(c.n() + 4, c.n());
 }
 
+/// The controller's memory in x = (q, qdot, memory).
+Eigen::VectorXd memoryOf(const StepContext& c, const Eigen::VectorXd& x) {
+  return x.tail(x.size() - 2 * (c.n() + 2));
+}
+
 /// E relative to where the step started (q = (x_b, y_b, theta)) [m].
 Vec2d swingTipOf(const StepContext& c, const Eigen::VectorXd& x) {
   return x.head<2>() + dynamics::swingTip<double>(c.plant, anglesOf(c, x));
@@ -303,6 +308,8 @@ StepResult finishStep(const StepContext& c, StepRecorder& rec, const PhaseStart&
   double e_velocity = 0;  // E's tangential velocity when it becomes the stance tip
   if (phase.failure.empty()) {
     const VecD theta = anglesOf(c, phase.x), dtheta = ratesOf(c, phase.x);
+    const PhaseHandover single_support{Phase::kSsp, theta, dtheta,
+                                       c.ref.at(Phase::kSsp, phase.t, start), memoryOf(c, phase.x)};
     const ImpactChoice impact = chooseImpact(c, theta, dtheta);
     r.impact = impact.type;
     phase.failure = impact.failure;
@@ -315,6 +322,9 @@ StepResult finishStep(const StepContext& c, StepRecorder& rec, const PhaseStart&
       rec.e_on_ground = true;
       const double begin = c.ref.dspClockAt(theta);
       const PhaseStart dsp_start = c.ref.startFrom(Phase::kDsp, begin, theta, m.dtheta_plus);
+      phase.x.tail(c.controller.memorySize(Phase::kDsp)) =
+          c.controller.phaseStartMemory(Phase::kDsp, theta, m.dtheta_plus,
+                                        c.ref.at(Phase::kDsp, begin, dsp_start), &single_support);
       const ContactSet both{afterImpact(m.trailing), afterImpact(m.leading)};
       phase = runPhase(c, rec, Phase::kDsp, dsp_start, both, begin, phase.x, {c.ref.endTime()},
                        t0 + r.ssp_duration - begin);
@@ -400,8 +410,7 @@ SspRun simulateSingleSupportTo(const dynamics::Model& plant, const Controller& c
                     ? "the stance tip slides at the section"
                     : "";
   run.ok = run.failure.empty();
-  const int n = plant.nLinks();
-  run.state = {end.t, anglesOf(c, end.x), ratesOf(c, end.x), end.x.tail(end.x.size() - 2 * n - 4)};
+  run.state = {end.t, anglesOf(c, end.x), ratesOf(c, end.x), memoryOf(c, end.x)};
   return run;
 }
 

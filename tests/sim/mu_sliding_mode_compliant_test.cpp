@@ -30,7 +30,7 @@ TEST(MuSlidingModeCompliant, APhaseStartsWithTheSlidingVariableAtZero) {
   const VecD theta = VecD(k.theta) + 0.02 * VecD::LinSpaced(5, -1, 1).cwiseAbs2();
   const VecD dtheta = VecD(k.dtheta) - 0.5 * VecD::LinSpaced(5, -1, 1);
   for (const Phase phase : {Phase::kSsp, Phase::kDsp}) {
-    const Eigen::VectorXd z = c.phaseStartMemory(phase, theta, dtheta, k);
+    const Eigen::VectorXd z = c.phaseStartMemory(phase, theta, dtheta, k, nullptr);
     ASSERT_EQ(z.size(), c.memorySize(phase));
     EXPECT_LT(c.slidingVariable(phase, theta, dtheta, k, z).cwiseAbs().maxCoeff(), 1e-12);
     EXPECT_GT(c.slidingVariable(phase, theta, dtheta, k, 0 * z).cwiseAbs().maxCoeff(), 0.1);

@@ -1,0 +1,95 @@
+// Mu's sliding-mode controller at the switch from single to double support (the "bumpless
+// transfer" of mu_sliding_mode.hpp): the SSP low-passes its switching term into T_c, the
+// correction it found for its model, and the DSP law adds it (the stance ankle's left out).
+// Without it, with the controller's model off by Mu's case 3, the DSP started from T^ alone:
+// the trailing tip was pressed with 826 N, 2.8 times the robot's weight, and the leading tip
+// lifted off in step 1.
+#include <gtest/gtest.h>
+
+#include "dynamics/model_variation.hpp"
+#include "dynamics/robot_config.hpp"
+#include "five_link_gait.hpp"
+#include "ocp/gait_solve.hpp"
+#include "ocp/initial_guess.hpp"
+#include "sim/hybrid_walk.hpp"
+#include "sim/mu_sliding_mode.hpp"
+
+namespace gaitopt::sim {
+namespace {
+
+using gaits::Phase;
+
+/// T_c's place in the memory: after the integral of (4.1) (n in the SSP, n - 2 in the DSP).
+Eigen::VectorXd carried(const MuSlidingModeController& c, Phase phase,
+                        const Eigen::VectorXd& memory) {
+  return memory.tail(memory.size() - (phase == Phase::kSsp ? 5 : 3));
+}
+
+TEST(MuSlidingModeHandover, TheDoubleSupportAddsTheSingleSupportsTermButNotTheAnkles) {
+  const auto& model = test::fiveLinkRobot();
+  const Reference ref(test::polynomialGait(), model);
+  const MuSlidingModeController c(model, muTable42(1), {0.2, 0.2, 0.05, 0.05});
+  const gaits::Knot end = ref.at(Phase::kSsp, ref.touchdownTime() - 0.01);
+  Eigen::VectorXd ssp_memory = Eigen::VectorXd::Zero(c.memorySize(Phase::kSsp));
+  ASSERT_EQ(ssp_memory.size(), 10);
+  ssp_memory.tail(5) << 7, -3, 2, 5, -11;  // T_c [N m]
+  // On the reference the sliding variable is zero, tanh(gamma s) too: T_c relaxes to zero
+  // at 1 / t_h (t_h = 0.05 s).
+  const Eigen::VectorXd rate = c.memoryRate(Phase::kSsp, end.theta, end.dtheta, end, ssp_memory);
+  EXPECT_LT((carried(c, Phase::kSsp, rate) + ssp_memory.tail(5) / 0.05).norm(), 1e-9);
+
+  const PhaseHandover handover{Phase::kSsp, end.theta, end.dtheta, end, ssp_memory};
+  const gaits::Knot k = ref.at(Phase::kDsp, ref.touchdownTime());
+  const Eigen::VectorXd dsp_memory =
+      c.phaseStartMemory(Phase::kDsp, k.theta, k.dtheta, k, &handover);
+  ASSERT_EQ(dsp_memory.size(), 8);
+  Eigen::VectorXd want(5);
+  want << 0, -3, 2, 5, -11;
+  EXPECT_EQ(carried(c, Phase::kDsp, dsp_memory), want);
+  Eigen::VectorXd without = dsp_memory;
+  without.tail(5).setZero();
+  const VecD added = c.unclippedTorque(Phase::kDsp, k.theta, k.dtheta, k, dsp_memory) -
+                     c.unclippedTorque(Phase::kDsp, k.theta, k.dtheta, k, without);
+  EXPECT_LT((added - want).cwiseAbs().maxCoeff(), 1e-9);
+  // No single support before (a step's start): nothing is carried.
+  EXPECT_EQ(carried(c, Phase::kDsp, c.phaseStartMemory(Phase::kDsp, k.theta, k.dtheta, k, nullptr))
+                .norm(),
+            0.0);
+}
+
+// The robust optimum (configs/ocp/mu2004_walk_robust.yaml) with the controller's model off by
+// Mu's case 3: without T_c the leading tip lifted off 4 ms into the first DSP (826 N on the
+// trailing tip). Optimised builds only: the solve takes 4 s there.
+TEST(MuSlidingModeHandover, TheRobustOptimumWalksMusCase3) {
+#ifndef NDEBUG
+  GTEST_SKIP() << "an OCP solve and a walk: optimised builds only";
+#endif
+  const auto config =
+      ocp::loadOcpConfig(std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/mu2004_walk_robust.yaml");
+  const dynamics::Model plant = dynamics::loadRobot(config.robot_path);
+  const auto solution = ocp::solveGait(plant, config, ocp::polynomialGuess(plant, config));
+  ASSERT_TRUE(solution.result.success) << solution.result.status;
+  const Reference ref(ocp::reconstructDense(solution.problem, plant, solution.result.x, 1000.0),
+                      plant);
+  const auto errors = dynamics::muUncertaintyCase(3);
+  const MuSlidingModeController c(dynamics::perturbedModel(plant, errors), muTable42(3), errors);
+  double most_b = 0, least_e = 1e9;
+  const double weight = plant.totalMass() * plant.gravity();
+  const auto log = [&](const WalkSample& s) {
+    if (s.step != 0 || s.phase != Phase::kDsp) return;
+    most_b = std::max(most_b, s.force_stance(1));
+    least_e = std::min(least_e, s.force_swing(1));
+  };
+  WalkOptions options;
+  options.steps = 3;
+  const WalkResult w = simulateWalk(plant, c, ref, options, log);
+  RecordProperty("trailing_tip_most_N", std::to_string(most_b));
+  RecordProperty("leading_tip_least_N", std::to_string(least_e));
+  EXPECT_EQ(w.steps_completed, 3) << w.failure;
+  EXPECT_LT(w.max_tracking_error, 0.01);
+  EXPECT_LT(most_b, 2 * weight);  // 826 N = 2.8 weights without T_c
+  EXPECT_GT(least_e, 0.0);
+}
+
+}  // namespace
+}  // namespace gaitopt::sim
