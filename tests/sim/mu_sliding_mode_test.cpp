@@ -25,7 +25,8 @@ TEST(MuSlidingMode, OnTheExactModelAndTheReferenceItGivesTheInverseDynamicsTorqu
   double worst = 0;
   for (const auto& k : test::polynomialGait().knots()) {
     if (k.phase != Phase::kSsp) continue;
-    const VecD tau = c.torque(Phase::kSsp, k.theta, k.dtheta, k, Eigen::VectorXd::Zero(5));
+    const VecD tau = c.torque(Phase::kSsp, k.theta, k.dtheta, k,
+                              Eigen::VectorXd::Zero(c.memorySize(Phase::kSsp)));
     // (2.43) with H as the vector of (2.8b): an independent path from (4.4)'s matrix form.
     const VecD want = dynamics::sspInverseDynamics(model, k.theta, k.dtheta, k.ddtheta);
     worst = std::max(worst, (tau - want).cwiseAbs().maxCoeff());
@@ -69,7 +70,7 @@ TEST(MuSlidingMode, WithItsModelOffTheLyapunovFunctionDecreasesOutsideTheBoundar
       theta(i) += 0.2 * off(rng);
       dtheta(i) += 3 * off(rng);
     }
-    const Eigen::VectorXd z = Eigen::VectorXd::Zero(5);
+    const Eigen::VectorXd z = Eigen::VectorXd::Zero(c.memorySize(Phase::kSsp));
     const Eigen::VectorXd s = c.slidingVariable(Phase::kSsp, theta, dtheta, ref, z);
     // (4.9): outside |s_i| >= eps_i for gamma = 2.5 and mu_i near 1/2 (eta ~ sigma).
     if (s.cwiseAbs().minCoeff() < 1.0) continue;
