@@ -24,6 +24,12 @@ struct PhaseHandover {
   Eigen::VectorXd memory;
 };
 
+/// Joint torques and memory rate at one state (Controller::control).
+struct ControlOutput {
+  VecD tau;
+  Eigen::VectorXd memory_rate;
+};
+
 class Controller {
  public:
   virtual ~Controller() = default;
@@ -46,6 +52,13 @@ class Controller {
                                      const VecD& /*dtheta*/, const gaits::Knot& /*ref*/,
                                      const Eigen::VectorXd& /*memory*/) const {
     return {};
+  }
+  /// torque() and memoryRate() at the same arguments, in one call: a controller whose memory
+  /// follows terms of its torque law (Mu's T_c filter) computes them once.
+  virtual ControlOutput control(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
+                                const gaits::Knot& ref, const Eigen::VectorXd& memory) const {
+    return {torque(phase, theta, dtheta, ref, memory),
+            memoryRate(phase, theta, dtheta, ref, memory)};
   }
 };
 

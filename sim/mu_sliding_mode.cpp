@@ -198,19 +198,35 @@ Eigen::VectorXd MuSlidingModeController::phaseStartMemory(gaits::Phase phase, co
   return memory;
 }
 
+Eigen::VectorXd MuSlidingModeController::rateOf(gaits::Phase phase, const Errors& err,
+                                                const VecD& switching,
+                                                const Eigen::VectorXd& memory) const {
+  Eigen::VectorXd rate = Eigen::VectorXd::Zero(memorySize(phase));
+  rate.head(surfaceMemorySize(phase)) = err.e;
+  if (phase == gaits::Phase::kSsp)
+    rate.tail(model_.nLinks()) = (switching - memory.tail(model_.nLinks())) / gains_.handover_time;
+  return rate;
+}
+
 Eigen::VectorXd MuSlidingModeController::memoryRate(gaits::Phase phase, const VecD& theta,
                                                     const VecD& dtheta, const gaits::Knot& ref,
                                                     const Eigen::VectorXd& memory) const {
-  Eigen::VectorXd rate = Eigen::VectorXd::Zero(memorySize(phase));
   const Errors err = errors(phase, theta, dtheta, ref, memory);
-  rate.head(surfaceMemorySize(phase)) = err.e;
-  if (phase == gaits::Phase::kSsp) {
-    const VecD own = sspEquivalent(model_, theta, dtheta, err.u, err.v);
-    rate.tail(model_.nLinks()) =
-        (sspSwitching(theta, dtheta, err, own) - memory.tail(model_.nLinks())) /
-        gains_.handover_time;
-  }
-  return rate;
+  if (phase == gaits::Phase::kDsp) return rateOf(phase, err, VecD(), memory);
+  const VecD own = sspEquivalent(model_, theta, dtheta, err.u, err.v);
+  return rateOf(phase, err, sspSwitching(theta, dtheta, err, own), memory);
+}
+
+ControlOutput MuSlidingModeController::control(gaits::Phase phase, const VecD& theta,
+                                               const VecD& dtheta, const gaits::Knot& ref,
+                                               const Eigen::VectorXd& memory) const {
+  const Errors err = errors(phase, theta, dtheta, ref, memory);
+  if (phase == gaits::Phase::kDsp)
+    return {clipTorque(model_, dspTorque(theta, dtheta, ref, err, memory.tail(model_.nLinks()))),
+            rateOf(phase, err, VecD(), memory)};
+  const VecD own = sspEquivalent(model_, theta, dtheta, err.u, err.v);
+  const VecD switching = sspSwitching(theta, dtheta, err, own);
+  return {clipTorque(model_, own + switching), rateOf(phase, err, switching, memory)};
 }
 
 Eigen::VectorXd MuSlidingModeController::slidingVariable(gaits::Phase phase, const VecD& theta,

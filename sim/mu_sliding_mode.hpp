@@ -86,6 +86,10 @@ class MuSlidingModeController : public Controller {
   /// e for the integral of (4.1); T_c's filter in the SSP, held in the DSP.
   Eigen::VectorXd memoryRate(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
                              const gaits::Knot& ref, const Eigen::VectorXd& memory) const override;
+  /// torque() and memoryRate() with the SSP's equivalent control and switching term computed
+  /// once (they are most of a walk's time).
+  ControlOutput control(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
+                        const gaits::Knot& ref, const Eigen::VectorXd& memory) const override;
 
   /// The sliding variable s (4.1) at the same arguments, for tests and logs.
   Eigen::VectorXd slidingVariable(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
@@ -107,6 +111,9 @@ class MuSlidingModeController : public Controller {
   /// `own` its equivalent control (4.4).
   VecD sspSwitching(const VecD& theta, const VecD& dtheta, const Errors& err,
                     const VecD& own) const;
+  /// d(memory)/dt: e, then in the SSP T_c's filter towards `switching` (unused in the DSP).
+  Eigen::VectorXd rateOf(gaits::Phase phase, const Errors& err, const VecD& switching,
+                         const Eigen::VectorXd& memory) const;
   /// The integral z of (4.1) inside the memory of `phase`.
   int surfaceMemorySize(gaits::Phase phase) const;
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace gaitopt::sim {
 
@@ -48,10 +49,11 @@ ContactLoop::State ContactLoop::evaluate(double t, const Eigen::VectorXd& x) con
   s.qdot = x.segment(n + 2, n + 2);
   s.theta = x.segment(2, n);
   s.dtheta = s.qdot.tail(n);
-  s.memory = x.tail(x.size() - 2 * (n + 2));
+  s.memory = contactMemory(x, n);
   s.ref = ref_.at(phase_, t, start_);
-  s.tau = controller_.torque(phase_, s.theta, s.dtheta, s.ref, s.memory);
-  s.memory_rate = controller_.memoryRate(phase_, s.theta, s.dtheta, s.ref, s.memory);
+  ControlOutput u = controller_.control(phase_, s.theta, s.dtheta, s.ref, s.memory);
+  s.tau = std::move(u.tau);
+  s.memory_rate = std::move(u.memory_rate);
   const Vec2d pushed =
       phase_ == Phase::kSsp ? pushForce(push_, step_, t, ref_.touchdownTime()) : Vec2d::Zero();
   auto acc = contactDynamics(plant_, s.theta, s.dtheta, s.tau, contacts_, pushed);
@@ -88,6 +90,10 @@ void ContactLoop::saturateAnkle(State& s, const Vec2d& pushed) const {
   s.force_stance = acc.force_b;
   s.force_swing = acc.force_e;
   s.saturated = true;
+}
+
+Eigen::VectorXd contactMemory(const Eigen::VectorXd& x, int n_links) {
+  return x.tail(x.size() - 2 * (n_links + 2));
 }
 
 Eigen::VectorXd contactState(const VecD& theta, const VecD& dtheta, double x_b, const Vec2d& v_b,

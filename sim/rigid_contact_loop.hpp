@@ -71,4 +71,7 @@ class ContactLoop {
 Eigen::VectorXd contactState(const VecD& theta, const VecD& dtheta, double x_b = 0,
                              const Vec2d& v_b = Vec2d::Zero(), int memory = 0);
 
+/// The controller's memory in x = (q, qdot, memory) of an n_links robot.
+Eigen::VectorXd contactMemory(const Eigen::VectorXd& x, int n_links);
+
 }  // namespace gaitopt::sim

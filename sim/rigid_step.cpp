@@ -53,11 +53,6 @@ VecD ratesOf(const StepContext& c, const Eigen::VectorXd& x) {
   return x.segment(c.n() + 4, c.n());
 }
 
-/// The controller's memory in x = (q, qdot, memory).
-Eigen::VectorXd memoryOf(const StepContext& c, const Eigen::VectorXd& x) {
-  return x.tail(x.size() - 2 * (c.n() + 2));
-}
-
 /// E relative to where the step started (q = (x_b, y_b, theta)) [m].
 Vec2d swingTipOf(const StepContext& c, const Eigen::VectorXd& x) {
   return x.head<2>() + dynamics::swingTip<double>(c.plant, anglesOf(c, x));
@@ -309,7 +304,8 @@ StepResult finishStep(const StepContext& c, StepRecorder& rec, const PhaseStart&
   if (phase.failure.empty()) {
     const VecD theta = anglesOf(c, phase.x), dtheta = ratesOf(c, phase.x);
     const PhaseHandover single_support{Phase::kSsp, theta, dtheta,
-                                       c.ref.at(Phase::kSsp, phase.t, start), memoryOf(c, phase.x)};
+                                       c.ref.at(Phase::kSsp, phase.t, start),
+                                       contactMemory(phase.x, c.n())};
     const ImpactChoice impact = chooseImpact(c, theta, dtheta);
     r.impact = impact.type;
     phase.failure = impact.failure;
@@ -410,7 +406,7 @@ SspRun simulateSingleSupportTo(const dynamics::Model& plant, const Controller& c
                     ? "the stance tip slides at the section"
                     : "";
   run.ok = run.failure.empty();
-  run.state = {end.t, anglesOf(c, end.x), ratesOf(c, end.x), memoryOf(c, end.x)};
+  run.state = {end.t, anglesOf(c, end.x), ratesOf(c, end.x), contactMemory(end.x, c.n())};
   return run;
 }
 

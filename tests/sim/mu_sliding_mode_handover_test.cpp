@@ -19,10 +19,9 @@ namespace {
 
 using gaits::Phase;
 
-/// T_c's place in the memory: after the integral of (4.1) (n in the SSP, n - 2 in the DSP).
-Eigen::VectorXd carried(const MuSlidingModeController& c, Phase phase,
-                        const Eigen::VectorXd& memory) {
-  return memory.tail(memory.size() - (phase == Phase::kSsp ? 5 : 3));
+/// T_c: the last n = 5 entries of the memory, after the integral of (4.1).
+Eigen::VectorXd carried(const Eigen::VectorXd& memory) {
+  return memory.tail(5);
 }
 
 TEST(MuSlidingModeHandover, TheDoubleSupportAddsTheSingleSupportsTermButNotTheAnkles) {
@@ -36,7 +35,7 @@ TEST(MuSlidingModeHandover, TheDoubleSupportAddsTheSingleSupportsTermButNotTheAn
   // On the reference the sliding variable is zero, tanh(gamma s) too: T_c relaxes to zero
   // at 1 / t_h (t_h = 0.05 s).
   const Eigen::VectorXd rate = c.memoryRate(Phase::kSsp, end.theta, end.dtheta, end, ssp_memory);
-  EXPECT_LT((carried(c, Phase::kSsp, rate) + ssp_memory.tail(5) / 0.05).norm(), 1e-9);
+  EXPECT_LT((carried(rate) + ssp_memory.tail(5) / 0.05).norm(), 1e-9);
 
   const PhaseHandover handover{Phase::kSsp, end.theta, end.dtheta, end, ssp_memory};
   const gaits::Knot k = ref.at(Phase::kDsp, ref.touchdownTime());
@@ -45,16 +44,35 @@ TEST(MuSlidingModeHandover, TheDoubleSupportAddsTheSingleSupportsTermButNotTheAn
   ASSERT_EQ(dsp_memory.size(), 8);
   Eigen::VectorXd want(5);
   want << 0, -3, 2, 5, -11;
-  EXPECT_EQ(carried(c, Phase::kDsp, dsp_memory), want);
+  EXPECT_EQ(carried(dsp_memory), want);
   Eigen::VectorXd without = dsp_memory;
   without.tail(5).setZero();
   const VecD added = c.unclippedTorque(Phase::kDsp, k.theta, k.dtheta, k, dsp_memory) -
                      c.unclippedTorque(Phase::kDsp, k.theta, k.dtheta, k, without);
   EXPECT_LT((added - want).cwiseAbs().maxCoeff(), 1e-9);
   // No single support before (a step's start): nothing is carried.
-  EXPECT_EQ(carried(c, Phase::kDsp, c.phaseStartMemory(Phase::kDsp, k.theta, k.dtheta, k, nullptr))
-                .norm(),
-            0.0);
+  EXPECT_EQ(carried(c.phaseStartMemory(Phase::kDsp, k.theta, k.dtheta, k, nullptr)).norm(), 0.0);
+}
+
+// control() computes the SSP's switching term once for the torque and T_c's filter; it must
+// give what torque() and memoryRate() give, in both phases, off the reference.
+TEST(MuSlidingModeHandover, OneCallGivesTheTorqueAndTheMemoryRate) {
+  const auto& model = test::fiveLinkRobot();
+  const Reference ref(test::polynomialGait(), model);
+  const auto errors = dynamics::muUncertaintyCase(2);
+  const MuSlidingModeController c(dynamics::perturbedModel(model, errors), muTable42(2), errors);
+  for (const Phase phase : {Phase::kSsp, Phase::kDsp}) {
+    const gaits::Knot k = ref.at(phase, phase == Phase::kSsp ? 0.3 : ref.touchdownTime() + 0.02);
+    const VecD theta = VecD(k.theta) + 0.01 * VecD::LinSpaced(5, -1, 1);
+    const VecD dtheta = VecD(k.dtheta) - 0.2 * VecD::LinSpaced(5, -1, 1);
+    const Eigen::VectorXd memory = Eigen::VectorXd::LinSpaced(c.memorySize(phase), -0.5, 3);
+    const ControlOutput u = c.control(phase, theta, dtheta, k, memory);
+    const VecD tau = c.torque(phase, theta, dtheta, k, memory);
+    const Eigen::VectorXd rate = c.memoryRate(phase, theta, dtheta, k, memory);
+    EXPECT_LT((u.tau - tau).cwiseAbs().maxCoeff(), 1e-12 * tau.cwiseAbs().maxCoeff());
+    EXPECT_LT((u.memory_rate - rate).cwiseAbs().maxCoeff(), 1e-12 * rate.cwiseAbs().maxCoeff());
+    if (phase == Phase::kSsp) EXPECT_GT(carried(rate).norm(), 1.0);  // T_c's filter moves
+  }
 }
 
 // The robust optimum (configs/ocp/mu2004_walk_robust.yaml) with the controller's model off by
