@@ -40,13 +40,8 @@ struct SearchContext {
 /// Number of SSP samples at which a leg cannot reach (0 for a feasible swing).
 int unreachableSamples(const PolynomialGait& gait) {
   int bad = 0;
-  for (int k = 0; k <= kReachSamples; ++k) {
-    try {
-      gait.kinematics(gait.params().ssp_duration * k / kReachSamples, Phase::kSsp);
-    } catch (const std::domain_error&) {
-      ++bad;
-    }
-  }
+  for (int k = 0; k <= kReachSamples; ++k)
+    if (!gait.reachable(gait.params().ssp_duration * k / kReachSamples, Phase::kSsp)) ++bad;
   return bad;
 }
 

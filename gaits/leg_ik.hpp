@@ -20,6 +20,11 @@ struct LegAngles {
   Eigen::Vector2d theta, dtheta, ddtheta;
 };
 
+/// Whether legInverseKinematics solves for the distal point at `r` (relative to the proximal
+/// one): |l_a - l_b| < |r| < l_a + l_b and the leg not horizontal. No trigonometry, for searches
+/// that only need to know.
+bool legCanReach(double l_a, double l_b, const Eigen::Vector2d& r);
+
 /// Solves l_a u(alpha) + l_b u(beta) = r (u = (sin, cos)) with the knee on the +x side of the
 /// line from the proximal to the distal point (kForward) or the -x side, then
 /// dtheta = J^-1 rdot and ddtheta = J^-1 (rddot - Jdot dtheta).

@@ -76,6 +76,14 @@ PointMotion PolynomialGait::hip(double t, Phase phase) const {
           {x(local, 2), -b * w * w * std::cos(w * t)}};
 }
 
+bool PolynomialGait::reachable(double t, Phase phase) const {
+  const int n = model_->nLinks();
+  const Eigen::Vector2d h = hip(t, phase).pos;
+  return legCanReach(model_->link(0).length, model_->link(1).length, h) &&
+         legCanReach(model_->link(n - 2).length, model_->link(n - 1).length,
+                     swingTip(t, phase).pos - h);
+}
+
 GaitKinematics PolynomialGait::kinematics(double t, Phase phase) const {
   const int n = model_->nLinks();
   const PointMotion h = hip(t, phase);

@@ -48,6 +48,8 @@ class PolynomialGait {
   /// Joint angles, rates and accelerations by (3.24) at step time t.
   /// @throws std::domain_error when a leg cannot reach (names the time and phase).
   GaitKinematics kinematics(double t, Phase phase) const;
+  /// Whether kinematics(t, phase) finds both legs within reach, without solving for the angles.
+  bool reachable(double t, Phase phase) const;
 
  private:
   const dynamics::Model* model_;

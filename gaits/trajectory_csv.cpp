@@ -4,7 +4,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
@@ -19,13 +18,14 @@
 #include "gaits/trajectory_columns.hpp"
 #include "gaits/trajectory_row.hpp"
 #include "io/checked_write.hpp"
+#include "io/number_text.hpp"
 
 namespace gaitopt::gaits {
 namespace {
 
 using config::ConfigError;
 
-/// How far a row's time may be from i / rate in a file on the grid: 17 digits are written, so
+/// How far a row's time may be from i / rate in a file on the grid: times are written exactly, so
 /// only a file edited by hand misses by more [s].
 constexpr double kGridTolerance = 1e-12;
 
@@ -41,24 +41,17 @@ std::string headerSummary(int n) {
 // ---------------------------------------------------------------------------------------------
 // Writing
 
-void appendNumber(fmt::memory_buffer& buf, double value) {
-  fmt::format_to(std::back_inserter(buf), ",{:.17g}", value);  // 17 digits: exact round trip
-}
-
-void appendNumbers(fmt::memory_buffer& buf, const Eigen::Ref<const Eigen::VectorXd>& values) {
-  for (Eigen::Index i = 0; i < values.size(); ++i) appendNumber(buf, values(i));
-}
-
-void appendRow(fmt::memory_buffer& buf, const Knot& knot, const dynamics::Model& model,
+void appendRow(std::string& out, const Knot& knot, const dynamics::Model& model,
                const std::vector<PhysicalJoint>& joints, double step_length) {
-  fmt::format_to(std::back_inserter(buf), "{:.17g},{}", knot.t, toString(knot.phase));
-  appendNumbers(buf, rowNumbers(knot, model, joints, step_length));
-  buf.push_back('\n');
-}
-
-/// Writes to path.tmp and renames, so a reader never sees a half-written file.
-void writeAtomically(const std::string& path, const fmt::memory_buffer& buf) {
-  io::writeFileAtomically(path, std::string_view(buf.data(), buf.size()));
+  io::appendShortest(out, knot.t);
+  out += ',';
+  out += toString(knot.phase);
+  const Eigen::VectorXd values = rowNumbers(knot, model, joints, step_length);
+  for (Eigen::Index i = 0; i < values.size(); ++i) {
+    out += ',';
+    io::appendShortest(out, values(i));
+  }
+  out += '\n';
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -195,12 +188,12 @@ void writeTrajectoryCsv(const std::vector<Knot>& rows, double step_length,
     throw std::invalid_argument(fmt::format("trajectory has {} links but robot '{}' has {}",
                                             rows.front().theta.size(), model.name(),
                                             model.nLinks()));
-  fmt::memory_buffer buf;
   const std::vector<std::string> names = columnNames(model);
-  fmt::format_to(std::back_inserter(buf), "{}\n", fmt::join(names, ","));
+  std::string out = fmt::format("{}\n", fmt::join(names, ","));
+  out.reserve(rows.size() * names.size() * 20);  // about 20 characters a number
   const std::vector<PhysicalJoint> joints = physicalJoints(model);
-  for (const Knot& knot : rows) appendRow(buf, knot, model, joints, step_length);
-  writeAtomically(path, buf);
+  for (const Knot& knot : rows) appendRow(out, knot, model, joints, step_length);
+  io::writeFileAtomically(path, out);  // a reader never sees a half-written file
 }
 
 Trajectory readTrajectoryCsv(const std::string& path, const dynamics::Model& model) {

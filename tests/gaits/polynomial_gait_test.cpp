@@ -1,5 +1,6 @@
 // The polynomial gait of Mu (2004) ch. 3: boundary conditions (3.2-3.23), inverse kinematics
 // (3.24) against Table 4.1, continuity and periodicity, and zero touchdown velocity.
+#include <cmath>
 #include <numbers>
 
 #include <gtest/gtest.h>
@@ -138,6 +139,49 @@ TEST_F(PolynomialGaitTest, UnreachableHipHeightIsAClearError) {
     EXPECT_NE(msg.find("mu2004 at t = 0.1000 s (SSP): leg cannot reach"), std::string::npos) << msg;
     EXPECT_NE(msg.find("outside the open range (0.0300, 0.6340) m"), std::string::npos) << msg;
   }
+}
+
+// The hip-plan search asks only whether the legs reach (gaits/hip_plan_search.cpp); its cheap
+// answer must be the one the inverse kinematics would give, reachable or not.
+TEST_F(PolynomialGaitTest, ReachCheckAgreesWithInverseKinematics) {
+  int unreachable = 0;
+  for (const double hip_height : {0.40, 0.55, 0.62, 0.63, 0.70}) {
+    auto params = params_;
+    params.hip_height = hip_height;  // legs are 0.634 m long: the higher hips overreach
+    const gaits::PolynomialGait gait(model_, params, plan_);
+    for (int k = 0; k <= 70; ++k) {
+      const double t = params.duration() * k / 70;
+      const Phase phase = t <= params.ssp_duration ? Phase::kSsp : Phase::kDsp;
+      bool solved = true;
+      try {
+        gait.kinematics(t, phase);
+      } catch (const std::domain_error&) {
+        solved = false;
+      }
+      EXPECT_EQ(gait.reachable(t, phase), solved) << "hip height " << hip_height << ", t " << t;
+      unreachable += solved ? 0 : 1;
+    }
+  }
+  EXPECT_GT(unreachable, 20);  // both answers were exercised
+}
+
+TEST(LegReach, AgreesWithTheInverseKinematicsAtTheEdgesOfTheWorkspace) {
+  const double l_a = 0.332, l_b = 0.302;  // Mu's thigh and shank: reach (0.030, 0.634) m
+  const gaits::PointMotion base;
+  for (const double dist : {0.0299, 0.0301, 0.3, 0.6339, 0.6341})
+    for (const double angle : {0.0, 0.7, 1.5707963, 1.5707963267948966, 2.5, 3.14159}) {
+      gaits::PointMotion r = base;
+      r.pos = dist * Eigen::Vector2d(std::sin(angle), -std::cos(angle));
+      bool solved = true;
+      try {
+        gaits::legInverseKinematics(l_a, l_b, r, gaits::KneeDirection::kForward);
+      } catch (const std::domain_error&) {
+        solved = false;
+      }
+      EXPECT_EQ(gaits::legCanReach(l_a, l_b, r.pos), solved) << dist << " m at " << angle;
+    }
+  EXPECT_FALSE(gaits::legCanReach(l_a, l_b, Eigen::Vector2d(0.5, 0.0)));  // horizontal
+  EXPECT_TRUE(gaits::legCanReach(l_a, l_b, Eigen::Vector2d(0.0, -0.5)));
 }
 
 TEST(PolynomialGaitRobots, KneelessRobotIsRejected) {

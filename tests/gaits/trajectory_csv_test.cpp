@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -176,6 +177,22 @@ TEST_F(TrajectoryCsv, JsonVariantHoldsTheSameColumnsAndNumbers) {
         EXPECT_EQ(column[k].get<double>(), std::stod(csv)) << header_[c] << " row " << k;
     }
   }
+}
+
+// A failed solve's folder may hold non-finite numbers; JSON has none, so they become null and
+// the file still parses (the CSV keeps "nan", which its reader rejects by name).
+TEST_F(TrajectoryCsv, JsonVariantWritesNullWhereANumberIsNotFinite) {
+  std::vector<Knot> knots = traj_.knots();
+  knots[3].tau(1) = std::numeric_limits<double>::quiet_NaN();
+  knots[4].tau(1) = std::numeric_limits<double>::infinity();
+  const std::string json_path = path("not_finite.json");
+  gaits::writeTrajectoryJson(knots, traj_.stepLength(), model_, json_path);
+  const auto json = nlohmann::json::parse(readText(json_path));
+  const auto& tau1 = json["data"]["tau1"];
+  EXPECT_TRUE(tau1[3].is_null());
+  EXPECT_TRUE(tau1[4].is_null());
+  EXPECT_EQ(tau1[5].get<double>(), knots[5].tau(1));
+  EXPECT_TRUE(json["data"]["t"][0].is_number_float());  // 0 is written 0.0, as nlohmann does
 }
 
 TEST_F(TrajectoryCsv, HeaderFollowsDesignSection5) {
