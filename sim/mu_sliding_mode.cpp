@@ -21,12 +21,13 @@ void requirePositive(double value, const std::string& name) {
   if (!(value > 0)) throw std::invalid_argument("sliding-mode " + name + " must be positive");
 }
 
-/// The corner models of the box phi in [phi^ / (1 + b), phi^ (1 + b)] for three groups: masses,
+/// The corner models of the box phi in [phi^ / (1 + b), phi^ (1 + b)] (kEitherWay) or
+/// [phi^ / (1 + b), phi^] (kOverestimated, Mu's premise) for three groups: masses,
 /// inertias, and the geometry (lengths with CoM offsets, scaled together so the two legs stay
 /// mirror images, as relabelling (2.38) needs, with the larger of the two bounds). A group with
 /// b = 0 stays at the model's value.
 std::vector<dynamics::Model> cornerModels(const dynamics::Model& model,
-                                          const dynamics::ParameterErrors& b) {
+                                          const dynamics::ParameterErrors& b, BoundSide side) {
   const double bounds[3] = {b.mass, b.inertia, std::max(b.length, b.com)};
   if (!(b.mass >= 0 && b.inertia >= 0 && b.length >= 0 && b.com >= 0))
     throw std::invalid_argument("sliding-mode uncertainty bounds must be >= 0");
@@ -37,7 +38,8 @@ std::vector<dynamics::Model> cornerModels(const dynamics::Model& model,
     for (int g = 0; g < 3; ++g) {
       const bool high = (mask >> g) & 1;
       skip = skip || (bounds[g] == 0 && high);  // one corner for a group without uncertainty
-      e[g] = high ? bounds[g] : 1 / (1 + bounds[g]) - 1;
+      const double top = side == BoundSide::kEitherWay ? bounds[g] : 0.0;
+      e[g] = high ? top : 1 / (1 + bounds[g]) - 1;
     }
     if (!skip) corners.push_back(dynamics::perturbedModel(model, {e[0], e[1], e[2], e[2]}));
   }
@@ -82,8 +84,9 @@ MuSlidingModeGains muTable42(int mu_case) {
 }
 
 MuSlidingModeController::MuSlidingModeController(dynamics::Model model, MuSlidingModeGains gains,
-                                                 const dynamics::ParameterErrors& bound)
-    : model_(std::move(model)), gains_(gains), corners_(cornerModels(model_, bound)) {
+                                                 const dynamics::ParameterErrors& bound,
+                                                 BoundSide side)
+    : model_(std::move(model)), gains_(gains), corners_(cornerModels(model_, bound, side)) {
   if (!model_.joints().front().actuated)
     throw std::invalid_argument(
         "sliding-mode control of every joint needs an actuated stance ankle");

@@ -69,6 +69,13 @@ void analyseHzd(const dynamics::Model& plant, const dynamics::Model& model,
 
 }  // namespace
 
+BoundSide muBoundSide(const Scenario& s) {
+  const auto& e = s.parameter_errors;
+  const bool overestimates = e.mass >= 0 && e.inertia >= 0 && e.length >= 0 && e.com >= 0;
+  return s.errors_on_controller && overestimates ? BoundSide::kOverestimated
+                                                 : BoundSide::kEitherWay;
+}
+
 ScenarioResult runScenario(const dynamics::Model& nominal, const Reference& ref, const Scenario& s,
                            const WalkLog& log) {
   const auto start = std::chrono::steady_clock::now();
@@ -83,7 +90,7 @@ ScenarioResult runScenario(const dynamics::Model& nominal, const Reference& ref,
     controller = std::move(hzd);
   } else if (s.controller == "mu_sliding_mode") {
     controller = std::make_unique<MuSlidingModeController>(
-        model, scaledGains(s.mu_gains, s.gain_scale), s.uncertainty_bound);
+        model, scaledGains(s.mu_gains, s.gain_scale), s.uncertainty_bound, muBoundSide(s));
   } else {
     controller = std::make_unique<TrackingController>(model, makeTrackingLaw(s.controller, gains));
   }

@@ -40,6 +40,11 @@ struct Scenario {
   bool poincare = false;  ///< also the Poincare map (rigid ground only)
 };
 
+/// The box mu_sliding_mode's bound describes: Mu's premise (its model overestimates the robot,
+/// phi^ = (1 + E) phi, sec. 4.2) in Mu's setting, errors on the controller and none negative;
+/// either way otherwise.
+BoundSide muBoundSide(const Scenario& s);
+
 struct ScenarioResult {
   WalkResult walk;
   std::optional<PoincareAnalysis> poincare;  ///< when asked for and the ground is rigid

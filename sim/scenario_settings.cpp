@@ -82,7 +82,10 @@ nlohmann::ordered_json scenarioJson(const ScenarioSettings& o, const Scenario& s
              {{"mass", s.uncertainty_bound.mass},
               {"inertia", s.uncertainty_bound.inertia},
               {"length", s.uncertainty_bound.length},
-              {"com", s.uncertainty_bound.com}}}}},
+              {"com", s.uncertainty_bound.com}}},
+            {"uncertainty_side", muBoundSide(s) == BoundSide::kOverestimated
+                                     ? "model overestimates (Mu sec. 4.2)"
+                                     : "either way"}}},
           {"steps_requested", s.steps},
           {"contact_rules", contactRulesJson(s.rules)}};
 }

@@ -55,10 +55,14 @@ double lyapunovRate(const dynamics::Model& plant, const MuSlidingModeController&
   return (v_at(h) - v_at(-h)) / (2 * h);
 }
 
-TEST(MuSlidingMode, WithItsModelOffTheLyapunovFunctionDecreasesOutsideTheBoundaryLayer) {
+/// Checks (4.7)-(4.8): with the controller's model off by Mu's case `mu_case` and its bound on
+/// `side`, V decreases at random states off the reference with every |s_i| >= s_min; returns
+/// how many states were checked.
+int checkLyapunovDecrease(int mu_case, BoundSide side, double s_min) {
   const auto& plant = test::fiveLinkRobot();
-  const dynamics::ParameterErrors case2 = dynamics::muUncertaintyCase(2);
-  const MuSlidingModeController c(dynamics::perturbedModel(plant, case2), muTable42(2), case2);
+  const dynamics::ParameterErrors errors = dynamics::muUncertaintyCase(mu_case);
+  const MuSlidingModeController c(dynamics::perturbedModel(plant, errors), muTable42(mu_case),
+                                  errors, side);
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> off(-0.3, 0.3);
   const auto& knots = test::polynomialGait().knots();
@@ -72,12 +76,20 @@ TEST(MuSlidingMode, WithItsModelOffTheLyapunovFunctionDecreasesOutsideTheBoundar
     }
     const Eigen::VectorXd z = Eigen::VectorXd::Zero(c.memorySize(Phase::kSsp));
     const Eigen::VectorXd s = c.slidingVariable(Phase::kSsp, theta, dtheta, ref, z);
-    // (4.9): outside |s_i| >= eps_i for gamma = 2.5 and mu_i near 1/2 (eta ~ sigma).
-    if (s.cwiseAbs().minCoeff() < 1.0) continue;
+    if (s.cwiseAbs().minCoeff() < s_min) continue;
     ++checked;
-    EXPECT_LT(lyapunovRate(plant, c, ref, theta, dtheta, z), 0) << trial;
+    EXPECT_LT(lyapunovRate(plant, c, ref, theta, dtheta, z), 0)
+        << "case " << mu_case << ", " << trial;
   }
-  EXPECT_GE(checked, 5);
+  return checked;
+}
+
+TEST(MuSlidingMode, WithItsModelOffTheLyapunovFunctionDecreasesOutsideTheBoundaryLayer) {
+  // (4.9): outside |s_i| >= eps_i for gamma = 2.5 and mu_i near 1/2 (eta ~ sigma).
+  EXPECT_GE(checkLyapunovDecrease(2, BoundSide::kEitherWay, 1.0), 5);
+  // Mu's premise (the model overestimates): the box's lower corner is the true robot, so eta
+  // still covers |Delta| of (4.5) in Mu's largest case, where the model is twice the robot.
+  EXPECT_GE(checkLyapunovDecrease(3, BoundSide::kOverestimated, 1.0), 5);
 }
 
 TEST(MuSlidingMode, WalksThePolynomialGaitWithItsModelOffByMusCase2) {
@@ -94,6 +106,26 @@ TEST(MuSlidingMode, WalksThePolynomialGaitWithItsModelOffByMusCase2) {
   // The same model under computed torque does not get through the first step.
   const TrackingController ct(model, makeTrackingLaw("computed_torque", TrackingGains{}));
   EXPECT_EQ(simulateWalk(plant, ct, ref, {}).steps_completed, 0);
+}
+
+// Mu's case 3 (the controller's model +100 % masses and inertias, +40 % lengths): with the bound
+// read as Mu's premise (the model overestimates, sec. 4.2) eta is about Mu's exact |Delta| and
+// the polynomial gait walks; read as a factor of 2 either way, the box also holds a robot four
+// times as heavy, eta about doubles, the ankle torque reached 1359 N m 2 ms into the first step
+// and the stance tip lifted off.
+TEST(MuSlidingMode, WalksThePolynomialGaitWithItsModelOffByMusCase3UnderMusPremise) {
+  const auto& plant = test::longHeelRobot();
+  const Reference ref(test::polynomialGait(), plant);
+  const auto errors = dynamics::muUncertaintyCase(3);
+  const dynamics::Model model = dynamics::perturbedModel(plant, errors);
+  WalkOptions options;
+  options.steps = 5;
+  const MuSlidingModeController mu(model, muTable42(3), errors, BoundSide::kOverestimated);
+  const WalkResult w = simulateWalk(plant, mu, ref, options);
+  EXPECT_EQ(w.steps_completed, 5) << w.failure;
+  EXPECT_LT(w.max_tracking_error, 0.01);
+  const MuSlidingModeController symmetric(model, muTable42(3), errors, BoundSide::kEitherWay);
+  EXPECT_EQ(simulateWalk(plant, symmetric, ref, options).steps_completed, 0);
 }
 
 // At mid single support the integral of the sliding surface (4.1) is part of the section's state
