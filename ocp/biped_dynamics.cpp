@@ -13,12 +13,10 @@ dynamics::DynamicsPoint unpack(const Eigen::VectorXd& v, const PointLayout& l) {
 
 }  // namespace
 
-BipedDynamics::BipedDynamics(const dynamics::Model& model, const PointLayout& point,
-                             bool tip_acceleration_rows)
+BipedDynamics::BipedDynamics(const dynamics::Model& model, const PointLayout& point)
     : model_(&model),
       point_(point),
-      rows_(tip_acceleration_rows ? dynamics::residualRows(model, point.hasContactForce())
-                                  : model.nLinks()) {}
+      rows_(dynamics::residualRows(model, point.hasContactForce())) {}
 
 int BipedDynamics::rows() const {
   return rows_;

@@ -5,8 +5,6 @@
 /// torques in q-space, lambda the ground force at E (DSP only). Rows:
 ///   SSP: D ddtheta + H dtheta + G - M^T tau = 0           (Mu 2.7, 2.43)
 ///   DSP: ... - J^T lambda = 0 and J ddtheta + Jdot dtheta = 0   (Mu 2.11, 2.9)
-/// The DSP's second rows (E's acceleration) are left out where the tip is pinned at position
-/// level instead (dsp_pin.hpp).
 /// Derivatives are the analytic ones of dynamics/residual_derivatives.hpp.
 #include "dynamics/model.hpp"
 #include "ocp/point_function.hpp"
@@ -17,9 +15,7 @@ namespace gaitopt::ocp {
 class BipedDynamics : public PointFunction {
  public:
   /// The point carries lambda (and the DSP rows apply) when `point` has a contact force.
-  /// @param tip_acceleration_rows  DSP only: include J ddtheta + Jdot dtheta = 0
-  BipedDynamics(const dynamics::Model& model, const PointLayout& point,
-                bool tip_acceleration_rows = true);
+  BipedDynamics(const dynamics::Model& model, const PointLayout& point);
   int rows() const override;
   void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override;
   void jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const override;

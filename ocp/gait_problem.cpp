@@ -12,7 +12,8 @@
 #include "ocp/autodiff_constraint.hpp"
 #include "ocp/biped_dynamics.hpp"
 #include "ocp/collocation_interpolation.hpp"
-#include "ocp/dsp_pin.hpp"
+#include "ocp/dsp_chart.hpp"
+#include "ocp/dsp_chart_export.hpp"
 #include "ocp/gait_links.hpp"
 #include "ocp/ground_contact.hpp"
 #include "ocp/path_functions.hpp"
@@ -94,9 +95,7 @@ Phase addPhase(GaitProblem& p, const dynamics::Model& model, const OcpConfig& c,
   const int n = model.nLinks();
   Phase phase;
   phase.kind = kind;
-  // The trapezoid has one free tip force per segment, not the two the position pin needs.
-  phase.position_pinned =
-      phase.doubleSupport() && c.dsp_position_pin && c.scheme == Scheme::kHermiteSimpson;
+  phase.reduced_coordinates = phase.doubleSupport() && c.dsp_reduced_coordinates;
   phase.point = PointLayout::biped(n, phase.doubleSupport(), c.cost.needsWorkSlacks());
   phase.layout = PhaseLayout{.scheme = c.scheme,
                              .segments = config.segments,
@@ -149,11 +148,12 @@ void addPhaseCost(GaitProblem& p, const dynamics::Model& model, const OcpConfig&
 
 void addPhaseConstraints(GaitProblem& p, const dynamics::Model& model, const OcpConfig& c,
                          const Phase& phase) {
-  p.nlp.addConstraint(
-      std::make_unique<CollocationDefects>(phase.name() + "_defects", phase.name(), phase.layout));
-  addPathConstraint(p, phase, "dynamics",
-                    std::make_shared<BipedDynamics>(model, phase.point, !phase.position_pinned));
-  if (phase.position_pinned) addDspPin(p.nlp, model, phase, p.step_length);
+  if (phase.reduced_coordinates)
+    addReducedDsp(p.nlp, model, phase, p.step_length);
+  else
+    p.nlp.addConstraint(std::make_unique<CollocationDefects>(phase.name() + "_defects",
+                                                             phase.name(), phase.layout));
+  addPathConstraint(p, phase, "dynamics", std::make_shared<BipedDynamics>(model, phase.point));
   if (c.joint_velocity_limits)
     addPathConstraint(p, phase, "joint_rates",
                       std::make_shared<JointRateLimits>(model, phase.point));
@@ -263,9 +263,19 @@ bool fullyActuated(const dynamics::Model& model) {
 /// peak torque, on the default optimum), which a controller's feed-forward would inherit. An
 /// underactuated chain has no such torques; it keeps the scheme's, and summary.json reports
 /// the residual.
-gaits::Knot exportKnot(const Phase& phase, const dynamics::Model& model, const Eigen::VectorXd& x,
-                       double t, double t0) {
-  gaits::Knot knot = knotOf(exportPoint(phase.layout, x, t), model, phase, t0 + t);
+/// A double support in reduced coordinates is exported on its chart (dsp_chart_export.hpp).
+struct PhaseExport {
+  const Phase& phase;
+  const Eigen::VectorXd& x;
+  double step_length;
+  std::optional<ChartTrack> chart;  ///< reduced coordinates only
+};
+
+gaits::Knot exportKnot(const PhaseExport& e, const dynamics::Model& model, double t, double t0) {
+  const Phase& phase = e.phase;
+  Eigen::VectorXd point = exportPoint(phase.layout, e.x, t);
+  if (e.chart) placeOnChart(model, e.step_length, *e.chart, t, phase.point, point);
+  gaits::Knot knot = knotOf(point, model, phase, t0 + t);
   if (!fullyActuated(model)) return knot;
   const VecD theta = knot.theta, dtheta = knot.dtheta, ddtheta = knot.ddtheta;
   knot.tau = phase.doubleSupport() ? dynamics::dspInverseDynamics(model, theta, dtheta, ddtheta,
@@ -277,11 +287,13 @@ gaits::Knot exportKnot(const Phase& phase, const dynamics::Model& model, const E
 /// Knots on the grid j / rate_hz inside the phase plus both ends (exportKnot); the grid is the
 /// step's, not restarted at the phase start.
 void appendDenseKnots(std::vector<gaits::Knot>& knots, const Phase& phase,
-                      const dynamics::Model& model, const Eigen::VectorXd& x, double t0,
-                      double rate_hz) {
+                      const dynamics::Model& model, const Eigen::VectorXd& x, double step_length,
+                      double t0, double rate_hz) {
   const double total = phase.layout.durationAt(x);
   const double gap = 1e-3 / rate_hz;  // no sliver next to an end
-  auto add = [&](double t) { knots.push_back(exportKnot(phase, model, x, t, t0)); };
+  PhaseExport e{phase, x, step_length, std::nullopt};
+  if (phase.reduced_coordinates) e.chart = chartTrack(model, phase, x);
+  auto add = [&](double t) { knots.push_back(exportKnot(e, model, t, t0)); };
   add(0.0);
   for (auto j = static_cast<long>(std::floor(t0 * rate_hz)) + 1;; ++j) {
     const double t = static_cast<double>(j) / rate_hz - t0;
@@ -314,7 +326,7 @@ gaits::Trajectory reconstructDense(const GaitProblem& problem, const dynamics::M
   std::vector<gaits::Knot> knots;
   double t0 = 0;
   for (const Phase* phase : problem.phases()) {
-    appendDenseKnots(knots, *phase, model, x, t0, rate_hz);
+    appendDenseKnots(knots, *phase, model, x, problem.step_length, t0, rate_hz);
     t0 += phase->layout.durationAt(x);
   }
   return gaits::Trajectory(model.name(), problem.step_length, std::move(knots));

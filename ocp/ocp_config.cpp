@@ -24,7 +24,7 @@ std::string relativeTo(const std::string& file, const std::string& path) {
 }
 
 PhaseConfig readPhase(const YamlReader& r) {
-  r.allowOnly({"name", "duration", "duration_min", "duration_max", "segments"});
+  r.allowOnly({"name", "duration", "duration_min", "duration_max", "segments", "mesh"});
   PhaseConfig p;
   p.name = r.choice("name", {"SSP", "DSP"});
   p.duration = r.number("duration", config::inRange(0.01, 10.0, "[s]"));
@@ -37,6 +37,15 @@ PhaseConfig readPhase(const YamlReader& r) {
   const double segments = r.number("segments", config::inRange(1, 1000, "(whole number)"));
   if (segments != std::floor(segments)) r.fail("segments", "expected a whole number of segments");
   p.segments = static_cast<int>(segments);
+  if (r.has("mesh")) {  // segment boundaries as fractions of the phase, e.g. finer after impact
+    p.mesh = r.numbers("mesh", config::inRange(0, 1, "(fraction of the phase)"));
+    try {
+      PhaseLayout{.segments = p.segments, .mesh = p.mesh}.validate();
+    } catch (const std::invalid_argument& e) {
+      r.fail("mesh", fmt::format("{} ({} segments: {} fractions)", e.what(), p.segments,
+                                 p.segments + 1));
+    }
+  }
   return p;
 }
 
@@ -66,7 +75,7 @@ ClearanceProfile readClearance(const YamlReader& r) {
 void readConstraints(const YamlReader& r, OcpConfig& c) {
   r.allowOnly({"torque_limits", "knee_limits", "angle_range", "rate_limit", "joint_velocity_limits",
                "swing_descends", "trailing_lifts", "ground_contact", "impact_friction", "zmp",
-               "clearance", "friction_margin", "zmp_margin", "dsp_position_pin"});
+               "clearance", "friction_margin", "zmp_margin", "dsp_reduced_coordinates"});
   c.ground_contact = r.booleanOr("ground_contact", true);
   c.impact_friction = r.booleanOr("impact_friction", true);
   c.zmp = r.booleanOr("zmp", true);
@@ -81,7 +90,7 @@ void readConstraints(const YamlReader& r, OcpConfig& c) {
   c.joint_velocity_limits = r.booleanOr("joint_velocity_limits", false);
   c.swing_descends = r.booleanOr("swing_descends", true);
   c.trailing_lifts = r.booleanOr("trailing_lifts", true);
-  c.dsp_position_pin = r.booleanOr("dsp_position_pin", false);
+  c.dsp_reduced_coordinates = r.booleanOr("dsp_reduced_coordinates", false);
 }
 
 /// The margin must leave a foot: under half its length (heel + toe), read from the robot file.

@@ -89,9 +89,10 @@ struct OcpConfig {
   bool swing_descends = true;  ///< swing tip vertical velocity <= 0 at strike
   StrikeDesign touchdown;      ///< the designed strike (config key `touchdown`), rigid impacts
   bool trailing_lifts = true;  ///< old stance tip vertical velocity >= 0 after a single impact
-  /// The DSP's leading tip pinned at position and velocity level at every segment end
-  /// (dsp_pin.hpp; Hermite-Simpson only); false: at acceleration level at every point.
-  bool dsp_position_pin = false;
+  /// The DSP collocated in Mu's reduced coordinates (hip position and upper body, 2.19-2.21),
+  /// its leading tip pinned at position and velocity level at every point (dsp_chart.hpp);
+  /// false: theta collocated, the tip pinned at acceleration level at every point.
+  bool dsp_reduced_coordinates = false;
   bool ground_contact = true;  ///< unilateral forces and friction cones at the tips in contact
   /// With ground_contact: the rigid impact's impulses inside their friction cones and pushing
   /// up (Mu 2.31 double, 2.37b single impact).

@@ -14,9 +14,9 @@ struct Phase {
   gaits::Phase kind = gaits::Phase::kSsp;
   PhaseLayout layout;  ///< the collocation points in the decision vector
   PointLayout point;   ///< the variables of each point
-  /// The leading tip is pinned at position and velocity level at every segment end, with the
-  /// acceleration-level rows at the first point only (dsp_pin.hpp).
-  bool position_pinned = false;
+  /// A double support collocated in reduced coordinates, its leading tip pinned at position
+  /// and velocity level at every point (dsp_chart.hpp).
+  bool reduced_coordinates = false;
 
   bool doubleSupport() const { return kind == gaits::Phase::kDsp; }
   /// "ssp" or "dsp": the prefix of the phase's set and block names, and its tag in the NLP.

@@ -207,7 +207,9 @@ nlohmann::ordered_json solutionSummary(const GaitResultOptions& o, const dynamic
       {"constraints", problem.nlp.constraints()},
       {"segments", solution.history.back().segments},
       {"scheme", toString(problem.ssp.layout.scheme)},
-      {"dsp_pin", problem.dsp && problem.dsp->position_pinned ? "position" : "acceleration"}};
+      {"dsp_pin", problem.dsp && problem.dsp->reduced_coordinates
+                      ? "position (reduced coordinates)"
+                      : "acceleration"}};
   summary["mesh_history"] = meshHistory(solution.history);
   summary["solver"] = solverSettings(config);
   return summary;

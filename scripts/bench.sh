@@ -3,7 +3,8 @@
 # minimum time over 15 repetitions, with the ratio of each median to BM_MassMatrix's; then
 # the OCP solve-time table (bench/ocp_bench.cpp), the solve-time profile of issue 16 (where a
 # whole solve's time goes, and the solver settings measured against the shipped ones,
-# bench/solve_profile.cpp), then the speed-against-accuracy table and chart
+# bench/solve_profile.cpp), the double support in theta against reduced coordinates
+# (bench/dsp_coordinates.cpp, issue 15), then the speed-against-accuracy table and chart
 # of the ground models (bench/ground_bench.cpp, scripts/plots/ground_chart.py).
 # Usage: scripts/bench.sh BUILD_DIR   (BUILD_DIR configured with GAITOPT_BUILD_BENCH=ON, built)
 set -euo pipefail
@@ -70,6 +71,11 @@ echo "Load average before the solve profile: $(cut -d' ' -f1-3 /proc/loadavg)"
 "$profile" 5
 echo
 "$profile" 5 levers
+
+echo
+dsp="$1/bench/dsp_coordinates"
+[[ -x "$dsp" ]] || { echo "error: $dsp not built" >&2; exit 1; }
+"$dsp" 3
 
 echo
 ground="$1/bench/ground_bench"

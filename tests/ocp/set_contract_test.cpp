@@ -1,7 +1,7 @@
 // One contract over every constraint set and cost term of the shipped gait problems
 // (configs/ocp/*.yaml, on a coarse mesh: the sets are the same code whatever the segments, and
-// the five-link walk with an impactless touchdown and with a ZMP margin, which no shipped config
-// uses):
+// the five-link walk with an impactless touchdown, with a ZMP margin and with the DSP in reduced
+// coordinates, which no shipped config uses):
 // outputs fully written, derivatives against the set's own central differences, the same
 // sparsity at three random points (tests/support/set_contract.hpp). Each set is its own test,
 // named config_set, so a failure names the set. A last test shows that the contract catches one
@@ -60,10 +60,12 @@ const std::map<std::string, std::unique_ptr<Shipped>>& shippedProblems() {
     OcpConfig zmp_margin = loadOcpConfig((dir / "mu2004_walk.yaml").string());
     zmp_margin.zmp_margin = 0.03;
     all.emplace("mu2004_walk_zmp_margin", coarseProblem(zmp_margin));
-    // The DSP tip pinned at position level (dsp_pin.hpp).
-    OcpConfig position_pin = loadOcpConfig((dir / "mu2004_walk.yaml").string());
-    position_pin.dsp_position_pin = true;
-    all.emplace("mu2004_walk_position_pin", coarseProblem(position_pin));
+    // The DSP in reduced coordinates (dsp_chart.hpp), with fixed and with free durations.
+    for (const std::string name : {"mu2004_walk", "mu2004_walk_cot"}) {
+      OcpConfig reduced = loadOcpConfig((dir / (name + ".yaml")).string());
+      reduced.dsp_reduced_coordinates = true;
+      all.emplace(name + "_reduced_dsp", coarseProblem(reduced));
+    }
     return all;
   }();
   return problems;
@@ -147,7 +149,7 @@ TEST(SetContractCoverage, EverySetOfTheGaitProblemIsChecked) {
                            "ssp_clearance",
                            "ssp_work_split",
                            "dsp_defects",
-                           "dsp_pin_start",
+                           "dsp_chart_defects",
                            "dsp_pin_1",
                            "dsp_dynamics",
                            "dsp_knees",

@@ -1,0 +1,128 @@
+// The double support in Mu's reduced coordinates (ocp/dsp_chart.hpp, 2.19-2.21): exact
+// derivatives of the whole NLP with fixed and free durations, the NLP's size unchanged, the
+// export's projection onto the pinned chain, and the default problem's dense export holding E
+// on the ground at the points and between them (gaits::maxDspTipDrift), where collocating theta
+// lets it drift by 0.59 mm.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include "dynamics/dsp_dynamics.hpp"
+#include "dynamics/robot_config.hpp"
+#include "gaits/consistency.hpp"
+#include "gaits/export_checks.hpp"
+#include "ocp/dsp_chart.hpp"
+#include "ocp/dsp_chart_export.hpp"
+#include "ocp/gait_problem.hpp"
+#include "ocp/initial_guess.hpp"
+#include "ocp/ipopt_adapter.hpp"
+#include "support/nlp_derivatives.hpp"
+
+namespace gaitopt::ocp {
+namespace {
+
+const std::string kDir = std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/";
+
+/// The DSP finer after the impact, where its forces change fastest (the shipped study's mesh).
+const std::vector<double> kGradedMesh = {0, 0.1, 0.28, 0.46, 0.64, 0.82, 1.0};
+
+OcpConfig reducedConfig(const std::string& file) {
+  auto c = loadOcpConfig(kDir + file);
+  c.dsp_reduced_coordinates = true;
+  return c;
+}
+
+TEST(DspChart, WholeNlpJacobianAndHessianEqualCentralDifferences) {
+  // The cost-of-transport problem has free phase durations: the chart's rate terms scale with T.
+  for (const std::string file : {"mu2004_walk.yaml", "mu2004_walk_cot.yaml"}) {
+    auto c = reducedConfig(file);
+    c.phases.front().segments = 2;  // small: every column is differenced
+    c.phases.back().segments = 2;
+    const auto model = dynamics::loadRobot(c.robot_path);
+    const GaitProblem p = buildGaitProblem(model, c, polynomialGuess(model, c));
+    ASSERT_TRUE(p.dsp->reduced_coordinates);
+    const test::DerivativeErrors e = test::compareWithCentralDifferences(p.nlp, 0.02);
+    EXPECT_LT(e.jacobian, 1e-6) << file;
+    EXPECT_LT(e.hessian, 1e-6) << file;
+  }
+}
+
+TEST(DspChart, KeepsTheSizeOfTheNlp) {
+  // Per Hermite-Simpson segment 20 defect rows of theta out, 12 of the chart and 8 pin rows in;
+  // per trapezoidal segment 10 out, 6 and 4 in.
+  for (const Scheme scheme : {Scheme::kHermiteSimpson, Scheme::kTrapezoidal}) {
+    auto c = reducedConfig("mu2004_walk.yaml");
+    c.scheme = scheme;
+    const auto model = dynamics::loadRobot(c.robot_path);
+    const GaitProblem reduced = buildGaitProblem(model, c, polynomialGuess(model, c));
+    c.dsp_reduced_coordinates = false;
+    const GaitProblem theta = buildGaitProblem(model, c, polynomialGuess(model, c));
+    ASSERT_FALSE(theta.dsp->reduced_coordinates);
+    EXPECT_EQ(reduced.nlp.constraints(), theta.nlp.constraints()) << toString(scheme);
+    EXPECT_EQ(reduced.nlp.variables(), theta.nlp.variables()) << toString(scheme);
+  }
+}
+
+TEST(DspChart, ProjectionRecoversThePinnedChainFromItsChart) {
+  const auto c = reducedConfig("mu2004_walk.yaml");
+  const auto model = dynamics::loadRobot(c.robot_path);
+  const gaits::Trajectory guess = polynomialGuess(model, c);  // E pinned exactly in its DSP
+  int checked = 0;
+  for (const gaits::Knot& k : guess.knots()) {
+    if (k.phase != gaits::Phase::kDsp) continue;
+    Eigen::VectorXd y(15);
+    y << k.theta, k.dtheta, k.ddtheta;
+    const Eigen::VectorXd chart = chartValue(model, y);
+    VecD theta = VecD(k.theta) + 0.01 * VecD::LinSpaced(5, -1, 1), dtheta, ddtheta;
+    projectOntoChart(model, c.step_length, chart, theta, dtheta, ddtheta);
+    EXPECT_LT((theta - VecD(k.theta)).cwiseAbs().maxCoeff(), 1e-10);
+    EXPECT_LT((dtheta - VecD(k.dtheta)).cwiseAbs().maxCoeff(), 1e-9);
+    EXPECT_LT((ddtheta - VecD(k.ddtheta)).cwiseAbs().maxCoeff(), 1e-7);
+    ++checked;
+  }
+  EXPECT_GT(checked, 50);
+}
+
+/// The default problem solved with the DSP in reduced coordinates (or theta collocated).
+struct DspSolve {
+  GaitProblem problem;
+  SolveResult result;
+};
+
+DspSolve solveDefault(const dynamics::Model& model, bool reduced) {
+  auto c = reducedConfig("mu2004_walk.yaml");
+  c.dsp_reduced_coordinates = reduced;
+  c.phases.back().mesh = kGradedMesh;
+  DspSolve s{buildGaitProblem(model, c, polynomialGuess(model, c)), {}};
+  s.result = solveWithIpopt(s.problem.nlp, c.solver);
+  return s;
+}
+
+TEST(DspChart, DefaultOptimumsDenseExportHoldsTheTipAtThePointsAndBetweenThem) {
+  const auto model = dynamics::loadRobot(loadOcpConfig(kDir + "mu2004_walk.yaml").robot_path);
+  const DspSolve s = solveDefault(model, true);
+  ASSERT_TRUE(s.result.success) << s.result.status;
+  const double at_points = gaits::maxDspTipDrift(reconstruct(s.problem, model, s.result.x), model);
+  const gaits::Trajectory dense = reconstructDense(s.problem, model, s.result.x, 1000.0);
+  const double between = gaits::maxDspTipDrift(dense, model);
+  RecordProperty("drift_at_points_m", fmt::format("{:.2e}", at_points));
+  RecordProperty("drift_between_points_m", fmt::format("{:.2e}", between));
+  EXPECT_LT(at_points, 1e-6);  // issue 15's bounds; measured 1e-13 for both
+  EXPECT_LT(between, 1e-4);
+  // The export is the pinned chain's motion: E does not accelerate, the equations of motion
+  // hold, the rates are the angles' derivatives and foot B's CoP stays on the foot.
+  EXPECT_LT(gaits::maxTipAcceleration(dense, model), 1e-9);
+  EXPECT_LT(gaits::maxDynamicsResidual(dense, model), 1e-9);
+  EXPECT_LT(gaits::maxRateMismatch(dense), 2e-3);
+  EXPECT_GT(gaits::minFootCopMargin(dense, model), 0.0);
+
+  // Collocating theta misses both bounds: the test tells the two apart.
+  const DspSolve theta = solveDefault(model, false);
+  ASSERT_TRUE(theta.result.success) << theta.result.status;
+  EXPECT_GT(
+      gaits::maxDspTipDrift(reconstructDense(theta.problem, model, theta.result.x, 1000.0), model),
+      1e-4);
+}
+
+}  // namespace
+}  // namespace gaitopt::ocp
