@@ -16,6 +16,7 @@
 #include "ocp/gait_problem.hpp"
 #include "ocp/initial_guess.hpp"
 #include "ocp/ipopt_adapter.hpp"
+#include "support/edited_config.hpp"
 #include "support/nlp_derivatives.hpp"
 
 namespace gaitopt::ocp {
@@ -81,6 +82,21 @@ TEST(DspChart, ProjectionRecoversThePinnedChainFromItsChart) {
     ++checked;
   }
   EXPECT_GT(checked, 50);
+}
+
+TEST(DspChart, ConfigReadsTheSwitchAndAPhaseMesh) {
+  const std::string file = kDir + "mu2004_walk.yaml";
+  const std::string dsp = "  - {name: DSP, duration: 0.1, segments: 6}";
+  EXPECT_EQ(test::loadEditedOcpConfig(
+                file, dsp, "  - {name: DSP, duration: 0.1, segments: 2, mesh: [0, 0.25, 1]}"),
+            "");
+  const std::string bad = test::loadEditedOcpConfig(
+      file, dsp, "  - {name: DSP, duration: 0.1, segments: 2, mesh: [0, 0.75, 0.5, 1]}");
+  EXPECT_NE(bad.find("key 'phases[1].mesh'"), std::string::npos) << bad;
+  EXPECT_NE(bad.find("2 segments: 3 fractions"), std::string::npos) << bad;
+  const std::string typo =
+      test::loadEditedOcpConfig(file, "  friction_margin: 0.15", "  dsp_reduced_coordinate: true");
+  EXPECT_NE(typo.find("dsp_reduced_coordinates"), std::string::npos) << typo;  // names the key
 }
 
 /// The default problem solved with the DSP in reduced coordinates (or theta collocated).
