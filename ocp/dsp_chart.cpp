@@ -16,11 +16,11 @@ namespace {
 /// cdot, at level 1 cdot with rate cddot (entries level * nc + j of chartValue).
 struct TermWriter {
   int nc;
-  std::vector<std::tuple<int, int, int, double, bool>>& out;  // row, point, entry, coeff, scaled
+  std::vector<ChartDefects::Term>& out;
 
   void add(int row0, int point, int block, double coefficient, bool scaled) const {
     for (int j = 0; j < nc; ++j)
-      out.emplace_back(row0 + j, point, block * nc + j, coefficient, scaled);
+      out.push_back({row0 + j, point, block * nc + j, coefficient, scaled});
   }
   /// x_b - x_a - h/2 (xdot_a + xdot_b) = 0.
   void trapezoid(int row0, int level, int a, int b, double h) const {
@@ -148,8 +148,7 @@ ChartDefects::ChartDefects(std::string name, const dynamics::Model& model, const
       nc_(chartSize(model)),
       per_segment_(rowsPerSegment(phase.layout, nc_)) {
   const PhaseLayout& l = phase_.layout;
-  std::vector<std::tuple<int, int, int, double, bool>> raw;
-  const TermWriter w{nc_, raw};
+  const TermWriter w{nc_, terms_};
   for (int k = 0; k < l.segments; ++k) {
     const double h = l.segmentFraction(k);  // per unit T: rate terms are scaled by T
     const int row = k * per_segment_;
@@ -163,7 +162,6 @@ ChartDefects::ChartDefects(std::string name, const dynamics::Model& model, const
       w.hermite(row + 2 * nc_ + level * nc_, level, a, m, b, h);
     }
   }
-  for (const auto& [r, p, e, c, s] : raw) terms_.push_back({r, p, e, c, s});
   std::stable_sort(terms_.begin(), terms_.end(),
                    [](const Term& a, const Term& b) { return a.point < b.point; });
 }

@@ -63,6 +63,12 @@ struct PinnedTip {
 /// segment's points.
 class ChartDefects : public ConstraintSet {
  public:
+  /// One term of a row: coefficient * (T if scaled) * entry `entry` of the chart at `point`.
+  struct Term {
+    int row, point, entry;
+    double coefficient;
+    bool scaled;  ///< a rate term, proportional to the phase duration
+  };
   ChartDefects(std::string name, const dynamics::Model& model, const Phase& phase);
   void values(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> g) const override;
   void jacobian(const Eigen::VectorXd& x, Triplets& out) const override;
@@ -73,12 +79,6 @@ class ChartDefects : public ConstraintSet {
   }
 
  private:
-  /// One term of a row: coefficient * (T if scaled) * entry `entry` of the chart at `point`.
-  struct Term {
-    int row, point, entry;
-    double coefficient;
-    bool scaled;  ///< a rate term, proportional to the phase duration
-  };
   /// (theta, dtheta, ddtheta) of point p.
   Eigen::VectorXd motion(const Eigen::VectorXd& x, int p) const;
   /// The terms' factor at x: coefficient, times T for a rate term.
