@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "ocp/biped_dynamics.hpp"
+#include "ocp/collocation_interpolation.hpp"
+#include "ocp/dsp_chart_export.hpp"
 #include "ocp/mesh_refinement.hpp"
 
 namespace gaitopt::ocp {
@@ -31,6 +33,20 @@ bool refine(OcpConfig& config, const GaitProblem& p, const SolveResult& r,
   return changed;
 }
 
+/// The error estimate of a phase (mesh_refinement.hpp) along the polynomials its export follows:
+/// a double support in reduced coordinates is read on its chart, where its tip stays pinned.
+Eigen::VectorXd phaseErrors(const GaitProblem& p, const Phase& phase, const dynamics::Model& model,
+                            const Eigen::VectorXd& x) {
+  const BipedDynamics dynamics(model, phase.point);
+  if (!phase.reduced_coordinates) return segmentErrors(phase.layout, dynamics, x);
+  const ChartTrack track = chartTrack(model, phase, x);
+  return segmentErrors(phase.layout, dynamics, phase.layout.durationAt(x), [&](double t) {
+    Eigen::VectorXd point = interpolatePoint(phase.layout, x, t);
+    placeOnChart(model, p.step_length, track, t, phase.point, point);
+    return point;
+  });
+}
+
 }  // namespace
 
 GaitSolution solveGait(const dynamics::Model& model, OcpConfig config,
@@ -48,8 +64,7 @@ GaitSolution solveGait(const dynamics::Model& model, OcpConfig config,
     std::vector<Eigen::VectorXd> errors;
     std::vector<double> all;
     for (const Phase* phase : s.problem.phases()) {
-      errors.push_back(
-          segmentErrors(phase->layout, BipedDynamics(model, phase->point), s.result.x));
+      errors.push_back(phaseErrors(s.problem, *phase, model, s.result.x));
       all.insert(all.end(), errors.back().begin(), errors.back().end());
     }
     s.history.push_back(roundOf(s.problem, s.result, all));

@@ -13,16 +13,22 @@ int schemeOrder(Scheme scheme) {
 
 Eigen::VectorXd segmentErrors(const PhaseLayout& l, const PointFunction& dynamics,
                               const Eigen::VectorXd& decision, int samples) {
-  const double total = l.durationAt(decision);
+  return segmentErrors(
+      l, dynamics, l.durationAt(decision),
+      [&](double t) { return interpolatePoint(l, decision, t); }, samples);
+}
+
+Eigen::VectorXd segmentErrors(const PhaseLayout& l, const PointFunction& dynamics, double duration,
+                              const std::function<Eigen::VectorXd(double)>& point_at, int samples) {
   Eigen::VectorXd errors(l.segments);
   Eigen::VectorXd f(dynamics.rows());
   for (int k = 0; k < l.segments; ++k) {
-    const double t0 = total * l.fraction(k), h = total * l.segmentFraction(k);
+    const double t0 = duration * l.fraction(k), h = duration * l.segmentFraction(k);
     double integral = 0;
     for (int j = 0; j <= samples; ++j) {
       // Sample a hair inside the segment so its own polynomial is read at both ends.
       const double s = std::clamp(static_cast<double>(j) / samples, 1e-9, 1 - 1e-9);
-      dynamics.evaluate(interpolatePoint(l, decision, t0 + s * h), f);
+      dynamics.evaluate(point_at(t0 + s * h), f);
       const double weight = (j == 0 || j == samples) ? 0.5 : 1.0;
       integral += weight * f.cwiseAbs().maxCoeff();
     }

@@ -14,6 +14,7 @@
 #include "ocp/dsp_chart.hpp"
 #include "ocp/dsp_chart_export.hpp"
 #include "ocp/gait_problem.hpp"
+#include "ocp/gait_solve.hpp"
 #include "ocp/initial_guess.hpp"
 #include "ocp/ipopt_adapter.hpp"
 #include "support/edited_config.hpp"
@@ -138,6 +139,24 @@ TEST(DspChart, DefaultOptimumsDenseExportHoldsTheTipAtThePointsAndBetweenThem) {
   EXPECT_GT(
       gaits::maxDspTipDrift(reconstructDense(theta.problem, model, theta.result.x, 1000.0), model),
       1e-4);
+}
+
+// Mesh refinement reads a double support in reduced coordinates on its chart, as the export
+// does (gait_solve.cpp): the re-solve on the split mesh keeps the tip pinned, and the largest
+// segment error, which was in the DSP, shrinks.
+TEST(DspChart, MeshRefinementKeepsTheTipPinned) {
+  auto c = reducedConfig("mu2004_walk.yaml");
+  c.phases.back().mesh = kGradedMesh;
+  c.refinement.tolerance = 0.01;  // N m s: splits the DSP's first and last segments
+  c.refinement.max_rounds = 1;
+  const auto model = dynamics::loadRobot(c.robot_path);
+  const GaitSolution s = solveGait(model, c, polynomialGuess(model, c));
+  ASSERT_TRUE(s.result.success) << s.result.status;
+  ASSERT_EQ(s.history.size(), 2u);
+  EXPECT_GT(s.problem.dsp->layout.segments, 6);
+  EXPECT_LT(s.history.back().max_segment_error, s.history.front().max_segment_error);
+  EXPECT_LT(gaits::maxDspTipDrift(reconstructDense(s.problem, model, s.result.x, 1000.0), model),
+            1e-9);
 }
 
 }  // namespace
