@@ -15,6 +15,7 @@
 #include "ocp/dsp_chart.hpp"
 #include "ocp/dsp_chart_export.hpp"
 #include "ocp/gait_links.hpp"
+#include "ocp/jerk_limit.hpp"
 #include "ocp/ground_contact.hpp"
 #include "ocp/path_functions.hpp"
 #include "ocp/quarter_work.hpp"
@@ -154,6 +155,8 @@ void addPhaseConstraints(GaitProblem& p, const dynamics::Model& model, const Ocp
     p.nlp.addConstraint(std::make_unique<CollocationDefects>(phase.name() + "_defects",
                                                              phase.name(), phase.layout));
   addPathConstraint(p, phase, "dynamics", std::make_shared<BipedDynamics>(model, phase.point));
+  if (c.jerk_limit > 0)
+    p.nlp.addConstraint(std::make_unique<JerkLimit>(phase.name() + "_jerk", phase, c.jerk_limit));
   if (c.joint_velocity_limits)
     addPathConstraint(p, phase, "joint_rates",
                       std::make_shared<JointRateLimits>(model, phase.point));

@@ -75,7 +75,7 @@ ClearanceProfile readClearance(const YamlReader& r) {
 void readConstraints(const YamlReader& r, OcpConfig& c) {
   r.allowOnly({"torque_limits", "knee_limits", "angle_range", "rate_limit", "joint_velocity_limits",
                "swing_descends", "trailing_lifts", "ground_contact", "impact_friction", "zmp",
-               "clearance", "friction_margin", "zmp_margin", "dsp_reduced_coordinates"});
+               "clearance", "friction_margin", "zmp_margin", "dsp_reduced_coordinates", "jerk_limit"});
   c.ground_contact = r.booleanOr("ground_contact", true);
   c.impact_friction = r.booleanOr("impact_friction", true);
   c.zmp = r.booleanOr("zmp", true);
@@ -87,6 +87,7 @@ void readConstraints(const YamlReader& r, OcpConfig& c) {
   c.knee_limits = r.booleanOr("knee_limits", true);
   c.angle_range = r.numberOr("angle_range", 0.0, config::inRange(0, std::numbers::pi, "[rad]"));
   c.rate_limit = r.numberOr("rate_limit", 0.0, config::inRange(0, 100, "[rad/s]"));
+  c.jerk_limit = r.numberOr("jerk_limit", 0.0, config::inRange(0, 1e7, "[rad/s^3]"));
   c.joint_velocity_limits = r.booleanOr("joint_velocity_limits", false);
   c.swing_descends = r.booleanOr("swing_descends", true);
   c.trailing_lifts = r.booleanOr("trailing_lifts", true);

@@ -84,6 +84,9 @@ struct OcpConfig {
   bool knee_limits = true;    ///< knees never hyperextend (stance q1 >= 0, swing <= 0)
   double angle_range = 0;     ///< |theta - upright| bound per link [rad] (0: off)
   double rate_limit = 0;      ///< |dtheta| bound [rad/s] (0: off)
+  /// |ddtheta_{p+1} - ddtheta_p| <= J (t_{p+1} - t_p) between consecutive points [rad/s^3]
+  /// (jerk_limit.hpp; 0: off)
+  double jerk_limit = 0;
   /// |dq_j| <= the robot's velocity_limit per joint, dq = M dtheta (Mu 2.41)
   bool joint_velocity_limits = false;
   bool swing_descends = true;  ///< swing tip vertical velocity <= 0 at strike

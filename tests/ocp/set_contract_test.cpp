@@ -150,6 +150,8 @@ TEST(SetContractCoverage, EverySetOfTheGaitProblemIsChecked) {
                            "ssp_work_split",
                            "dsp_defects",
                            "dsp_chart_defects",
+                           "ssp_jerk",
+                           "dsp_jerk",
                            "dsp_pin_1",
                            "dsp_dynamics",
                            "dsp_knees",
