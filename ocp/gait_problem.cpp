@@ -15,8 +15,8 @@
 #include "ocp/dsp_chart.hpp"
 #include "ocp/dsp_chart_export.hpp"
 #include "ocp/gait_links.hpp"
-#include "ocp/jerk_limit.hpp"
 #include "ocp/ground_contact.hpp"
+#include "ocp/jerk_limit.hpp"
 #include "ocp/path_functions.hpp"
 #include "ocp/quarter_work.hpp"
 
@@ -259,14 +259,8 @@ bool fullyActuated(const dynamics::Model& model) {
                      [](const auto& joint) { return joint.actuated; });
 }
 
-/// An exported knot: the scheme's polynomials, with rates that are the derivatives of the
-/// angles (exportPoint). A fully actuated robot gets the torques that produce this motion
-/// exactly, Mu (2.43) in the SSP and (2.11) with the interpolated tip force in the DSP: the
-/// scheme's own quadratic torques miss the dynamics between the points (by 3.2 N m, 8 % of the
-/// peak torque, on the default optimum), which a controller's feed-forward would inherit. An
-/// underactuated chain has no such torques; it keeps the scheme's, and summary.json reports
-/// the residual.
-/// A double support in reduced coordinates is exported on its chart (dsp_chart_export.hpp).
+/// What a phase's export needs; a double support in reduced coordinates is exported on its
+/// chart (dsp_chart_export.hpp).
 struct PhaseExport {
   const Phase& phase;
   const Eigen::VectorXd& x;
@@ -274,6 +268,13 @@ struct PhaseExport {
   std::optional<ChartTrack> chart;  ///< reduced coordinates only
 };
 
+/// An exported knot: the scheme's polynomials, with rates that are the derivatives of the
+/// angles (exportPoint). A fully actuated robot gets the torques that produce this motion
+/// exactly, Mu (2.43) in the SSP and (2.11) with the interpolated tip force in the DSP: the
+/// scheme's own quadratic torques miss the dynamics between the points (by 3.2 N m, 8 % of the
+/// peak torque, on the default optimum), which a controller's feed-forward would inherit. An
+/// underactuated chain has no such torques; it keeps the scheme's, and summary.json reports
+/// the residual.
 gaits::Knot exportKnot(const PhaseExport& e, const dynamics::Model& model, double t, double t0) {
   const Phase& phase = e.phase;
   Eigen::VectorXd point = exportPoint(phase.layout, e.x, t);
