@@ -166,76 +166,69 @@ ChartDefects::ChartDefects(std::string name, const dynamics::Model& model, const
                    [](const Term& a, const Term& b) { return a.point < b.point; });
 }
 
-Eigen::VectorXd ChartDefects::motion(const Eigen::VectorXd& x, int p) const {
+template <class Fn>
+void ChartDefects::forEachPoint(const Eigen::VectorXd& x, Fn fn) const {
   const Slice m = phase_.point.motion();
-  return x.segment(phase_.layout.pointOffset(p) + m.start, m.size);
+  for (auto first = terms_.begin(); first != terms_.end();) {
+    const int p = first->point;
+    const auto last =
+        std::find_if(first, terms_.end(), [p](const Term& t) { return t.point != p; });
+    fn(PointTerms{first, last, x.segment(phase_.layout.pointOffset(p) + m.start, m.size),
+                  phase_.indices(p, m)});
+    first = last;
+  }
 }
 
 void ChartDefects::values(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> g) const {
   const double duration = phase_.layout.durationAt(x);
   g.setZero();
-  int current = -1;
-  Eigen::VectorXd chart;
-  for (const Term& t : terms_) {
-    if (t.point != current) chart = chartValue(*model_, motion(x, current = t.point));
-    g(t.row) += factor(t, duration) * chart(t.entry);
-  }
+  forEachPoint(x, [&](const PointTerms& pt) {
+    const Eigen::VectorXd chart = chartValue(*model_, pt.motion);
+    for (auto t = pt.first; t != pt.last; ++t) g(t->row) += factor(*t, duration) * chart(t->entry);
+  });
 }
 
 void ChartDefects::jacobian(const Eigen::VectorXd& x, Triplets& out) const {
   const double duration = phase_.layout.durationAt(x);
   const int duration_index = phase_.layout.duration_index;
-  for (auto first = terms_.begin(); first != terms_.end();) {
-    const int p = first->point;
-    const auto last =
-        std::find_if(first, terms_.end(), [p](const Term& t) { return t.point != p; });
-    const Eigen::VectorXd y = motion(x, p);
-    const Eigen::MatrixXd jac = chartJacobian(*model_, y);
-    const Eigen::VectorXd chart = chartValue(*model_, y);
-    const std::vector<int> columns = phase_.indices(p, phase_.point.motion());
-    for (auto t = first; t != last; ++t) {
-      for (size_t c = 0; c < columns.size(); ++c)
-        out.emplace_back(t->row, columns[c],
+  forEachPoint(x, [&](const PointTerms& pt) {
+    const Eigen::MatrixXd jac = chartJacobian(*model_, pt.motion);
+    const Eigen::VectorXd chart = chartValue(*model_, pt.motion);
+    for (auto t = pt.first; t != pt.last; ++t) {
+      for (size_t c = 0; c < pt.columns.size(); ++c)
+        out.emplace_back(t->row, pt.columns[c],
                          factor(*t, duration) * jac(t->entry, static_cast<int>(c)));
       if (t->scaled && duration_index >= 0)
         out.emplace_back(t->row, duration_index, t->coefficient * chart(t->entry));
     }
-    first = last;
-  }
+  });
 }
 
 void ChartDefects::hessian(const Eigen::VectorXd& x, const Eigen::VectorXd& lambda,
                            Triplets& out) const {
   const double duration = phase_.layout.durationAt(x);
   const int duration_index = phase_.layout.duration_index;
-  for (auto first = terms_.begin(); first != terms_.end();) {
-    const int p = first->point;
-    const auto last =
-        std::find_if(first, terms_.end(), [p](const Term& t) { return t.point != p; });
-    const Eigen::VectorXd y = motion(x, p);
+  const int n = phase_.point.n;
+  forEachPoint(x, [&](const PointTerms& pt) {
+    const std::vector<int>& col = pt.columns;
     Eigen::VectorXd weights = Eigen::VectorXd::Zero(3 * nc_);
-    for (auto t = first; t != last; ++t) weights(t->entry) += lambda(t->row) * factor(*t, duration);
-    const Eigen::MatrixXd h = chartHessian(*model_, y, weights);
-    const std::vector<int> columns = phase_.indices(p, phase_.point.motion());
-    const int n = phase_.point.n;
-    const int m = static_cast<int>(columns.size());
+    for (auto t = pt.first; t != pt.last; ++t)
+      weights(t->entry) += lambda(t->row) * factor(*t, duration);
+    const Eigen::MatrixXd h = chartHessian(*model_, pt.motion, weights);
     // Each link's (theta, theta), (dtheta, theta), (ddtheta, theta) and (dtheta, dtheta).
     for (int j = 0; j < n; ++j)
       for (const auto& [r, c] : {std::pair{j, j}, {n + j, j}, {2 * n + j, j}, {n + j, n + j}})
-        out.emplace_back(std::max(columns[r], columns[c]), std::min(columns[r], columns[c]),
-                         h(r, c));
-    if (duration_index >= 0) {  // d2/dT dy of T * coefficient * chart_entry(y)
-      const Eigen::MatrixXd jac = chartJacobian(*model_, y);
-      for (auto t = first; t != last; ++t) {
-        if (!t->scaled) continue;
-        for (int d = 0; d < m; ++d)
-          out.emplace_back(std::max(duration_index, columns[d]),
-                           std::min(duration_index, columns[d]),
-                           lambda(t->row) * t->coefficient * jac(t->entry, d));
-      }
+        out.emplace_back(std::max(col[r], col[c]), std::min(col[r], col[c]), h(r, c));
+    if (duration_index < 0) return;
+    // d2/dT dy of T * coefficient * chart_entry(y)
+    const Eigen::MatrixXd jac = chartJacobian(*model_, pt.motion);
+    for (auto t = pt.first; t != pt.last; ++t) {
+      if (!t->scaled) continue;
+      for (size_t d = 0; d < col.size(); ++d)
+        out.emplace_back(std::max(duration_index, col[d]), std::min(duration_index, col[d]),
+                         lambda(t->row) * t->coefficient * jac(t->entry, static_cast<int>(d)));
     }
-    first = last;
-  }
+  });
 }
 
 void addReducedDsp(Nlp& nlp, const dynamics::Model& model, const Phase& phase, double step_length) {

@@ -79,8 +79,15 @@ class ChartDefects : public ConstraintSet {
   }
 
  private:
-  /// (theta, dtheta, ddtheta) of point p.
-  Eigen::VectorXd motion(const Eigen::VectorXd& x, int p) const;
+  /// The terms of one point, its (theta, dtheta, ddtheta) at x and their columns in x.
+  struct PointTerms {
+    std::vector<Term>::const_iterator first, last;
+    Eigen::VectorXd motion;
+    std::vector<int> columns;
+  };
+  /// Calls fn(const PointTerms&) for each point the terms touch, in order.
+  template <class Fn>
+  void forEachPoint(const Eigen::VectorXd& x, Fn fn) const;
   /// The terms' factor at x: coefficient, times T for a rate term.
   double factor(const Term& t, double duration) const {
     return t.coefficient * (t.scaled ? duration : 1.0);
