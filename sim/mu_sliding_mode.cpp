@@ -136,10 +136,11 @@ MuSlidingModeController::Errors MuSlidingModeController::errors(
   return r;
 }
 
-VecD MuSlidingModeController::sspTorque(const VecD& theta, const VecD& dtheta,
-                                        const Errors& err) const {
+MuSlidingModeController::SspLaw MuSlidingModeController::sspLaw(const VecD& theta,
+                                                                const VecD& dtheta,
+                                                                const Errors& err) const {
   const VecD own = sspEquivalent(model_, theta, dtheta, err.u, err.v);
-  return own + sspSwitching(theta, dtheta, err, own);
+  return {own, sspSwitching(theta, dtheta, err, own)};
 }
 
 VecD MuSlidingModeController::sspSwitching(const VecD& theta, const VecD& dtheta, const Errors& err,
@@ -175,9 +176,10 @@ VecD MuSlidingModeController::unclippedTorque(gaits::Phase phase, const VecD& th
                                               const VecD& dtheta, const gaits::Knot& ref,
                                               const Eigen::VectorXd& memory) const {
   const Errors err = errors(phase, theta, dtheta, ref, memory);
-  return phase == gaits::Phase::kSsp
-             ? sspTorque(theta, dtheta, err)
-             : dspTorque(theta, dtheta, ref, err, memory.tail(model_.nLinks()));
+  if (phase == gaits::Phase::kDsp)
+    return dspTorque(theta, dtheta, ref, err, memory.tail(model_.nLinks()));
+  const SspLaw law = sspLaw(theta, dtheta, err);
+  return law.own + law.switching;
 }
 
 VecD MuSlidingModeController::torque(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
@@ -216,8 +218,7 @@ Eigen::VectorXd MuSlidingModeController::memoryRate(gaits::Phase phase, const Ve
                                                     const Eigen::VectorXd& memory) const {
   const Errors err = errors(phase, theta, dtheta, ref, memory);
   if (phase == gaits::Phase::kDsp) return rateOf(phase, err, VecD(), memory);
-  const VecD own = sspEquivalent(model_, theta, dtheta, err.u, err.v);
-  return rateOf(phase, err, sspSwitching(theta, dtheta, err, own), memory);
+  return rateOf(phase, err, sspLaw(theta, dtheta, err).switching, memory);
 }
 
 ControlOutput MuSlidingModeController::control(gaits::Phase phase, const VecD& theta,
@@ -227,9 +228,8 @@ ControlOutput MuSlidingModeController::control(gaits::Phase phase, const VecD& t
   if (phase == gaits::Phase::kDsp)
     return {clipTorque(model_, dspTorque(theta, dtheta, ref, err, memory.tail(model_.nLinks()))),
             rateOf(phase, err, VecD(), memory)};
-  const VecD own = sspEquivalent(model_, theta, dtheta, err.u, err.v);
-  const VecD switching = sspSwitching(theta, dtheta, err, own);
-  return {clipTorque(model_, own + switching), rateOf(phase, err, switching, memory)};
+  const SspLaw law = sspLaw(theta, dtheta, err);
+  return {clipTorque(model_, law.own + law.switching), rateOf(phase, err, law.switching, memory)};
 }
 
 Eigen::VectorXd MuSlidingModeController::slidingVariable(gaits::Phase phase, const VecD& theta,

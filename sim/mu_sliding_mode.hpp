@@ -119,7 +119,12 @@ class MuSlidingModeController : public Controller {
   };
   Errors errors(gaits::Phase phase, const VecD& theta, const VecD& dtheta, const gaits::Knot& ref,
                 const Eigen::VectorXd& memory) const;
-  VecD sspTorque(const VecD& theta, const VecD& dtheta, const Errors& err) const;
+  /// The SSP law's two parts at one state: the equivalent control (4.4) and the switching term
+  /// (4.5)-(4.6); the torque is their sum, T_c's filter follows the second.
+  struct SspLaw {
+    VecD own, switching;
+  };
+  SspLaw sspLaw(const VecD& theta, const VecD& dtheta, const Errors& err) const;
   VecD dspTorque(const VecD& theta, const VecD& dtheta, const gaits::Knot& ref, const Errors& err,
                  const VecD& carried) const;
   /// The SSP's switching term -(eta + sigma) o tanh(gamma s) of (4.5)-(4.6) at that state,
