@@ -1,18 +1,24 @@
 #include "gaits/gait_export.hpp"
 
+#include <future>
+
 #include "gaits/gait_summary.hpp"
 #include "gaits/grid_export.hpp"
 #include "gaits/switch_states.hpp"
 #include "gaits/trajectory_csv.hpp"
 #include "gaits/trajectory_json.hpp"
+#include "gaits/trajectory_text.hpp"
 
 namespace gaitopt::gaits {
 
 size_t writeGaitExport(const std::string& dir, const Trajectory& traj, const dynamics::Model& model,
                        double rate_hz, nlohmann::ordered_json summary) {
   const GridExport grid = exportGrid(traj, rate_hz);
-  writeTrajectoryCsv(grid.samples, grid.step_length, model, dir + "/trajectory.csv");
-  writeTrajectoryJson(grid.samples, grid.step_length, model, dir + "/trajectory.json");
+  const TrajectoryText text(grid.samples, grid.step_length, model);  // formatted once for both
+  auto json =
+      std::async(std::launch::async, [&] { writeTrajectoryJson(text, dir + "/trajectory.json"); });
+  writeTrajectoryCsv(text, dir + "/trajectory.csv");
+  json.get();
   summary.update(switchStatesJson(grid, model));
   writeJsonFile(summary, dir + "/summary.json");
   return grid.samples.size();

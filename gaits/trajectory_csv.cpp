@@ -18,7 +18,6 @@
 #include "gaits/trajectory_columns.hpp"
 #include "gaits/trajectory_row.hpp"
 #include "io/checked_write.hpp"
-#include "io/number_text.hpp"
 
 namespace gaitopt::gaits {
 namespace {
@@ -36,22 +35,6 @@ std::string headerSummary(int n) {
       "tau0..tau{1},fb_x,fb_y,fe_x,fe_y,zmp_x,hip_x,hip_y,swing_x,swing_y,com_x,com_y, then the "
       "physical joints' angles, rates (d...) and torques (tau_...)",
       n, n - 1);
-}
-
-// ---------------------------------------------------------------------------------------------
-// Writing
-
-void appendRow(std::string& out, const Knot& knot, const dynamics::Model& model,
-               const std::vector<PhysicalJoint>& joints, double step_length) {
-  io::appendShortest(out, knot.t);
-  out += ',';
-  out += toString(knot.phase);
-  const Eigen::VectorXd values = rowNumbers(knot, model, joints, step_length);
-  for (Eigen::Index i = 0; i < values.size(); ++i) {
-    out += ',';
-    io::appendShortest(out, values(i));
-  }
-  out += '\n';
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -180,20 +163,14 @@ std::string summaryBeside(const std::string& path) {
 
 }  // namespace
 
+void writeTrajectoryCsv(const TrajectoryText& text, const std::string& path) {
+  const std::string header = fmt::format("{}\n", fmt::join(text.names(), ","));
+  io::writeFileAtomically(path, header + text.csvLines());  // no reader sees a half-written file
+}
+
 void writeTrajectoryCsv(const std::vector<Knot>& rows, double step_length,
                         const dynamics::Model& model, const std::string& path) {
-  if (rows.empty())
-    throw std::invalid_argument(fmt::format("cannot write an empty trajectory to '{}'", path));
-  if (rows.front().theta.size() != model.nLinks())
-    throw std::invalid_argument(fmt::format("trajectory has {} links but robot '{}' has {}",
-                                            rows.front().theta.size(), model.name(),
-                                            model.nLinks()));
-  const std::vector<std::string> names = columnNames(model);
-  std::string out = fmt::format("{}\n", fmt::join(names, ","));
-  out.reserve(rows.size() * names.size() * 20);  // about 20 characters a number
-  const std::vector<PhysicalJoint> joints = physicalJoints(model);
-  for (const Knot& knot : rows) appendRow(out, knot, model, joints, step_length);
-  io::writeFileAtomically(path, out);  // a reader never sees a half-written file
+  writeTrajectoryCsv(TrajectoryText(rows, step_length, model), path);
 }
 
 Trajectory readTrajectoryCsv(const std::string& path, const dynamics::Model& model) {

@@ -3,8 +3,8 @@
 /// The controller interface: trajectory.csv of DESIGN.md sec. 5. One header row, one row per
 /// sample, columns t,phase,theta1..,dtheta1..,ddtheta1..,q0..,dq0..,tau0..,fb_x,fb_y,fe_x,fe_y,
 /// zmp_x,hip_x,hip_y,swing_x,swing_y,com_x,com_y, then the physical joints (robots with fewer
-/// links write the columns they have). Numbers are printed with 17 significant digits, so a round
-/// trip is exact.
+/// links write the columns they have). Numbers are the shortest text that reads back as the same
+/// double, so a round trip is exact.
 ///
 /// A gait folder's file holds the fixed-rate grid of grid_export.hpp (t_i = i / rate, strictly
 /// increasing) and its summary.json the switch states (switch_states.hpp); files written before
@@ -14,13 +14,17 @@
 
 #include "dynamics/model.hpp"
 #include "gaits/trajectory.hpp"
+#include "gaits/trajectory_text.hpp"
 
 namespace gaitopt::gaits {
 
+/// Writes the header and one row per row of `text`, written to a temporary name and renamed when
+/// complete. @throws std::runtime_error on I/O.
+void writeTrajectoryCsv(const TrajectoryText& text, const std::string& path);
+
 /// Writes one row per knot of `rows` (derived columns q, dq, zmp, hip and swing tip computed from
-/// the model; `step_length` places the leading tip for the DSP's ZMP). Written to a temporary
-/// name and renamed when complete. @throws std::runtime_error on I/O, std::invalid_argument for
-/// no rows or rows of another link count.
+/// the model; `step_length` places the leading tip for the DSP's ZMP). @throws
+/// std::runtime_error on I/O, std::invalid_argument as TrajectoryText.
 void writeTrajectoryCsv(const std::vector<Knot>& rows, double step_length,
                         const dynamics::Model& model, const std::string& path);
 

@@ -11,12 +11,16 @@
 
 #include "dynamics/model.hpp"
 #include "gaits/trajectory.hpp"
+#include "gaits/trajectory_text.hpp"
 
 namespace gaitopt::gaits {
 
+/// One entry per row of `text` in each column, written to a temporary name and renamed when
+/// complete. @throws std::runtime_error on I/O.
+void writeTrajectoryJson(const TrajectoryText& text, const std::string& path);
+
 /// One entry per knot of `rows` in each column (`step_length` as for writeTrajectoryCsv).
-/// Written to a temporary name and renamed when complete. @throws std::runtime_error on I/O,
-/// std::invalid_argument as rowNumbers.
+/// @throws std::runtime_error on I/O, std::invalid_argument as TrajectoryText.
 void writeTrajectoryJson(const std::vector<Knot>& rows, double step_length,
                          const dynamics::Model& model, const std::string& path);
 

@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,7 @@
 #include "gaits/metrics.hpp"
 #include "gaits/trajectory_csv.hpp"
 #include "gaits/trajectory_json.hpp"
+#include "gaits/trajectory_text.hpp"
 #include "support/fixtures.hpp"
 #include "support/same_knots.hpp"
 
@@ -185,6 +187,7 @@ TEST_F(TrajectoryCsv, JsonVariantWritesNullWhereANumberIsNotFinite) {
   std::vector<Knot> knots = traj_.knots();
   knots[3].tau(1) = std::numeric_limits<double>::quiet_NaN();
   knots[4].tau(1) = std::numeric_limits<double>::infinity();
+  knots[6].tau(2) = -std::numeric_limits<double>::infinity();
   const std::string json_path = path("not_finite.json");
   gaits::writeTrajectoryJson(knots, traj_.stepLength(), model_, json_path);
   const auto json = nlohmann::json::parse(readText(json_path));
@@ -192,7 +195,29 @@ TEST_F(TrajectoryCsv, JsonVariantWritesNullWhereANumberIsNotFinite) {
   EXPECT_TRUE(tau1[3].is_null());
   EXPECT_TRUE(tau1[4].is_null());
   EXPECT_EQ(tau1[5].get<double>(), knots[5].tau(1));
+  EXPECT_TRUE(json["data"]["tau2"][6].is_null());
   EXPECT_TRUE(json["data"]["t"][0].is_number_float());  // 0 is written 0.0, as nlohmann does
+}
+
+// The text both files are written from is formatted in two halves at once; any row count,
+// odd or a single row, must give every row's every cell, each reading back exactly.
+TEST_F(TrajectoryCsv, SharedTextHoldsEveryCellOfAnyRowCount) {
+  for (const size_t count : {size_t{1}, size_t{2}, size_t{9}}) {
+    const std::vector<Knot> knots(traj_.knots().begin(), traj_.knots().begin() + count);
+    const gaits::TrajectoryText text(knots, traj_.stepLength(), model_);
+    ASSERT_EQ(text.rows(), count);
+    const std::vector<std::string> lines = split(text.csvLines(), '\n');
+    ASSERT_EQ(lines.size(), count);
+    for (size_t k = 0; k < count; ++k) {
+      const std::vector<std::string> cells = split(lines[k], ',');
+      ASSERT_EQ(cells.size(), header_.size()) << "row " << k << " of " << count;
+      for (size_t c = 0; c < cells.size(); ++c) EXPECT_EQ(text.cell(k, c), cells[c]);
+      EXPECT_EQ(cells, split(lines_[k + 1], ','));  // the same as the file of all rows
+      EXPECT_EQ(std::stod(cells[0]), knots[k].t);
+      EXPECT_EQ(std::stod(cells[2]), knots[k].theta(0));
+    }
+  }
+  EXPECT_THROW(gaits::TrajectoryText({}, traj_.stepLength(), model_), std::invalid_argument);
 }
 
 TEST_F(TrajectoryCsv, HeaderFollowsDesignSection5) {
