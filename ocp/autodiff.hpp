@@ -12,13 +12,24 @@
 /// others for fixed values of the first (the impact residual is linear in the rates and
 /// impulses once the angles are fixed). The outer differentiation runs over those few
 /// directions only, which makes the Hessian several times cheaper.
+///
+/// The derivative vectors have bounded sizes, so they live on the stack: with heap vectors the
+/// nested impact Hessian allocated at every operation and took two thirds of a five-link
+/// solve's callback time (issue 16).
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
+#include "dynamics/conventions.hpp"
+
 namespace gaitopt::ocp {
 
-using AD1 = Eigen::AutoDiffScalar<Eigen::VectorXd>;
-using AD2 = Eigen::AutoDiffScalar<Eigen::Matrix<AD1, Eigen::Dynamic, 1>>;
+/// The most variables of one link constraint: periodicity and the double support's start take
+/// two states (4 n), the impact a state and its 2 n + 6 impact variables.
+inline constexpr int kMaxAdInputs = 4 * gaitopt::kMaxLinks + 8;
+
+using AD1 = Eigen::AutoDiffScalar<Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxAdInputs, 1>>;
+/// Nonlinear in at most a robot's angles.
+using AD2 = Eigen::AutoDiffScalar<Eigen::Matrix<AD1, Eigen::Dynamic, 1, 0, gaitopt::kMaxLinks, 1>>;
 
 /// d/dy_c of a first-order scalar; constants carry an empty derivative vector.
 inline double adDerivative(const AD1& a, int c) {
@@ -50,7 +61,7 @@ Eigen::MatrixXd adHessian(const Fn& fn, const Eigen::VectorXd& y, const Eigen::V
     ya(i).value() = AD1(y(i), m, i);
     ya(i).derivatives().resize(k);
     for (int c = 0; c < k; ++c)
-      ya(i).derivatives()(c) = AD1(i == c ? 1.0 : 0.0, Eigen::VectorXd::Zero(m));
+      ya(i).derivatives()(c) = AD1(i == c ? 1.0 : 0.0, AD1::DerType::Zero(m));
   }
   const Eigen::Matrix<AD2, Eigen::Dynamic, 1> g = fn(ya);
   AD2 s = AD2(0.0);

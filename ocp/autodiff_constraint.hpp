@@ -4,9 +4,12 @@
 /// relabelling, boundary conditions), differentiated by autodiff.hpp.
 #include <algorithm>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include "ocp/autodiff.hpp"
 #include "ocp/nlp.hpp"
@@ -23,7 +26,13 @@ class AutoDiffConstraint : public ConstraintSet {
         nonlinear_(nonlinear),
         fn_(std::move(fn)),
         lower_(std::move(lower)),
-        upper_(std::move(upper)) {}
+        upper_(std::move(upper)) {
+    if (indices_.size() > static_cast<size_t>(kMaxAdInputs) || nonlinear_ > gaitopt::kMaxLinks)
+      throw std::logic_error(fmt::format(
+          "link constraint '{}' has {} variables ({} nonlinear); autodiff.hpp bounds them at {} "
+          "({})",
+          this->name(), indices_.size(), nonlinear_, kMaxAdInputs, gaitopt::kMaxLinks));
+  }
 
   Eigen::VectorXd lowerBounds() const override { return lower_; }
   Eigen::VectorXd upperBounds() const override { return upper_; }
