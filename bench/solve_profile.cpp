@@ -24,6 +24,7 @@
 
 #include <fmt/format.h>
 
+#include "bench/mumps_calls.hpp"
 #include "bench/ocp_bench_common.hpp"
 #include "ocp/gait_solve.hpp"
 #include "ocp/initial_guess.hpp"
@@ -84,6 +85,7 @@ struct Run {
   double cpu = 0, load = 0, guess = 0, build = 0, ipopt = 0, linear = 0, callbacks = 0,
          sparsity = 0;
   double write = 0, total = 0;
+  bench::MumpsCalls mumps;  ///< inside Ipopt's linear solves
   int iterations = 0, factorizations = 0, kkt_dimension = 0, kkt_nonzeros = 0;
   double cost = 0;
   bool success = false;
@@ -115,8 +117,10 @@ Run solveOnce(const Problem& p, const Lever& lever, const std::string& out_dir) 
   r.load = since(t);
   const gaits::Trajectory guess = ocp::polynomialGuess(model, config);
   r.guess = since(t);
+  bench::resetMumpsCalls();
   const ocp::GaitSolution s = ocp::solveGait(model, config, guess);
   const double solve_gait = since(t);
+  r.mumps = bench::mumpsCalls();
   std::filesystem::create_directories(out_dir);
   ocp::writeGaitResult({path, 1000, {}}, model, config, s, nullptr, out_dir);
   r.write = since(t);
@@ -170,6 +174,34 @@ void printProfile(const std::vector<std::vector<Run>>& runs) {
   }
 }
 
+/// The median of one MUMPS phase's time over the runs.
+double medianOf(const std::vector<Run>& runs, bench::MumpsPhase bench::MumpsCalls::*phase) {
+  std::vector<double> v;
+  for (const Run& r : runs) v.push_back((r.mumps.*phase).seconds);
+  return bench::median(v);
+}
+
+/// MUMPS's part of each solve: its analysis, factorizations and back-solves (the linear solves
+/// column of the profile holds them and Ipopt's own work around them).
+void printMumps(const std::vector<std::vector<Run>>& runs) {
+  fmt::print(
+      "\n| problem | analyses | analysis s | factorizations | s each | back-solves | s each | "
+      "MUMPS "
+      "s | of the whole solve |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  using C = bench::MumpsCalls;
+  for (size_t i = 0; i < kProblems.size(); ++i) {
+    const auto& rs = runs[i];
+    const C& last = rs.back().mumps;
+    const double analysis = medianOf(rs, &C::analysis),
+                 factorization = medianOf(rs, &C::factorization), solve = medianOf(rs, &C::solve);
+    const double total = analysis + factorization + solve;
+    fmt::print("| {} | {} | {:.4f} | {} | {:.4f} | {} | {:.4f} | {:.4f} | {:.0f} % |\n",
+               kProblems[i].label, last.analysis.calls, analysis, last.factorization.calls,
+               factorization / last.factorization.calls, last.solve.calls, solve / last.solve.calls,
+               total, 100 * total / medianOf(rs, &Run::total));
+  }
+}
+
 void printLevers(const std::vector<std::vector<std::vector<Run>>>& runs) {
   fmt::print(
       "| problem | setting | converged | iterations | factorizations | cost J | total CPU s | "
@@ -212,6 +244,7 @@ int main(int argc, char** argv) {
     std::vector<std::vector<Run>> shipped;
     for (auto& r : runs) shipped.push_back(r[0]);
     printProfile(shipped);
+    printMumps(shipped);
   } else {
     printLevers(runs);
   }

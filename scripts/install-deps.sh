@@ -15,9 +15,11 @@ packages=(
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   python3 python3-matplotlib python3-numpy python3-pil
 )
-# What the tests, benchmarks, bindings, report test and MPI libraries add (make test, make build).
+# What the tests, benchmarks, bindings, report test and MPI libraries add (make test, make build);
+# the solve profile times MUMPS's calls through its C header (dmumps_c.h).
 full_packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libboost-dev
+  libmumps-seq-dev
   python3-dev pybind11-dev python3-pytest
   chromium
   valgrind
