@@ -2,22 +2,27 @@
 /// Where the time of a whole gait solve goes (issue 16), the way `gaitopt optimize` spends it:
 /// reading the config and robot, the polynomial guess, building the NLP, recording the
 /// sparsity, Ipopt (its linear solves apart), our callbacks, and writing the result folder
-/// (trajectory.csv at 1 kHz and summary.json, no pictures). Problems: the default five-link
-/// gait (configs/ocp/mu2004_walk.yaml, SSP 30 + DSP 6 Hermite-Simpson segments), RABBIT after
-/// Kelly 2017 at 25 segments and the five-link cost-of-transport problem, each from its
-/// polynomial guess. Every stage is the median of `repeats` runs in this process.
+/// (trajectory.csv and trajectory.json at 1 kHz and summary.json, no pictures). Problems: the
+/// default five-link gait (configs/ocp/mu2004_walk.yaml, SSP 30 + DSP 6 Hermite-Simpson segments),
+/// RABBIT after Kelly 2017 at 25 segments and the five-link cost-of-transport problem, each from
+/// its polynomial guess. Every stage is the median of `repeats` runs in this process.
 ///
 /// With `levers`, the same problems are solved under each solver setting of kLevers, the
 /// settings interleaved run by run (so load from other jobs falls on all alike), and each
 /// median is given as a ratio to the shipped setting's median of the same run.
-/// Usage: solve_profile [repeats] [levers]
+/// With `--csv FILE`, the profile's medians are also written to FILE (results/solve_profile.csv,
+/// which the README cites).
+/// Usage: solve_profile [repeats] [levers | --csv FILE]
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <unistd.h>
@@ -148,6 +153,13 @@ double medianOf(const std::vector<Run>& runs, double Run::*field) {
   return bench::median(v);
 }
 
+/// Setup and output, everything of a solve but Ipopt and our callbacks: the stages' medians,
+/// summed.
+double medianSetup(const std::vector<Run>& runs) {
+  return medianOf(runs, &Run::load) + medianOf(runs, &Run::guess) + medianOf(runs, &Run::build) +
+         medianOf(runs, &Run::sparsity) + medianOf(runs, &Run::write);
+}
+
 void printProfile(const std::vector<std::vector<Run>>& runs) {
   fmt::print(
       "| problem | iterations | factorizations | KKT dim | KKT nnz | cost J | total CPU s | total "
@@ -160,9 +172,7 @@ void printProfile(const std::vector<std::vector<Run>>& runs) {
     const auto& rs = runs[i];
     const Run& last = rs.back();
     const double total = medianOf(rs, &Run::total);
-    const double setup = medianOf(rs, &Run::load) + medianOf(rs, &Run::guess) +
-                         medianOf(rs, &Run::build) + medianOf(rs, &Run::sparsity) +
-                         medianOf(rs, &Run::write);
+    const double setup = medianSetup(rs);
     fmt::print(
         "| {} | {} | {} | {} | {} | {:.6g} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} "
         "| {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.0f} % |\n",
@@ -202,6 +212,44 @@ void printMumps(const std::vector<std::vector<Run>>& runs) {
   }
 }
 
+/// "N CPUs, model name" from /proc/cpuinfo, for the machine a profile was measured on.
+std::string machine() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string model = "unknown CPU";
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("model name", 0) == 0) {
+      model = line.substr(line.find(':') + 2);
+      break;
+    }
+  return fmt::format("{} CPUs, {}", std::thread::hardware_concurrency(), model);
+}
+
+/// The profile's medians as CSV, one row per problem, for the README (scripts/docs.py).
+void writeProfileCsv(const std::vector<std::vector<Run>>& runs, const std::string& path) {
+  std::ofstream out(path);
+  out << "problem,machine,iterations,factorizations,kkt_dim,kkt_nnz,cost,total_cpu_s,total_s,"
+         "setup_s,setup_share,ipopt_s,callbacks_s,write_s,mumps_analysis_s,mumps_factorizations,"
+         "mumps_factorization_s,mumps_back_solves,mumps_back_solve_s,mumps_s\n";
+  using C = bench::MumpsCalls;
+  for (size_t i = 0; i < kProblems.size(); ++i) {
+    const auto& rs = runs[i];
+    const Run& last = rs.back();
+    const double total = medianOf(rs, &Run::total);
+    const double setup = medianSetup(rs);
+    const double analysis = medianOf(rs, &C::analysis),
+                 factorization = medianOf(rs, &C::factorization), solve = medianOf(rs, &C::solve);
+    out << fmt::format(
+        "{},\"{}\",{},{},{},{},{:.9g},{:.4f},{:.4f},{:.4f},{:.3f},{:.4f},{:.4f},{:.4f},{:.4f},{},"
+        "{:.4f},{},{:.4f},{:.4f}\n",
+        kProblems[i].label, machine(), last.iterations, last.factorizations, last.kkt_dimension,
+        last.kkt_nonzeros, last.cost, medianOf(rs, &Run::cpu), total, setup, setup / total,
+        medianOf(rs, &Run::ipopt), medianOf(rs, &Run::callbacks), medianOf(rs, &Run::write),
+        analysis, last.mumps.factorization.calls, factorization, last.mumps.solve.calls, solve,
+        analysis + factorization + solve);
+  }
+  if (!out) throw std::runtime_error("cannot write " + path);
+}
+
 void printLevers(const std::vector<std::vector<std::vector<Run>>>& runs) {
   fmt::print(
       "| problem | setting | converged | iterations | factorizations | cost J | total CPU s | "
@@ -226,6 +274,11 @@ void printLevers(const std::vector<std::vector<std::vector<Run>>>& runs) {
 int main(int argc, char** argv) {
   const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 7;
   const bool levers = argc > 2 && std::string(argv[2]) == "levers";
+  const std::string csv = argc > 3 && std::string(argv[2]) == "--csv" ? argv[3] : "";
+  if (argc > 2 && !levers && csv.empty()) {
+    fmt::print(stderr, "usage: solve_profile [repeats] [levers | --csv FILE]\n");
+    return 2;
+  }
   const size_t settings = levers ? kLevers.size() : 1;
   const std::string out =
       (std::filesystem::temp_directory_path() / fmt::format("solve_profile.{}", ::getpid()))
@@ -245,6 +298,7 @@ int main(int argc, char** argv) {
     for (auto& r : runs) shipped.push_back(r[0]);
     printProfile(shipped);
     printMumps(shipped);
+    if (!csv.empty()) writeProfileCsv(shipped, csv);
   } else {
     printLevers(runs);
   }

@@ -68,7 +68,8 @@ echo
 profile="$1/bench/solve_profile"
 [[ -x "$profile" ]] || { echo "error: $profile not built" >&2; exit 1; }
 echo "Load average before the solve profile: $(cut -d' ' -f1-3 /proc/loadavg)"
-"$profile" 5
+"$profile" 5 --csv "$1/solve_profile.csv"
+echo "(medians also in $1/solve_profile.csv; results/solve_profile.csv, cited by the README, is a copy)"
 echo
 "$profile" 5 levers
 

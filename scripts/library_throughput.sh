@@ -3,16 +3,18 @@
 # configs/library/throughput.yaml solved from scratch with 1 worker process, with 2, and as 2
 # MPI ranks of 1 worker each (mpirun --oversubscribe -np 2), REPEATS times each, interleaved so
 # that load from other jobs falls on every mode alike. Prints a markdown table of medians and
-# the ratio to the 1-worker median.
-# Usage: scripts/library_throughput.sh BUILD_DIR [REPEATS]   (default 3)
+# the ratio to the 1-worker median; with CSV, also writes the medians there (the README cites
+# results/library_throughput.csv).
+# Usage: scripts/library_throughput.sh BUILD_DIR [REPEATS [CSV]]   (default 3 repeats)
 set -euo pipefail
 
-if [[ $# -lt 1 || $# -gt 2 ]]; then
-  echo "usage: $0 BUILD_DIR [REPEATS]" >&2
+if [[ $# -lt 1 || $# -gt 3 ]]; then
+  echo "usage: $0 BUILD_DIR [REPEATS [CSV]]" >&2
   exit 2
 fi
 gaitopt="$1/apps/gaitopt"
 repeats="${2:-3}"
+csv_out="${3:-}"
 [[ -x "$gaitopt" ]] || { echo "error: $gaitopt not built" >&2; exit 1; }
 root="$(cd "$(dirname "$0")/.." && pwd)"
 config="$root/configs/library/throughput.yaml"
@@ -47,9 +49,9 @@ cpu="$(sed -n 's/^model name[[:space:]]*:[[:space:]]*//p' /proc/cpuinfo | head -
 echo "Machine: $(nproc) CPUs, ${cpu:-unknown CPU}; date: $(date -u '+%Y-%m-%d %H:%M:%S UTC')"
 echo "Library: configs/library/throughput.yaml (9 points), medians of $repeats runs"
 echo
-/usr/bin/python3 - "$work" "${modes[@]}" <<'PY'
-import statistics, sys
-work, modes = sys.argv[1], sys.argv[2:]
+/usr/bin/python3 - "$work" "$csv_out" "${modes[@]}" <<'PY'
+import csv, statistics, sys
+work, csv_out, modes = sys.argv[1], sys.argv[2], sys.argv[3:]
 rows = {}
 for m in modes:
     runs = [tuple(map(float, line.split())) for line in open(f"{work}/{m}.txt")]
@@ -61,4 +63,11 @@ print("|---|---:|---:|---:|---:|")
 for m in modes:
     pps, wall, solved = rows[m]
     print(f"| {m} | {pps:.3f} | {wall:.1f} | {solved}/9 | {pps / base:.2f} |")
+if csv_out:
+    with open(csv_out, "w", newline="") as f:
+        out = csv.writer(f)
+        out.writerow(["mode", "points_per_second", "wall_time_s", "points_solved", "ratio"])
+        for m in modes:
+            pps, wall, solved = rows[m]
+            out.writerow([m, f"{pps:.3f}", f"{wall:.2f}", solved, f"{pps / base:.2f}"])
 PY
