@@ -31,6 +31,7 @@ MumpsPhase* phaseOf(int job) {
 MumpsCalls mumpsCalls() {
   return calls;
 }
+
 void resetMumpsCalls() {
   calls = {};
 }

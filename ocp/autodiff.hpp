@@ -14,8 +14,8 @@
 /// directions only, which makes the Hessian several times cheaper.
 ///
 /// The derivative vectors have bounded sizes, so they live on the stack: with heap vectors the
-/// nested impact Hessian allocated at every operation and took two thirds of a five-link
-/// solve's callback time (issue 16).
+/// nested impact Hessian allocated at every operation and took two thirds of the Hessian
+/// callback's time in a five-link solve (issue 16).
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
