@@ -81,7 +81,8 @@ Run walkOn(const dynamics::Model& model, const sim::TrackingController& controll
   for (int k = 0; k < repeats; ++k) {
     run.path = {};
     const auto start = std::chrono::steady_clock::now();
-    run.walk = sim::walk(model, controller, ref, ground, {kSteps, {}}, recordHip(model, run.path));
+    run.walk =
+        sim::walk(model, controller, ref, ground, {kSteps, {}, {}}, recordHip(model, run.path));
     wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   run.wall = median(wall);

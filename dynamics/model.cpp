@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string_view>
 #include <utility>
 
 #include <fmt/format.h>
@@ -109,6 +110,13 @@ void Model::precompute() {
     total_mass_ += li.mass;
   }
   total_com_ /= total_mass_;
+}
+
+void requireKneedLegs(const Model& model, std::string_view user) {
+  if (model.legLinks() != 2)
+    throw std::invalid_argument(
+        fmt::format("{} needs legs of two links (thigh and shank); robot '{}' has {} per leg", user,
+                    model.name(), model.legLinks()));
 }
 
 }  // namespace gaitopt::dynamics

@@ -11,6 +11,7 @@
 /// ZMP support and the step geometry E = B + (step_length, 0) are unchanged.
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <Eigen/Core>
@@ -114,5 +115,10 @@ class Model {
   ChainPoint tip_, hip_, total_com_;
   std::vector<ChainPoint> com_, joint_;
 };
+
+/// For methods written for knees (Mu's five-link robot and RABBIT): @throws
+/// std::invalid_argument naming `user` ("the polynomial gait (Mu ch. 3)", ...) unless each leg
+/// has two links, thigh and shank.
+void requireKneedLegs(const Model& model, std::string_view user);
 
 }  // namespace gaitopt::dynamics

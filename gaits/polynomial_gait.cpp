@@ -33,11 +33,7 @@ PointMotion difference(const PointMotion& a, const PointMotion& b) {
 }  // namespace
 
 void requireKneedLegs(const dynamics::Model& model) {
-  if (model.legLinks() != 2)
-    throw std::invalid_argument(fmt::format(
-        "the polynomial gait (Mu ch. 3) needs legs of two links (thigh and shank); robot '{}' "
-        "has {} per leg",
-        model.name(), model.legLinks()));
+  dynamics::requireKneedLegs(model, "the polynomial gait (Mu ch. 3)");
 }
 
 PolynomialGait::PolynomialGait(const dynamics::Model& model, GaitParams params, HipPlan plan)

@@ -54,11 +54,8 @@ int rowsPerSegment(const PhaseLayout& l, int nc) {
 }  // namespace
 
 int chartSize(const dynamics::Model& model) {
-  if (model.legLinks() != 2)
-    throw std::invalid_argument(fmt::format(
-        "the double support's reduced coordinates (hip position and upper body) need legs of two "
-        "links; robot '{}' has {} per leg",
-        model.name(), model.legLinks()));
+  dynamics::requireKneedLegs(model,
+                             "the double support in reduced coordinates (hip and upper body)");
   return model.nLinks() - 2;
 }
 

@@ -3,6 +3,9 @@
 // export's projection onto the pinned chain, and the default problem's dense export holding E
 // on the ground at the points and between them (gaits::maxDspTipDrift), where collocating theta
 // lets it drift by 0.59 mm.
+#include <stdexcept>
+#include <string>
+
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -18,6 +21,7 @@
 #include "ocp/initial_guess.hpp"
 #include "ocp/ipopt_adapter.hpp"
 #include "support/edited_config.hpp"
+#include "support/fixtures.hpp"
 #include "support/nlp_derivatives.hpp"
 
 namespace gaitopt::ocp {
@@ -83,6 +87,20 @@ TEST(DspChart, ProjectionRecoversThePinnedChainFromItsChart) {
     ++checked;
   }
   EXPECT_GT(checked, 50);
+}
+
+// The chart is the hip and upper body over two-link legs (Mu 2.19-2.21): a knee-less robot is
+// refused by name before any problem is built.
+TEST(DspChart, RefusesARobotWithoutKnees) {
+  EXPECT_EQ(chartSize(test::loadNamed("mu2004_five_link")), 3);
+  try {
+    chartSize(test::loadNamed("compass_gait"));
+    FAIL() << "accepted";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("reduced coordinates"), std::string::npos) << what;
+    EXPECT_NE(what.find("has 1 per leg"), std::string::npos) << what;
+  }
 }
 
 TEST(DspChart, ConfigReadsTheSwitchAndAPhaseMesh) {

@@ -37,7 +37,7 @@ LoggedWalk walkOn(const GroundModel& ground, int steps) {
     w.hip.push_back(Vec2d(s.stance_x, s.stance_y) + dynamics::hip<double>(plant, s.theta));
   };
   const auto start = std::chrono::steady_clock::now();
-  w.result = walk(plant, test::computedTorque(), ref, ground, {steps, {}}, log);
+  w.result = walk(plant, test::computedTorque(), ref, ground, {steps, {}, {}}, log);
   const double cpu =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   double simulated = 0;
@@ -122,7 +122,7 @@ TEST(GroundWalk, ACompliantWalkStartsWithTheStanceTipCarryingItsLoad) {
   ASSERT_GT(planned, 100.0);
   std::vector<double> normal;
   const auto log = [&](const WalkSample& s) { normal.push_back(s.force_stance(1)); };
-  walk(test::longHeelRobot(), test::computedTorque(), ref, shippedGround("impedance"), {1, {}},
+  walk(test::longHeelRobot(), test::computedTorque(), ref, shippedGround("impedance"), {1, {}, {}},
        log);
   ASSERT_GE(normal.size(), 2U);
   EXPECT_NEAR(normal.front(), planned, 0.05 * planned);

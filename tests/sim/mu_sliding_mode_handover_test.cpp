@@ -71,7 +71,9 @@ TEST(MuSlidingModeHandover, OneCallGivesTheTorqueAndTheMemoryRate) {
     const Eigen::VectorXd rate = c.memoryRate(phase, theta, dtheta, k, memory);
     EXPECT_LT((u.tau - tau).cwiseAbs().maxCoeff(), 1e-12 * tau.cwiseAbs().maxCoeff());
     EXPECT_LT((u.memory_rate - rate).cwiseAbs().maxCoeff(), 1e-12 * rate.cwiseAbs().maxCoeff());
-    if (phase == Phase::kSsp) EXPECT_GT(carried(rate).norm(), 1.0);  // T_c's filter moves
+    if (phase == Phase::kSsp) {
+      EXPECT_GT(carried(rate).norm(), 1.0);  // T_c's filter moves
+    }
   }
 }
 

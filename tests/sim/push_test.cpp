@@ -37,7 +37,7 @@ TEST(Push, RigidWalkKeepsTheMomentumBalanceThroughThePulse) {
   const Vec2d impulse(3.0, 0.0);
   std::vector<WalkSample> log;
   const WalkResult w = walk(m, test::computedTorque(), ref, RigidGround{},
-                            {2, Push{2, std::nullopt, impulse, 0.1}}, [&](const WalkSample& s) {
+                            {2, Push{2, std::nullopt, impulse, 0.1}, {}}, [&](const WalkSample& s) {
                               if (s.step == 1 && s.phase == gaits::Phase::kSsp) log.push_back(s);
                             });
   ASSERT_EQ(w.steps_completed, 2) << w.failure;
@@ -73,7 +73,7 @@ TEST(Push, SmallPushIsRecoveredAndALargeOneIsAFallOnEveryGround) {
   for (const auto& ground : grounds) {
     const auto walkWith = [&](double impulse) {
       return walk(test::longHeelRobot(), c, ref, ground,
-                  {6, Push{2, std::nullopt, Vec2d(impulse, 0), 0.1}});
+                  {6, Push{2, std::nullopt, Vec2d(impulse, 0), 0.1}, {}});
     };
     // Forward pushes only: time-based tracking of a gait that lands at rest cannot take a lag
     // (a backward push of 0.2 N s already leaves the swing tip hovering at the planned posture).
