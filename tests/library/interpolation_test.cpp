@@ -15,6 +15,18 @@
 namespace gaitopt::library {
 namespace {
 
+TEST(Interpolation, CellWeightsBlendTheBracketingPoints) {
+  const Grid grid({std::vector<double>{0.4, 0.5, 0.7}, {0.3, 0.4}, {0.0}});
+  const auto w = cellWeights(grid, {0.55, 0.3, 0.0});
+  ASSERT_EQ(w.size(), 2u);
+  EXPECT_EQ(grid.point(w[0].first).name, "v0.500_L0.300_s+0.000");
+  EXPECT_NEAR(w[0].second, 0.75, 1e-12);
+  EXPECT_NEAR(w[1].second, 0.25, 1e-12);
+  EXPECT_EQ(cellWeights(grid, {0.45, 0.35, 0.0}).size(), 4u);
+  EXPECT_THROW(cellWeights(grid, {0.8, 0.35, 0.0}), std::domain_error);
+}
+
+#ifdef NDEBUG  // five OCP solves: Release only
 constexpr double kRate = 500;
 
 /// The gait at `speed`, started as the library starts it: from the neighbour's gait, retimed
@@ -39,17 +51,6 @@ double maxAngleError(const gaits::Trajectory& a, const gaits::Trajectory& b) {
   return worst;
 }
 
-TEST(Interpolation, CellWeightsBlendTheBracketingPoints) {
-  const Grid grid({std::vector<double>{0.4, 0.5, 0.7}, {0.3, 0.4}, {0.0}});
-  const auto w = cellWeights(grid, {0.55, 0.3, 0.0});
-  ASSERT_EQ(w.size(), 2u);
-  EXPECT_EQ(grid.point(w[0].first).name, "v0.500_L0.300_s+0.000");
-  EXPECT_NEAR(w[0].second, 0.75, 1e-12);
-  EXPECT_NEAR(w[1].second, 0.25, 1e-12);
-  EXPECT_EQ(cellWeights(grid, {0.45, 0.35, 0.0}).size(), 4u);
-  EXPECT_THROW(cellWeights(grid, {0.8, 0.35, 0.0}), std::domain_error);
-}
-
 /// The largest distance of the swing tip from its touchdown point (step_length, 0) from the end
 /// of the SSP on (the DSP pins it there) [m].
 double maxTipMiss(const gaits::Trajectory& traj, const dynamics::Model& model) {
@@ -64,7 +65,6 @@ double maxTipMiss(const gaits::Trajectory& traj, const dynamics::Model& model) {
   return worst;
 }
 
-#ifdef NDEBUG  // five OCP solves: Release only
 TEST(Interpolation, BlendErrorFallsWithTheSquareOfTheGridSpacing) {
   const ocp::OcpConfig base =
       ocp::loadOcpConfig(GAITOPT_SOURCE_DIR "/configs/ocp/mu2004_walk.yaml");

@@ -46,6 +46,7 @@ LoggedWalk walkOn(const GroundModel& ground, int steps) {
   return w;
 }
 
+#ifdef NDEBUG  // for the ten-step walks, Release only
 /// Largest |hip y - rigid hip y at the same hip x| [m]: the path, whatever the timing.
 double hipPathDistance(std::vector<Vec2d> rigid, const std::vector<Vec2d>& other) {
   std::sort(rigid.begin(), rigid.end(), [](const Vec2d& a, const Vec2d& b) { return a(0) < b(0); });
@@ -60,6 +61,7 @@ double hipPathDistance(std::vector<Vec2d> rigid, const std::vector<Vec2d>& other
   }
   return worst;
 }
+#endif
 
 /// Tolerances against the rigid walk, per ground.
 struct Agreement {

@@ -34,7 +34,9 @@ TEST(Reference, PastTouchdownTheSwingTipDescendsAtTheStrikeVelocity) {
     const Vec2d v = dynamics::pointVelocity<double>(model.tipWeights(), k.theta, k.dtheta);
     EXPECT_LT(v(1), -0.1 + 0.01) << late;
     EXPECT_GT(v(1), -0.1 - 0.02 - 0.5 * (late - 0.1)) << late;
-    if (late > 0.1) EXPECT_LT(tipHeight(k), last_height - 0.1 * (late - 0.1) * 0.9) << late;
+    if (late > 0.1) {
+      EXPECT_LT(tipHeight(k), last_height - 0.1 * (late - 0.1) * 0.9) << late;
+    }
   }
   // The old reference froze: its tip never got below the planned touchdown height.
   const Reference frozen_like(test::polynomialGait(), model, {.strike_velocity = 0});
