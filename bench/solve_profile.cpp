@@ -153,36 +153,18 @@ double medianOf(const std::vector<Run>& runs, double Run::*field) {
   return bench::median(v);
 }
 
-/// Setup and output, everything of a solve but Ipopt and our callbacks: the stages' medians,
-/// summed.
-double medianSetup(const std::vector<Run>& runs) {
-  return medianOf(runs, &Run::load) + medianOf(runs, &Run::guess) + medianOf(runs, &Run::build) +
-         medianOf(runs, &Run::sparsity) + medianOf(runs, &Run::write);
-}
+/// One problem's stage medians over its runs, and its last run for the counts (the same in
+/// every run).
+struct Medians {
+  const Run* last = nullptr;
+  double cpu = 0, total = 0, load = 0, guess = 0, build = 0, sparsity = 0, ipopt = 0, linear = 0,
+         callbacks = 0, write = 0;
+  double analysis = 0, factorization = 0, solve = 0;  ///< MUMPS's phases
 
-void printProfile(const std::vector<std::vector<Run>>& runs) {
-  fmt::print(
-      "| problem | iterations | factorizations | KKT dim | KKT nnz | cost J | total CPU s | total "
-      "s | "
-      "load s | "
-      "guess s | build s | sparsity s | Ipopt s | (linear solves s) | callbacks s | write s | "
-      "setup share |\n"
-      "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-  for (size_t i = 0; i < kProblems.size(); ++i) {
-    const auto& rs = runs[i];
-    const Run& last = rs.back();
-    const double total = medianOf(rs, &Run::total);
-    const double setup = medianSetup(rs);
-    fmt::print(
-        "| {} | {} | {} | {} | {} | {:.6g} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} "
-        "| {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.0f} % |\n",
-        kProblems[i].label, last.iterations, last.factorizations, last.kkt_dimension,
-        last.kkt_nonzeros, last.cost, medianOf(rs, &Run::cpu), total, medianOf(rs, &Run::load),
-        medianOf(rs, &Run::guess), medianOf(rs, &Run::build), medianOf(rs, &Run::sparsity),
-        medianOf(rs, &Run::ipopt), medianOf(rs, &Run::linear), medianOf(rs, &Run::callbacks),
-        medianOf(rs, &Run::write), 100 * setup / total);
-  }
-}
+  /// Setup and output, everything of a solve but Ipopt and our callbacks.
+  double setup() const { return load + guess + build + sparsity + write; }
+  double mumps() const { return analysis + factorization + solve; }
+};
 
 /// The median of one MUMPS phase's time over the runs.
 double medianOf(const std::vector<Run>& runs, bench::MumpsPhase bench::MumpsCalls::*phase) {
@@ -191,24 +173,58 @@ double medianOf(const std::vector<Run>& runs, bench::MumpsPhase bench::MumpsCall
   return bench::median(v);
 }
 
+Medians mediansOf(const std::vector<Run>& rs) {
+  using C = bench::MumpsCalls;
+  return {&rs.back(),
+          medianOf(rs, &Run::cpu),
+          medianOf(rs, &Run::total),
+          medianOf(rs, &Run::load),
+          medianOf(rs, &Run::guess),
+          medianOf(rs, &Run::build),
+          medianOf(rs, &Run::sparsity),
+          medianOf(rs, &Run::ipopt),
+          medianOf(rs, &Run::linear),
+          medianOf(rs, &Run::callbacks),
+          medianOf(rs, &Run::write),
+          medianOf(rs, &C::analysis),
+          medianOf(rs, &C::factorization),
+          medianOf(rs, &C::solve)};
+}
+
+void printProfile(const std::vector<Medians>& problems) {
+  fmt::print(
+      "| problem | iterations | factorizations | KKT dim | KKT nnz | cost J | total CPU s | total "
+      "s | "
+      "load s | "
+      "guess s | build s | sparsity s | Ipopt s | (linear solves s) | callbacks s | write s | "
+      "setup share |\n"
+      "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  for (size_t i = 0; i < kProblems.size(); ++i) {
+    const Medians& m = problems[i];
+    const Run& last = *m.last;
+    fmt::print(
+        "| {} | {} | {} | {} | {} | {:.6g} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} "
+        "| {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.0f} % |\n",
+        kProblems[i].label, last.iterations, last.factorizations, last.kkt_dimension,
+        last.kkt_nonzeros, last.cost, m.cpu, m.total, m.load, m.guess, m.build, m.sparsity, m.ipopt,
+        m.linear, m.callbacks, m.write, 100 * m.setup() / m.total);
+  }
+}
+
 /// MUMPS's part of each solve: its analysis, factorizations and back-solves (the linear solves
 /// column of the profile holds them and Ipopt's own work around them).
-void printMumps(const std::vector<std::vector<Run>>& runs) {
+void printMumps(const std::vector<Medians>& problems) {
   fmt::print(
       "\n| problem | analyses | analysis s | factorizations | s each | back-solves | s each | "
       "MUMPS "
       "s | of the whole solve |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-  using C = bench::MumpsCalls;
   for (size_t i = 0; i < kProblems.size(); ++i) {
-    const auto& rs = runs[i];
-    const C& last = rs.back().mumps;
-    const double analysis = medianOf(rs, &C::analysis),
-                 factorization = medianOf(rs, &C::factorization), solve = medianOf(rs, &C::solve);
-    const double total = analysis + factorization + solve;
+    const Medians& m = problems[i];
+    const bench::MumpsCalls& last = m.last->mumps;
     fmt::print("| {} | {} | {:.4f} | {} | {:.4f} | {} | {:.4f} | {:.4f} | {:.0f} % |\n",
-               kProblems[i].label, last.analysis.calls, analysis, last.factorization.calls,
-               factorization / last.factorization.calls, last.solve.calls, solve / last.solve.calls,
-               total, 100 * total / medianOf(rs, &Run::total));
+               kProblems[i].label, last.analysis.calls, m.analysis, last.factorization.calls,
+               m.factorization / last.factorization.calls, last.solve.calls,
+               m.solve / last.solve.calls, m.mumps(), 100 * m.mumps() / m.total);
   }
 }
 
@@ -225,27 +241,22 @@ std::string machine() {
 }
 
 /// The profile's medians as CSV, one row per problem, for the README (scripts/docs.py).
-void writeProfileCsv(const std::vector<std::vector<Run>>& runs, const std::string& path) {
+void writeProfileCsv(const std::vector<Medians>& problems, const std::string& path) {
   std::ofstream out(path);
   out << "problem,machine,iterations,factorizations,kkt_dim,kkt_nnz,cost,total_cpu_s,total_s,"
          "setup_s,setup_share,ipopt_s,callbacks_s,write_s,mumps_analysis_s,mumps_factorizations,"
          "mumps_factorization_s,mumps_back_solves,mumps_back_solve_s,mumps_s\n";
-  using C = bench::MumpsCalls;
+  const std::string where = machine();
   for (size_t i = 0; i < kProblems.size(); ++i) {
-    const auto& rs = runs[i];
-    const Run& last = rs.back();
-    const double total = medianOf(rs, &Run::total);
-    const double setup = medianSetup(rs);
-    const double analysis = medianOf(rs, &C::analysis),
-                 factorization = medianOf(rs, &C::factorization), solve = medianOf(rs, &C::solve);
+    const Medians& m = problems[i];
+    const Run& last = *m.last;
     out << fmt::format(
         "{},\"{}\",{},{},{},{},{:.9g},{:.4f},{:.4f},{:.4f},{:.3f},{:.4f},{:.4f},{:.4f},{:.4f},{},"
         "{:.4f},{},{:.4f},{:.4f}\n",
-        kProblems[i].label, machine(), last.iterations, last.factorizations, last.kkt_dimension,
-        last.kkt_nonzeros, last.cost, medianOf(rs, &Run::cpu), total, setup, setup / total,
-        medianOf(rs, &Run::ipopt), medianOf(rs, &Run::callbacks), medianOf(rs, &Run::write),
-        analysis, last.mumps.factorization.calls, factorization, last.mumps.solve.calls, solve,
-        analysis + factorization + solve);
+        kProblems[i].label, where, last.iterations, last.factorizations, last.kkt_dimension,
+        last.kkt_nonzeros, last.cost, m.cpu, m.total, m.setup(), m.setup() / m.total, m.ipopt,
+        m.callbacks, m.write, m.analysis, last.mumps.factorization.calls, m.factorization,
+        last.mumps.solve.calls, m.solve, m.mumps());
   }
   if (!out) throw std::runtime_error("cannot write " + path);
 }
@@ -294,8 +305,8 @@ int main(int argc, char** argv) {
   std::filesystem::remove_all(out);
   fmt::print("Medians of {} runs per row in one process; times are wall clock.\n\n", repeats);
   if (!levers) {
-    std::vector<std::vector<Run>> shipped;
-    for (auto& r : runs) shipped.push_back(r[0]);
+    std::vector<Medians> shipped;
+    for (const auto& r : runs) shipped.push_back(mediansOf(r[0]));
     printProfile(shipped);
     printMumps(shipped);
     if (!csv.empty()) writeProfileCsv(shipped, csv);
