@@ -146,10 +146,11 @@ Run solveOnce(const Problem& p, const Lever& lever, const std::string& out_dir) 
   return r;
 }
 
-/// The median of one field over the runs.
-double medianOf(const std::vector<Run>& runs, double Run::*field) {
+/// The median over the runs of `field`: a double member of Run, or a function of a run.
+template <class Field>
+double medianOf(const std::vector<Run>& runs, Field field) {
   std::vector<double> v;
-  for (const Run& r : runs) v.push_back(r.*field);
+  for (const Run& r : runs) v.push_back(std::invoke(field, r));
   return bench::median(v);
 }
 
@@ -166,11 +167,9 @@ struct Medians {
   double mumps() const { return analysis + factorization + solve; }
 };
 
-/// The median of one MUMPS phase's time over the runs.
-double medianOf(const std::vector<Run>& runs, bench::MumpsPhase bench::MumpsCalls::*phase) {
-  std::vector<double> v;
-  for (const Run& r : runs) v.push_back((r.mumps.*phase).seconds);
-  return bench::median(v);
+/// A run's time in one MUMPS phase, for medianOf.
+auto secondsIn(bench::MumpsPhase bench::MumpsCalls::*phase) {
+  return [phase](const Run& r) { return (r.mumps.*phase).seconds; };
 }
 
 Medians mediansOf(const std::vector<Run>& rs) {
@@ -186,9 +185,9 @@ Medians mediansOf(const std::vector<Run>& rs) {
           medianOf(rs, &Run::linear),
           medianOf(rs, &Run::callbacks),
           medianOf(rs, &Run::write),
-          medianOf(rs, &C::analysis),
-          medianOf(rs, &C::factorization),
-          medianOf(rs, &C::solve)};
+          medianOf(rs, secondsIn(&C::analysis)),
+          medianOf(rs, secondsIn(&C::factorization)),
+          medianOf(rs, secondsIn(&C::solve))};
 }
 
 void printProfile(const std::vector<Medians>& problems) {
