@@ -56,10 +56,7 @@ TextBlock formatRows(std::span<const Knot> rows, double step_length, const dynam
 
 TrajectoryText::TrajectoryText(const std::vector<Knot>& rows, double step_length,
                                const dynamics::Model& model)
-    : robot_(model.name()),
-      step_length_(step_length),
-      names_(columnNames(model)),
-      rows_(rows.size()) {
+    : robot_(model.name()), step_length_(step_length), names_(columnNames(model)) {
   requireRows(rows, model);
   // The halves are formatted at once on two cores: formatting is most of a write (issue 16).
   const std::span<const Knot> all(rows);

@@ -24,7 +24,7 @@ class TrajectoryText {
   const std::string& robot() const { return robot_; }
   double stepLength() const { return step_length_; }
   const std::vector<std::string>& names() const { return names_; }
-  size_t rows() const { return rows_; }
+  size_t rows() const { return ends_.size() / names_.size(); }
   std::string_view cell(size_t row, size_t column) const {
     const size_t i = row * names_.size() + column;
     const size_t start = i == 0 ? 0 : ends_[i - 1] + 1;  // after the separator
@@ -38,7 +38,6 @@ class TrajectoryText {
   std::string robot_;
   double step_length_ = 0;
   std::vector<std::string> names_;
-  size_t rows_ = 0;
   std::string chars_;         ///< every cell and its separator, row by row
   std::vector<size_t> ends_;  ///< the position of each cell's separator in chars_
 };
