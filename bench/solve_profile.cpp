@@ -42,14 +42,19 @@ using Clock = std::chrono::steady_clock;
 
 struct Problem {
   std::string label;
-  std::string file;      ///< under configs/ocp/
-  int ssp_segments = 0;  ///< 0: the config's
+  std::string file;           ///< under configs/ocp/
+  int ssp_segments = 0;       ///< 0: the config's
+  std::string linear_solver;  ///< empty: the config's
 };
 
+/// Each problem with the config's linear solver (MUMPS) and with gaitopt's (ocp/kkt/).
 const std::vector<Problem> kProblems = {
-    {"five-link default (30+6)", "mu2004_walk.yaml", 0},
-    {"RABBIT Kelly 2017 (25)", "rabbit_kelly2017.yaml", 25},
-    {"five-link cost of transport (30+6)", "mu2004_walk_cot.yaml", 0}};
+    {"five-link default (30+6)", "mu2004_walk.yaml", 0, ""},
+    {"RABBIT Kelly 2017 (25)", "rabbit_kelly2017.yaml", 25, ""},
+    {"five-link default (30+6), ldl", "mu2004_walk.yaml", 0, "ldl"},
+    {"RABBIT Kelly 2017 (25), ldl", "rabbit_kelly2017.yaml", 25, "ldl"},
+    {"five-link cost of transport (30+6)", "mu2004_walk_cot.yaml", 0, ""},
+    {"five-link cost of transport (30+6), ldl", "mu2004_walk_cot.yaml", 0, "ldl"}};
 
 /// A solver setting against the shipped one: a name and what it changes.
 struct Lever {
@@ -117,6 +122,7 @@ Run solveOnce(const Problem& p, const Lever& lever, const std::string& out_dir) 
   const std::string path = std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/" + p.file;
   ocp::OcpConfig config = ocp::loadOcpConfig(path);
   if (p.ssp_segments > 0) config.phases.front().segments = p.ssp_segments;
+  if (!p.linear_solver.empty()) config.solver.linear_solver = p.linear_solver;
   lever.apply(config.solver);
   const dynamics::Model model = ocp::problemModel(config);
   r.load = since(t);
@@ -220,6 +226,7 @@ void printMumps(const std::vector<Medians>& problems) {
   for (size_t i = 0; i < kProblems.size(); ++i) {
     const Medians& m = problems[i];
     const bench::MumpsCalls& last = m.last->mumps;
+    if (last.factorization.calls == 0) continue;  // solved without MUMPS
     fmt::print("| {} | {} | {:.4f} | {} | {:.4f} | {} | {:.4f} | {:.4f} | {:.0f} % |\n",
                kProblems[i].label, last.analysis.calls, m.analysis, last.factorization.calls,
                m.factorization / last.factorization.calls, last.solve.calls,

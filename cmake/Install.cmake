@@ -22,6 +22,14 @@ install(TARGETS ${gaitopt_targets} gaitopt_options EXPORT gaitoptTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/gaitopt)
+# The KKT solver is a shared library named libpardiso.so (ocp/CMakeLists.txt): in a directory
+# of its own, so it never stands in for a real Pardiso of the system, and found through the
+# run path of the tool and of the programs that link gaitopt::ocp.
+set_target_properties(gaitopt_kkt PROPERTIES EXPORT_NAME kkt)
+install(TARGETS gaitopt_kkt EXPORT gaitoptTargets
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/gaitopt)
+set_target_properties(gaitopt_cli PROPERTIES
+  INSTALL_RPATH "$ORIGIN/../${CMAKE_INSTALL_LIBDIR}/gaitopt")
 install(TARGETS gaitopt_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(EXPORT gaitoptTargets NAMESPACE gaitopt:: DESTINATION ${GAITOPT_INSTALL_CMAKEDIR})
 

@@ -13,6 +13,8 @@
 #include <IpSolveStatistics.hpp>
 #include <IpTNLP.hpp>
 
+#include "ocp/kkt/pardiso_interface.hpp"
+
 namespace gaitopt::ocp {
 namespace {
 
@@ -49,7 +51,9 @@ class FactorizationCounter : public Ipopt::Journal {
   void PrintImpl(Ipopt::EJournalCategory, Ipopt::EJournalLevel, const char*) override {}
   void PrintfImpl(Ipopt::EJournalCategory, Ipopt::EJournalLevel, const char* format,
                   va_list) override {
-    if (std::strstr(format, "Calling MUMPS-2 for numerical factorization") != nullptr) ++count_;
+    if (std::strstr(format, "Calling MUMPS-2 for numerical factorization") != nullptr ||
+        std::strstr(format, "Calling Pardiso for factorization") != nullptr)
+      ++count_;
   }
   void FlushBufferImpl() override {}
 
@@ -244,6 +248,15 @@ void keepLeastViolated(SolveResult& result, const LeastViolation& best) {
   result.point = "least-violated point evaluated";
 }
 
+void setLinearSolver(Ipopt::OptionsList& ipopt, const SolverOptions& options) {
+  if (options.linear_solver == "ldl") {
+    ipopt.SetStringValue("linear_solver", "pardiso");  // Ipopt then loads kkt::kLibraryName
+    return;
+  }
+  ipopt.SetStringValue("linear_solver", options.linear_solver);
+  ipopt.SetIntegerValue("mumps_pivot_order", options.mumps_pivot_order);
+}
+
 }  // namespace
 
 SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options) {
@@ -256,13 +269,12 @@ SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options) {
   app->Options()->SetStringValue("hessian_approximation", options.hessian);
   app->Options()->SetStringValue("jacobian_approximation",
                                  options.jacobian == "exact" ? "exact" : options.jacobian);
-  app->Options()->SetStringValue("linear_solver", options.linear_solver);
+  setLinearSolver(*app->Options(), options);
   app->Options()->SetStringValue("mu_strategy", options.mu_strategy);
   app->Options()->SetNumericValue("mu_init", options.mu_init);
   app->Options()->SetNumericValue("bound_push", options.bound_push);
   app->Options()->SetNumericValue("bound_frac", options.bound_frac);
   app->Options()->SetStringValue("bound_mult_init_method", options.bound_mult_init_method);
-  app->Options()->SetIntegerValue("mumps_pivot_order", options.mumps_pivot_order);
   app->Options()->SetStringValue("nlp_scaling_method", options.nlp_scaling_method);
   app->Options()->SetIntegerValue("print_level", options.print_level);
   app->Options()->SetStringValue("sb", "yes");  // no Ipopt banner
@@ -274,6 +286,10 @@ SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options) {
   LeastViolation best;
   Ipopt::SmartPtr<Ipopt::TNLP> adapter = new Adapter(nlp, result, best, options.progress);
   const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(adapter);
+  if (status == Ipopt::Invalid_Option && options.linear_solver == "ldl")
+    throw std::runtime_error(
+        fmt::format("Ipopt could not load gaitopt's KKT solver {} (is it beside the program?)",
+                    kkt::kLibraryName));
   if (result.x.size() == 0) {  // Ipopt failed before finalize_solution
     result.status = fmt::format("Ipopt_Error_{}", static_cast<int>(status));
     result.x = nlp.initialGuess();

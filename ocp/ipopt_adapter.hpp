@@ -21,7 +21,9 @@ struct SolverOptions {
   /// "exact", or "finite-difference-values": Ipopt differences the constraints itself on our
   /// sparsity pattern (for comparison only)
   std::string jacobian = "exact";
-  std::string linear_solver = "mumps";   ///< Debian's Ipopt ships MUMPS
+  /// "mumps" (Debian's Ipopt ships it) or "ldl": gaitopt's block LDL^T with 2x2 pivots on
+  /// matched constraint rows (ocp/kkt/), which Ipopt loads as its Pardiso
+  std::string linear_solver = "mumps";
   std::string mu_strategy = "adaptive";  ///< barrier update: "monotone" or "adaptive"
   double mu_init = 0.1;                  ///< initial barrier parameter
   double bound_push = 0.01;              ///< how far Ipopt moves the start inside the bounds
@@ -40,7 +42,7 @@ struct SolverOptions {
 
 /// Where a solve's time went and how large its linear systems were (bench/solve_profile.cpp).
 struct SolveProfile {
-  int factorizations = 0;           ///< numerical factorizations of the KKT matrix (MUMPS)
+  int factorizations = 0;           ///< numerical factorizations of the KKT matrix
   double sparsity_time_s = 0;       ///< recording the Jacobian and Hessian patterns
   double linear_solver_time_s = 0;  ///< factorizations and back-solves of the KKT system (wall)
   /// The augmented system Ipopt factorises: variables, constraint rows and one slack per

@@ -169,7 +169,7 @@ void readSolver(const YamlReader& r, SolverOptions& s) {
   if (r.has("nlp_scaling_method"))
     s.nlp_scaling_method = r.choice("nlp_scaling_method", {"gradient-based", "none"});
   if (r.has("jacobian")) s.jacobian = r.choice("jacobian", {"exact", "finite-difference-values"});
-  if (r.has("linear_solver")) s.linear_solver = r.choice("linear_solver", {"mumps"});
+  if (r.has("linear_solver")) s.linear_solver = r.choice("linear_solver", {"mumps", "ldl"});
   s.bound_push = r.numberOr("bound_push", s.bound_push, config::inRange(1e-12, 0.5, ""));
   s.bound_frac = r.numberOr("bound_frac", s.bound_frac, config::inRange(1e-12, 0.5, ""));
   s.print_level = static_cast<int>(r.numberOr("print_level", 0, config::inRange(0, 12, "")));

@@ -76,6 +76,20 @@ TEST_F(RabbitSolution, ConvergesFromThePolynomialGuess) {
   }
 }
 
+TEST_F(RabbitSolution, GaitoptsKktSolverFollowsMumpsToTheSameOptimum) {
+  // The same problem with the block LDL^T of ocp/kkt/ in place of MUMPS: Ipopt must take the
+  // same steps (same inertia, accurate solves), so the iterations and the optimum agree.
+  SolverOptions options = config_->solver;
+  options.linear_solver = "ldl";
+  const SolveResult ldl = solveWithIpopt(problem_->nlp, options);
+  ASSERT_EQ(ldl.status, "Solve_Succeeded");
+  EXPECT_EQ(ldl.iterations, result_->iterations);
+  EXPECT_GE(ldl.profile.factorizations, ldl.iterations);  // Ipopt called our solver
+  EXPECT_NEAR(ldl.cost, result_->cost, 1e-8 * result_->cost);
+  EXPECT_LT((ldl.x - result_->x).lpNorm<Eigen::Infinity>(), 1e-6);
+  EXPECT_LT(ldl.max_violation, 1e-6);
+}
+
 TEST_F(RabbitSolution, ClosedFormImpactAndRelabelReturnToTheStart) {
   // Independent of the optimiser's implicit impact: Mu's closed-form single impact (2.35-2.36)
   // applied to the optimal strike state, then relabelling (2.38), gives the optimal start.
