@@ -103,7 +103,9 @@ TEST(KktPairs, FindTheConstraintBlockAndPairEveryConstraintRowAcrossIt) {
     std::set<int> used;
     for (const PivotPair& p : pairs) {
       EXPECT_LT(p.first, split);
-      if (p.second < split) EXPECT_EQ(a.dense(p.first, p.first) * a.dense(p.second, p.second), 0.0);
+      if (p.second < split) {  // two variable rows: one of them without a diagonal
+        EXPECT_EQ(a.dense(p.first, p.first) * a.dense(p.second, p.second), 0.0);
+      }
       EXPECT_NE(a.dense(p.first, p.second), 0.0) << "a pair must couple";
       EXPECT_TRUE(used.insert(p.first).second && used.insert(p.second).second) << "disjoint";
     }
