@@ -35,19 +35,23 @@ void BlockLdl::formBlocks(int n, const std::vector<PivotPair>& pairs) {
   }
 }
 
-// Approximate minimum degree on the graph of the blocks (Eigen's port of AMD).
+// Approximate minimum degree on the graph of the blocks (Eigen's port of AMD, which adds the
+// transpose itself: the lower block pattern is enough, duplicates summed).
 void BlockLdl::orderBlocks(const SymmetricPattern& pattern) {
   const int nb = blocks();
-  std::vector<Eigen::Triplet<double, int>> edges;
-  edges.reserve(2 * pattern.nonZeros() + nb);
-  for (int c = 0; c < pattern.n; ++c) {
-    for (int k = pattern.outer[c]; k < pattern.outer[c + 1]; ++k) {
-      edges.emplace_back(blockOf_[pattern.inner[k]], blockOf_[c], 1.0);
-      edges.emplace_back(blockOf_[c], blockOf_[pattern.inner[k]], 1.0);
-    }
-  }
-  Eigen::SparseMatrix<double, Eigen::ColMajor, int> graph(nb, nb);
-  graph.setFromTriplets(edges.begin(), edges.end());
+  std::vector<int> count(nb + 1, 0);
+  for (int c = 0; c < pattern.n; ++c)
+    for (int k = pattern.outer[c]; k < pattern.outer[c + 1]; ++k) ++count[blockOf_[c] + 1];
+  for (int b = 0; b < nb; ++b) count[b + 1] += count[b];
+  std::vector<int> rows(count[nb]);
+  std::vector<int> next(count.begin(), count.end() - 1);
+  for (int c = 0; c < pattern.n; ++c)
+    for (int k = pattern.outer[c]; k < pattern.outer[c + 1]; ++k)
+      rows[next[blockOf_[c]]++] = blockOf_[pattern.inner[k]];
+  std::vector<double> ones(rows.size(), 1.0);
+  const Eigen::SparseMatrix<double, Eigen::ColMajor, int> graph =
+      Eigen::Map<const Eigen::SparseMatrix<double, Eigen::ColMajor, int>>(
+          nb, nb, count[nb], count.data(), rows.data(), ones.data());
   Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> perm;
   Eigen::AMDOrdering<int>()(graph, perm);
   order_.assign(perm.indices().data(), perm.indices().data() + nb);
@@ -55,63 +59,80 @@ void BlockLdl::orderBlocks(const SymmetricPattern& pattern) {
   for (int k = 0; k < nb; ++k) position_[order_[k]] = k;
 }
 
-// The upper block triangle of P A P^T, column by column, and where each entry of A goes in it
-// (column-major 2x2 elements: element = row + 2 col).
+// The upper block triangle of P A P^T, column by column (the diagonal block first, other rows
+// unsorted), and where each entry of A goes in it (column-major 2x2 elements: element = row +
+// 2 col). A counting sort by block column and a marker per column: linear in the entries.
 void BlockLdl::scatterPattern(const SymmetricPattern& pattern) {
-  const int nb = blocks();
-  std::vector<std::vector<int>> columns(nb);
-  for (int b = 0; b < nb; ++b) columns[b].push_back(b);
-  auto place = [&](int r, int c) {
-    const int pr = position_[blockOf_[r]], pc = position_[blockOf_[c]];
-    return std::pair{std::min(pr, pc), std::max(pr, pc)};
+  const int nb = blocks(), nnz = pattern.nonZeros();
+  struct Placed {
+    int row, column, element, mirror;
   };
-  for (int c = 0; c < pattern.n; ++c) {
-    for (int k = pattern.outer[c]; k < pattern.outer[c + 1]; ++k) {
-      const auto [row, col] = place(pattern.inner[k], c);
-      columns[col].push_back(row);
-    }
-  }
-  cp_.assign(nb + 1, 0);
-  for (int b = 0; b < nb; ++b) {
-    std::sort(columns[b].begin(), columns[b].end());
-    columns[b].erase(std::unique(columns[b].begin(), columns[b].end()), columns[b].end());
-    cp_[b + 1] = cp_[b] + static_cast<int>(columns[b].size());
-  }
-  ci_.clear();
-  for (const auto& column : columns) ci_.insert(ci_.end(), column.begin(), column.end());
-  scatter_.clear();
+  std::vector<Placed> placed(nnz);
+  std::vector<int> start(nb + 1, 0);
   for (int c = 0; c < pattern.n; ++c) {
     for (int k = pattern.outer[c]; k < pattern.outer[c + 1]; ++k) {
       const int r = pattern.inner[k];
-      const auto [row, col] = place(r, c);
-      const int slot = static_cast<int>(
-          std::lower_bound(ci_.begin() + cp_[col], ci_.begin() + cp_[col + 1], row) - ci_.begin());
-      // Entry A(r, c) sits in block (row, col) at (offset of the row-block's row, other).
-      const bool rowFirst = position_[blockOf_[r]] <= position_[blockOf_[c]];
-      const int er = rowFirst ? offsetOf_[r] : offsetOf_[c];
-      const int ec = rowFirst ? offsetOf_[c] : offsetOf_[r];
-      const bool inDiagonalBlock = row == col && er != ec;
-      scatter_.push_back({k, slot, er + 2 * ec, inDiagonalBlock ? ec + 2 * er : -1});
+      // A(r, c) sits in block (row, col), row <= col, at (its row's place, the other's).
+      const int pr = position_[blockOf_[r]], pc = position_[blockOf_[c]];
+      const int er = pr <= pc ? offsetOf_[r] : offsetOf_[c];
+      const int ec = pr <= pc ? offsetOf_[c] : offsetOf_[r];
+      const int mirror = pr == pc && er != ec ? ec + 2 * er : -1;
+      placed[k] = {std::min(pr, pc), std::max(pr, pc), er + 2 * ec, mirror};
+      ++start[placed[k].column + 1];
     }
   }
+  for (int b = 0; b < nb; ++b) start[b + 1] += start[b];
+  std::vector<int> byColumn(nnz), next(start.begin(), start.end() - 1);
+  for (int k = 0; k < nnz; ++k) byColumn[next[placed[k].column]++] = k;
+  std::vector<int> mark(nb, -1), slotOfRow(nb);
+  cp_.assign(nb + 1, 0);
+  ci_.clear();
+  ci_.reserve(nnz + nb);
+  scatter_.assign(nnz, {});
+  auto store = [&](int row, int col) {
+    if (mark[row] == col) return;
+    mark[row] = col;
+    slotOfRow[row] = static_cast<int>(ci_.size());
+    ci_.push_back(row);
+  };
+  for (int col = 0; col < nb; ++col) {
+    cp_[col] = static_cast<int>(ci_.size());
+    store(col, col);  // every pivot has its diagonal block
+    for (int q = start[col]; q < start[col + 1]; ++q) {
+      const Placed& e = placed[byColumn[q]];
+      store(e.row, col);
+      scatter_[byColumn[q]] = {byColumn[q], slotOfRow[e.row], e.element, e.mirror};
+    }
+  }
+  cp_[nb] = static_cast<int>(ci_.size());
   cx_.assign(ci_.size(), Mat2::Zero());
 }
 
-// Elimination tree and column counts of the block factor (ldl_symbolic on blocks).
+// Elimination tree, column counts (ldl_symbolic on blocks) and the nonzero pattern of every
+// block row of L in topological order (the reach of a sparse triangular solve), which is the
+// same for every factorization.
 void BlockLdl::eliminationTree() {
   const int nb = blocks();
   parent_.assign(nb, -1);
   lnz_.assign(nb, 0);
-  flag_.assign(nb, -1);
+  std::vector<int> flag(nb, -1), stack(nb);
+  rowStart_.assign(nb + 1, 0);
+  rowBlocks_.clear();
   for (int k = 0; k < nb; ++k) {
-    flag_[k] = k;
+    flag[k] = k;
+    int top = nb;
     for (int p = cp_[k]; p < cp_[k + 1]; ++p) {
-      for (int i = ci_[p]; i < k && flag_[i] != k; i = parent_[i]) {
+      int len = 0;
+      for (int i = ci_[p]; i < k && flag[i] != k; i = parent_[i]) {
         if (parent_[i] == -1) parent_[i] = k;
         ++lnz_[i];
-        flag_[i] = k;
+        flag[i] = k;
+        stack[len++] = i;
       }
+      while (len > 0) stack[--top] = stack[--len];
     }
+    rowBlocks_.insert(rowBlocks_.end(), stack.begin() + top, stack.end());
+    rowStart_[k + 1] = static_cast<int>(rowBlocks_.size());
   }
   lp_.assign(nb + 1, 0);
   for (int k = 0; k < nb; ++k) lp_[k + 1] = lp_[k] + lnz_[k];
@@ -119,7 +140,6 @@ void BlockLdl::eliminationTree() {
   lx_.resize(lp_[nb]);
   dinv_.resize(nb);
   y_.assign(nb, Mat2::Zero());
-  pattern_.resize(nb);
 }
 
 void BlockLdl::factorize(const double* values, double tiny) {
@@ -128,42 +148,20 @@ void BlockLdl::factorize(const double* values, double tiny) {
     cx_[s.slot].data()[s.element] = values[s.entry];
     if (s.mirror >= 0) cx_[s.slot].data()[s.mirror] = values[s.entry];
   }
-  std::fill(flag_.begin(), flag_.end(), -1);
+  std::fill(lnz_.begin(), lnz_.end(), 0);
   negative_ = perturbed_ = 0;
-  perturbedRows_.clear();
   for (int k = 0; k < blocks(); ++k) eliminateBlockRow(k, tiny);
 }
 
-// Scatters block column k of the upper pattern into y_ and returns where the nonzero pattern of
-// block row k of L starts in pattern_ (topological order: a sparse triangular solve's reach).
-int BlockLdl::rowPattern(int k) {
-  const int nb = blocks();
-  int top = nb;
-  y_[k].setZero();
-  flag_[k] = k;
-  lnz_[k] = 0;
-  for (int p = cp_[k]; p < cp_[k + 1]; ++p) {
-    int i = ci_[p];
-    y_[i] += cx_[p];
-    int len = 0;
-    for (; flag_[i] != k; i = parent_[i]) {
-      pattern_[len++] = i;
-      flag_[i] = k;
-    }
-    while (len > 0) pattern_[--top] = pattern_[--len];
-  }
-  return top;
-}
-
-// Up-looking step: W_i = (D L^T)_{ik} by a sparse triangular solve, L_ki = W_i^T D_i^{-1},
+// Up-looking step for block row k: scatter block column k of A into y_, then in topological
+// order W_i = (D L^T)_{ik} (a sparse triangular solve), L_ki = W_i^T D_i^{-1},
 // D_k = A_kk - sum_i L_ki W_i.
 void BlockLdl::eliminateBlockRow(int k, double tiny) {
-  const int nb = blocks();
-  const int start = rowPattern(k);
+  for (int p = cp_[k]; p < cp_[k + 1]; ++p) y_[ci_[p]] += cx_[p];
   Mat2 d = y_[k];
   y_[k].setZero();
-  for (int top = start; top < nb; ++top) {
-    const int i = pattern_[top];
+  for (int r = rowStart_[k]; r < rowStart_[k + 1]; ++r) {
+    const int i = rowBlocks_[r];
     const Mat2 w = y_[i];
     y_[i].setZero();
     const int end = lp_[i] + lnz_[i];
@@ -185,7 +183,6 @@ void BlockLdl::pivot(int k, Mat2 d, double tiny) {
   auto clamp = [&](double lambda) {
     if (std::abs(lambda) < tiny) {
       ++perturbed_;
-      perturbedRows_.push_back(first_[order_[k]]);
       lambda = lambda < 0 ? -tiny : tiny;
     }
     if (lambda < 0) ++negative_;

@@ -37,8 +37,6 @@ class BlockLdl {
 
   int negativeEigenvalues() const { return negative_; }
   int perturbedPivots() const { return perturbed_; }
-  /// The first row of each block whose pivot was perturbed in the last factorization.
-  const std::vector<int>& perturbedRows() const { return perturbedRows_; }
   int blocks() const { return static_cast<int>(first_.size()); }
   /// Stored 2x2 blocks of L below the diagonal.
   int factorBlocks() const { return static_cast<int>(li_.size()); }
@@ -56,7 +54,6 @@ class BlockLdl {
   void scatterPattern(const SymmetricPattern& pattern);
   void eliminationTree();
   void eliminateBlockRow(int k, double tiny);
-  int rowPattern(int k);
   void pivot(int k, Mat2 d, double tiny);
   bool single(int k) const { return second_[order_[k]] < 0; }
 
@@ -65,9 +62,9 @@ class BlockLdl {
   std::vector<int> order_, position_;    // order_[k]: block eliminated k-th; position_: inverse
   std::vector<int> cp_, ci_;             // upper block pattern of P A P^T by columns
   std::vector<Scatter> scatter_;
-  std::vector<int> lp_, parent_, lnz_, li_, flag_, pattern_;
+  std::vector<int> lp_, parent_, lnz_, li_;
+  std::vector<int> rowStart_, rowBlocks_;  // nonzero blocks of each block row of L, in order
   std::vector<Mat2> cx_, lx_, dinv_, y_;
-  std::vector<int> perturbedRows_;
   int negative_ = 0;
   int perturbed_ = 0;
 };

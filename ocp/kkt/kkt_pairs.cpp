@@ -27,23 +27,33 @@ std::vector<int> zeroDiagonalVariables(const SymmetricPattern& pattern, const do
 
 namespace {
 
-/// Kuhn's augmenting paths on the bipartite graph variable rows <-> constraint rows.
+/// Kuhn's augmenting paths on the bipartite graph variable rows <-> constraint rows, each row's
+/// neighbours across the split in CSR arrays, strongest coupling first.
 class Matching {
  public:
   Matching(const SymmetricPattern& pattern, const double* values, int constraintStart)
-      : across_(pattern.n), mate_(pattern.n, -1), seen_(pattern.n, -1) {
-    std::vector<std::vector<std::pair<double, int>>> weighted(pattern.n);
+      : start_(pattern.n + 1, 0), mate_(pattern.n, -1), seen_(pattern.n, -1) {
+    auto across = [&](int r, int c, int k) {
+      return (r < constraintStart) != (c < constraintStart) && values[k] != 0.0;
+    };
+    for (int c = 0; c < pattern.n; ++c)
+      for (int k = pattern.outer[c]; k < pattern.outer[c + 1]; ++k)
+        if (across(pattern.inner[k], c, k)) ++start_[pattern.inner[k] + 1], ++start_[c + 1];
+    for (int i = 0; i < pattern.n; ++i) start_[i + 1] += start_[i];
+    std::vector<std::pair<double, int>> weighted(start_[pattern.n]);
+    std::vector<int> next(start_.begin(), start_.end() - 1);
     for (int c = 0; c < pattern.n; ++c) {
       for (int k = pattern.outer[c]; k < pattern.outer[c + 1]; ++k) {
         const int r = pattern.inner[k];
-        if ((r < constraintStart) == (c < constraintStart) || values[k] == 0.0) continue;
-        weighted[r].emplace_back(-std::abs(values[k]), c);
-        weighted[c].emplace_back(-std::abs(values[k]), r);
+        if (!across(r, c, k)) continue;
+        weighted[next[r]++] = {-std::abs(values[k]), c};
+        weighted[next[c]++] = {-std::abs(values[k]), r};
       }
     }
+    neighbour_.resize(weighted.size());
     for (int i = 0; i < pattern.n; ++i) {
-      std::sort(weighted[i].begin(), weighted[i].end());
-      for (const auto& [weight, j] : weighted[i]) across_[i].push_back(j);
+      std::sort(weighted.begin() + start_[i], weighted.begin() + start_[i + 1]);
+      for (int q = start_[i]; q < start_[i + 1]; ++q) neighbour_[q] = weighted[q].second;
     }
   }
 
@@ -56,7 +66,8 @@ class Matching {
 
  private:
   bool tryRow(int u) {
-    for (int v : across_[u]) {
+    for (int q = start_[u]; q < start_[u + 1]; ++q) {
+      const int v = neighbour_[q];
       if (seen_[v] == stamp_) continue;
       seen_[v] = stamp_;
       if (mate_[v] < 0 || tryRow(mate_[v])) {
@@ -68,14 +79,10 @@ class Matching {
     return false;
   }
 
-  std::vector<std::vector<int>> across_;  // neighbours across the split, strongest first
+  std::vector<int> start_, neighbour_;  // neighbours across the split, strongest first
   std::vector<int> mate_, seen_;
   int stamp_ = 0;
 };
-
-}  // namespace
-
-namespace {
 
 /// The strongest still unpaired neighbour of `row` on either side (-1 if none).
 int strongestFreeNeighbour(const SymmetricPattern& pattern, const double* values, int row,

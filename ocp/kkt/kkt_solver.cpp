@@ -50,19 +50,7 @@ bool KktSolver::lostADiagonal(const double* values) const {
 
 void KktSolver::factorize(const double* values) {
   if (!ldl_ || lostADiagonal(values)) analyse(values);
-  const double tiny = kTinyPivot * largestMagnitude(values, pattern_.nonZeros());
-  ldl_->factorize(values, tiny);
-  // A variable row whose 1x1 pivot came out zero is paired too, once: the new order may not
-  // bring it to zero again.
-  bool repair = false;
-  for (int row : ldl_->perturbedRows()) {
-    if (row >= constraintStart_ || paired_[row] || mustPair_[row]) continue;
-    mustPair_[row] = 1;
-    repair = true;
-  }
-  if (!repair) return;
-  analyse(values);
-  ldl_->factorize(values, tiny);
+  ldl_->factorize(values, kTinyPivot * largestMagnitude(values, pattern_.nonZeros()));
 }
 
 int KktSolver::solve(const double* values, double* rhs, int refinementSteps) const {
