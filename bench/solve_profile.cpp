@@ -5,7 +5,8 @@
 /// (trajectory.csv and trajectory.json at 1 kHz and summary.json, no pictures). Problems: the
 /// default five-link gait (configs/ocp/mu2004_walk.yaml, SSP 30 + DSP 6 Hermite-Simpson segments),
 /// RABBIT after Kelly 2017 at 25 segments and the five-link cost-of-transport problem, each from
-/// its polynomial guess. Every stage is the median of `repeats` runs in this process.
+/// its polynomial guess, each with the config's linear solver (MUMPS) and with gaitopt's
+/// (`ldl`, ocp/kkt/). Every stage is the median of `repeats` runs in this process.
 ///
 /// With `levers`, the same problems are solved under each solver setting of kLevers, the
 /// settings interleaved run by run (so load from other jobs falls on all alike), and each
@@ -85,8 +86,8 @@ const std::vector<Lever> kLevers = {
        o.bound_mult_init_method = "constant";
      }},
 };
-/// The levers are measured on the first two problems (the cost-of-transport solve is ten times
-/// longer and would dominate the run).
+/// The levers are measured on the first two problems, with MUMPS (the cost-of-transport solve
+/// is ten times longer and would dominate the run).
 constexpr size_t kLeverProblems = 2;
 
 /// One whole solve, stage by stage [s]; `cpu` is the process's CPU time of the whole solve,
@@ -250,18 +251,21 @@ std::string machine() {
 void writeProfileCsv(const std::vector<Medians>& problems, const std::string& path) {
   std::ofstream out(path);
   out << "problem,machine,iterations,factorizations,kkt_dim,kkt_nnz,cost,total_cpu_s,total_s,"
-         "setup_s,setup_share,ipopt_s,callbacks_s,write_s,mumps_analysis_s,mumps_factorizations,"
+         "setup_s,setup_share,ipopt_s,linear_solves_s,callbacks_s,write_s,mumps_analysis_s,"
+         "mumps_factorizations,"
          "mumps_factorization_s,mumps_back_solves,mumps_back_solve_s,mumps_s\n";
   const std::string where = machine();
   for (size_t i = 0; i < kProblems.size(); ++i) {
     const Medians& m = problems[i];
     const Run& last = *m.last;
     out << fmt::format(
-        "{},\"{}\",{},{},{},{},{:.9g},{:.4f},{:.4f},{:.4f},{:.3f},{:.4f},{:.4f},{:.4f},{:.4f},{},"
-        "{:.4f},{},{:.4f},{:.4f}\n",
+        "\"{}\",\"{}\",{},{},{},{},{:.9g},{:.4f},{:.4f},{:.4f},{:.3f},{:.4f},{:.4f},{:.4f},{:.4f},{"
+        ":."
+        "4f},"
+        "{},{:.4f},{},{:.4f},{:.4f}\n",
         kProblems[i].label, where, last.iterations, last.factorizations, last.kkt_dimension,
         last.kkt_nonzeros, last.cost, m.cpu, m.total, m.setup(), m.setup() / m.total, m.ipopt,
-        m.callbacks, m.write, m.analysis, last.mumps.factorization.calls, m.factorization,
+        m.linear, m.callbacks, m.write, m.analysis, last.mumps.factorization.calls, m.factorization,
         last.mumps.solve.calls, m.solve, m.mumps());
   }
   if (!out) throw std::runtime_error("cannot write " + path);

@@ -3,7 +3,8 @@
 # minimum time over 15 repetitions, with the ratio of each median to BM_MassMatrix's; then
 # the OCP solve-time table (bench/ocp_bench.cpp), the solve-time profile of issue 16 (where a
 # whole solve's time goes, and the solver settings measured against the shipped ones,
-# bench/solve_profile.cpp), the double support in theta against reduced coordinates
+# bench/solve_profile.cpp), every shipped config with MUMPS and with gaitopt's KKT solver
+# (scripts/linear_solver_compare.sh), the double support in theta against reduced coordinates
 # (bench/dsp_coordinates.cpp, issue 15), then the speed-against-accuracy table and chart
 # of the ground models (bench/ground_bench.cpp, scripts/plots/ground_chart.py).
 # Usage: scripts/bench.sh BUILD_DIR   (BUILD_DIR configured with GAITOPT_BUILD_BENCH=ON, built)
@@ -72,6 +73,11 @@ echo "Load average before the solve profile: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "(medians also in $1/solve_profile.csv; results/solve_profile.csv, cited by the README, is a copy)"
 echo
 "$profile" 5 levers
+
+echo
+echo "Every shipped config with MUMPS and with gaitopt's KKT solver (linear_solver: ldl):"
+scripts/linear_solver_compare.sh "$1" "$1/linear_solver_compare.csv"
+echo "(also in $1/linear_solver_compare.csv; results/linear_solver_compare.csv is a copy)"
 
 echo
 dsp="$1/bench/dsp_coordinates"
