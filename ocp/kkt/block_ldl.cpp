@@ -36,22 +36,38 @@ void BlockLdl::formBlocks(int n, const std::vector<PivotPair>& pairs) {
 }
 
 // Approximate minimum degree on the graph of the blocks (Eigen's port of AMD, which adds the
-// transpose itself: the lower block pattern is enough, duplicates summed).
+// transpose itself). Its input must be a compressed matrix: each column's rows sorted and
+// distinct, which a counting sort by column, a marker per column and a sort of each short
+// column give.
 void BlockLdl::orderBlocks(const SymmetricPattern& pattern) {
   const int nb = blocks();
-  std::vector<int> count(nb + 1, 0);
+  std::vector<int> start(nb + 1, 0);
   for (int c = 0; c < pattern.n; ++c)
-    for (int k = pattern.outer[c]; k < pattern.outer[c + 1]; ++k) ++count[blockOf_[c] + 1];
-  for (int b = 0; b < nb; ++b) count[b + 1] += count[b];
-  std::vector<int> rows(count[nb]);
-  std::vector<int> next(count.begin(), count.end() - 1);
-  for (int c = 0; c < pattern.n; ++c)
-    for (int k = pattern.outer[c]; k < pattern.outer[c + 1]; ++k)
-      rows[next[blockOf_[c]]++] = blockOf_[pattern.inner[k]];
-  std::vector<double> ones(rows.size(), 1.0);
+    start[blockOf_[c] + 1] += pattern.outer[c + 1] - pattern.outer[c];
+  for (int b = 0; b < nb; ++b) start[b + 1] += start[b];
+  std::vector<int> rows(start[nb]), next(start.begin(), start.end() - 1), mark(nb, -1);
+  for (int col = 0; col < nb; ++col) {
+    for (int c : {first_[col], second_[col]}) {
+      if (c < 0) continue;
+      for (int k = pattern.outer[c]; k < pattern.outer[c + 1]; ++k) {
+        const int row = blockOf_[pattern.inner[k]];
+        if (mark[row] == col) continue;  // this block column has it already
+        mark[row] = col;
+        rows[next[col]++] = row;
+      }
+    }
+  }
+  std::vector<int> outer(nb + 1, 0), inner;
+  inner.reserve(rows.size());
+  for (int b = 0; b < nb; ++b) {
+    std::sort(rows.begin() + start[b], rows.begin() + next[b]);
+    inner.insert(inner.end(), rows.begin() + start[b], rows.begin() + next[b]);
+    outer[b + 1] = static_cast<int>(inner.size());
+  }
+  const std::vector<double> ones(inner.size(), 1.0);
   const Eigen::SparseMatrix<double, Eigen::ColMajor, int> graph =
       Eigen::Map<const Eigen::SparseMatrix<double, Eigen::ColMajor, int>>(
-          nb, nb, count[nb], count.data(), rows.data(), ones.data());
+          nb, nb, outer[nb], outer.data(), inner.data(), ones.data());
   Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> perm;
   Eigen::AMDOrdering<int>()(graph, perm);
   order_.assign(perm.indices().data(), perm.indices().data() + nb);

@@ -2,15 +2,16 @@
 /// @file block_ldl.hpp
 /// Sparse LDL^T of a symmetric indefinite matrix with static 1x1 and 2x2 pivots:
 ///   P A P^T = L D L^T,  L unit lower block-triangular,  D block diagonal,
-/// where the 2x2 blocks are given row pairs (KktPairs: a constraint row and a variable it
-/// constrains) and the block order is AMD on the graph of the blocks. A KKT matrix's constraint
-/// rows have no diagonal, so a 1x1 pivot on one is zero whatever the order; the 2x2 block
-/// [w a; a 0] with a != 0 is not, and by Sylvester's law of inertia the eigenvalues of the D
-/// blocks count A's negative eigenvalues, which is what Ipopt's inertia correction asks of its
-/// linear solver. This is the static pivoting with a matching that Pardiso uses (Schenk and
-/// Gaertner 2006), without its pivoting inside supernodes: the factorization is up-looking
-/// (Davis, "Algorithm 849: LDL", 2005) on 2x2 blocks. A pivot eigenvalue below `tiny` in
-/// magnitude is moved to +-tiny and counted; the caller refines the solution.
+/// where the 2x2 blocks are given row pairs (kkt_pairs.hpp: a constraint row and a variable it
+/// constrains, or a variable without a diagonal and one it couples to) and the block order is
+/// AMD on the graph of the blocks. A KKT matrix's constraint rows have no diagonal, so a 1x1
+/// pivot on one is zero whatever the order; the 2x2 block [w a; a 0] with a != 0 is not, and by
+/// Sylvester's law of inertia the eigenvalues of the D blocks count A's negative eigenvalues,
+/// which is what Ipopt's inertia correction asks of its linear solver. This is the static
+/// pivoting with a matching that Pardiso uses (Schenk and Gaertner 2006), without its pivoting
+/// inside supernodes: the factorization is up-looking (Davis, "Algorithm 849: LDL", 2005) on 2x2
+/// blocks. A pivot eigenvalue below `tiny` in magnitude is moved to +-tiny and counted; the
+/// caller refines the solution.
 #include <Eigen/Core>
 #include <vector>
 
@@ -38,8 +39,6 @@ class BlockLdl {
   int negativeEigenvalues() const { return negative_; }
   int perturbedPivots() const { return perturbed_; }
   int blocks() const { return static_cast<int>(first_.size()); }
-  /// Stored 2x2 blocks of L below the diagonal.
-  int factorBlocks() const { return static_cast<int>(li_.size()); }
 
  private:
   using Mat2 = Eigen::Matrix2d;

@@ -5,6 +5,10 @@
 /// Why not MUMPS: on these problems (4 000 rows, 26 000 entries) MUMPS spends 3.7 ms on a
 /// factorization of 2.7 Mflop, its bookkeeping per front rather than arithmetic, and two thirds
 /// of a whole solve (results/solve_profile.md); Debian ships no other solver Ipopt can load.
+/// What static pivots cost: no pivoting inside the elimination, so a matrix whose pairs leave a
+/// zero pivot (clamped and reported) or a small one (digits lost) is solved less accurately than
+/// by MUMPS; on three shipped configs Ipopt then takes another path or does not converge
+/// (results/linear_solver_compare.csv), which is why `ldl` is an option and not the default.
 #include <memory>
 #include <vector>
 
@@ -29,7 +33,6 @@ class KktSolver {
   int negativeEigenvalues() const { return ldl_->negativeEigenvalues(); }
   int perturbedPivots() const { return ldl_->perturbedPivots(); }
   int analyses() const { return analyses_; }
-  int dimension() const { return pattern_.n; }
 
  private:
   bool lostADiagonal(const double* values) const;
