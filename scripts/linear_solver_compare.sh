@@ -1,9 +1,8 @@
 #!/usr/bin/env bash
 # Every shipped OCP config (configs/ocp/*.yaml) solved with MUMPS and with gaitopt's KKT solver
 # (solver.linear_solver: ldl, ocp/kkt/): status, iterations, cost and wall time of each, as a
-# markdown table and, with CSV, a file (results/linear_solver_compare.csv). The ldl copies of the
-# configs live in a temporary folder beside links to configs/robots, gaits, ... so their relative
-# paths still resolve; configs/ is never written.
+# markdown table and, with CSV, a file (results/linear_solver_compare.csv). Each solver's copy of
+# the configs is made by scripts/solver_configs.sh in a temporary folder.
 # Usage: scripts/linear_solver_compare.sh BUILD_DIR [CSV]   (about 1 minute)
 set -euo pipefail
 
@@ -17,33 +16,15 @@ csv_out="${2:-}"
 root="$(cd "$(dirname "$0")/.." && pwd)"
 work="$(mktemp -d "${TMPDIR:-/tmp}/linear_solver_compare.XXXXXX")"
 trap 'rm -rf "$work"' EXIT
-for d in "$root"/configs/*/; do ln -s "$d" "$work/$(basename "$d")"; done
-mkdir -p "$work/mumps" "$work/ldl"
-
-# A copy of CONFIG under SOLVER/ whose solver block selects SOLVER.
-copy() {
-  /usr/bin/python3 - "$1" "$2" <<'PY'
-import re, sys
-src, dst = sys.argv[1], sys.argv[2]
-solver = dst.split("/")[-2]
-text = open(src).read()
-line = f"solver:\n  linear_solver: {solver}"
-if re.search(r"^solver:\s*$", text, re.M):
-    text = re.sub(r"^solver:\s*$", line, text, count=1, flags=re.M)
-else:
-    text += "\n" + line + "\n"
-open(dst, "w").write(text)
-PY
-}
+for solver in mumps ldl; do "$root/scripts/solver_configs.sh" "$work/$solver" "$solver"; done
 
 rows="$work/rows.csv"
 echo "config,linear_solver,status,iterations,cost,wall_s" >"$rows"
 for config in "$root"/configs/ocp/*.yaml; do
   name="$(basename "$config" .yaml)"
   for solver in mumps ldl; do
-    copy "$config" "$work/$solver/$name.yaml"
     out="$work/out_${solver}_$name"
-    "$gaitopt" optimize --config "$work/$solver/$name.yaml" --out "$out" --no-plots --quiet \
+    "$gaitopt" optimize --config "$work/$solver/ocp/$name.yaml" --out "$out" --no-plots --quiet \
       >/dev/null 2>&1 || true
     [[ -d "$out" ]] || out="$out.failed"
     /usr/bin/python3 - "$out/summary.json" "$name" "$solver" >>"$rows" <<'PY'
@@ -57,7 +38,7 @@ done
 /usr/bin/python3 - "$rows" <<'PY'
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
-print("| config | MUMPS: status, iterations, cost, wall s | ldl: status, iterations, cost, wall s | same optimum |")
+print("| config | MUMPS: status, iterations, cost, solve s | ldl: status, iterations, cost, solve s | same optimum |")
 print("|---|---|---|---|")
 for m, l in zip(rows[0::2], rows[1::2]):
     cm, cl = float(m["cost"]), float(l["cost"])
