@@ -14,8 +14,9 @@ namespace {
 // A pivot this much smaller than the largest entry is taken for zero: it is moved to +-tiny (and
 // counted) instead of divided by. Far below 1e-16 because the diagonal of Ipopt's matrix spans
 // twenty decades near the optimum (Sigma = z / s from 1e-11 to 1e10 on the five-link problem):
-// at 1e-20 the slack rows' true pivots were clamped, the solves lost their digits and the
-// five-link solve took 62 iterations instead of MUMPS's 15; at 1e-30 it takes MUMPS's path.
+// at 1e-20 the slack rows' true pivots are clamped, the solves lose their digits and the
+// five-link solve does not converge in 500 iterations; at 1e-30 it takes MUMPS's 15
+// (results/solve_profile.md).
 constexpr double kTinyPivot = 1e-30;
 
 double largestMagnitude(const double* values, int count) {
