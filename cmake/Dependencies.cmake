@@ -1,6 +1,10 @@
 # Every dependency is a Debian 12 package (scripts/install-deps.sh installs them).
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(IPOPT REQUIRED IMPORTED_TARGET ipopt)
+# Sequential MUMPS, which Ipopt itself links (libmumps-seq-dev, a dependency of
+# coinor-libipopt-dev): the KKT solver's fallback on a zero static pivot (ocp/kkt/mumps_factor.hpp).
+find_path(MUMPS_INCLUDE_DIR dmumps_c.h REQUIRED)
+find_library(DMUMPS_SEQ_LIBRARY dmumps_seq REQUIRED)
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(NLopt REQUIRED)
 find_package(yaml-cpp REQUIRED)

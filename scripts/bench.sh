@@ -4,7 +4,8 @@
 # the OCP solve-time table (bench/ocp_bench.cpp), the solve-time profile of issue 16 (where a
 # whole solve's time goes, and the solver settings measured against the shipped ones,
 # bench/solve_profile.cpp), every shipped config with MUMPS and with gaitopt's KKT solver
-# (scripts/linear_solver_compare.sh), the double support in theta against reduced coordinates
+# (scripts/linear_solver_compare.sh) and how often each converges on the five-link configs at
+# five meshes (scripts/solver_robustness.sh), the double support in theta against reduced coordinates
 # (bench/dsp_coordinates.cpp, issue 15), then the speed-against-accuracy table and chart
 # of the ground models (bench/ground_bench.cpp, scripts/plots/ground_chart.py).
 # Usage: scripts/bench.sh BUILD_DIR   (BUILD_DIR configured with GAITOPT_BUILD_BENCH=ON, built)
@@ -78,6 +79,10 @@ echo
 echo "Every shipped config with MUMPS and with gaitopt's KKT solver (linear_solver: ldl):"
 scripts/linear_solver_compare.sh "$1" "$1/linear_solver_compare.csv"
 echo "(also in $1/linear_solver_compare.csv; results/linear_solver_compare.csv is a copy)"
+echo
+echo "How often each solver converges on the five-link configs at five meshes:"
+scripts/solver_robustness.sh "$1" "$1/solver_robustness.csv" 2>/dev/null
+echo "(also in $1/solver_robustness.csv; results/solver_robustness.csv is a copy)"
 
 echo
 dsp="$1/bench/dsp_coordinates"

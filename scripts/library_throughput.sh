@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Points per second of `gaitopt library` on this machine: the 9-point library of
 # configs/library/throughput.yaml solved from scratch with 1 worker process, with 2, and as 2
-# MPI ranks of 1 worker each (mpirun --oversubscribe -np 2), and with 1 and 2 worker processes
-# under gaitopt's KKT solver (the same library whose OCP config says linear_solver: ldl, copied
-# to a temporary folder), REPEATS times each, interleaved so that load from other jobs falls on
-# every mode alike. Prints a markdown table of medians and the ratio to the 1-worker median, and
-# how many points the ldl runs solve to MUMPS's optimum; with CSV, also writes the medians there
-# (the README cites results/library_throughput.csv).
+# MPI ranks of 1 worker each (mpirun --oversubscribe -np 2), all with the default linear solver
+# (gaitopt's, ocp/kkt/), and with 1 and 2 worker processes under MUMPS on every matrix (the same
+# library whose OCP config says linear_solver: mumps, copied to a temporary folder), REPEATS
+# times each, interleaved so that load from other jobs falls on every mode alike. Prints a
+# markdown table of medians and the ratio to the 1-worker median, and how many points the
+# default solves to MUMPS's optimum; with CSV, also writes the medians there (the README cites
+# results/library_throughput.csv).
 # Usage: scripts/library_throughput.sh BUILD_DIR [REPEATS [CSV]]   (default 3 repeats)
 set -euo pipefail
 
@@ -22,8 +23,8 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 config="$root/configs/library/throughput.yaml"
 work="$(mktemp -d "${TMPDIR:-/tmp}/library_throughput.XXXXXX")"
 trap 'rm -rf "$work"' EXIT
-ldl="$work/configs"  # configs/ whose OCP configs select linear_solver: ldl
-"$root/scripts/solver_configs.sh" "$ldl" ldl
+mumps="$work/configs"  # configs/ whose OCP configs select linear_solver: mumps
+"$root/scripts/solver_configs.sh" "$mumps" mumps
 # OpenMPI refuses root unless told; CI runs as root.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
@@ -34,10 +35,10 @@ run() {  # run MODE REPEAT: one library from scratch, its points/s appended to M
     2-processes) "$gaitopt" library --config "$config" --out "$out" --jobs 2 --quiet >/dev/null ;;
     2-mpi-ranks) mpirun --oversubscribe -np 2 "$gaitopt" library --config "$config" \
                    --out "$out" --quiet >/dev/null ;;
-    1-process-ldl) "$gaitopt" library --config "$ldl/library/throughput.yaml" --out "$out" \
-                     --jobs 1 --quiet >/dev/null ;;
-    2-processes-ldl) "$gaitopt" library --config "$ldl/library/throughput.yaml" --out "$out" \
-                       --jobs 2 --quiet >/dev/null ;;
+    1-process-mumps) "$gaitopt" library --config "$mumps/library/throughput.yaml" --out "$out" \
+                       --jobs 1 --quiet >/dev/null ;;
+    2-processes-mumps) "$gaitopt" library --config "$mumps/library/throughput.yaml" \
+                         --out "$out" --jobs 2 --quiet >/dev/null ;;
   esac
   /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1]))
 print(d['last_run']['points_per_second'], d['points_solved'], d['last_run']['wall_time_s'])" \
@@ -46,7 +47,7 @@ print(d['last_run']['points_per_second'], d['points_solved'], d['last_run']['wal
 
 modes=(1-process 2-processes)
 command -v mpirun >/dev/null && modes+=(2-mpi-ranks)
-modes+=(1-process-ldl 2-processes-ldl)
+modes+=(1-process-mumps 2-processes-mumps)
 for r in $(seq "$repeats"); do
   for m in "${modes[@]}"; do
     echo "library_throughput: $m, run $r of $repeats" >&2
@@ -80,9 +81,9 @@ if csv_out:
             pps, wall, solved = rows[m]
             out.writerow([m, f"{pps:.3f}", f"{wall:.2f}", solved, f"{pps / base:.2f}"])
 PY
-# The ldl rows are worth their speed only if they solve the same library: compare each point's
-# iterations and cost between the first 1-process run and the first 1-process-ldl run.
-/usr/bin/python3 - "$work/1-process-1/index.csv" "$work/1-process-ldl-1/index.csv" <<'PY'
+# The default is worth its speed only if it solves the same library: compare each point's
+# iterations and cost between the first 1-process-mumps run and the first 1-process run.
+/usr/bin/python3 - "$work/1-process-mumps-1/index.csv" "$work/1-process-1/index.csv" <<'PY'
 import csv, sys
 mumps, ldl = ({r["point"]: r for r in csv.DictReader(open(p))} for p in sys.argv[1:])
 same = sum(1 for p, r in mumps.items() if p in ldl and r["iterations"] == ldl[p]["iterations"]

@@ -25,7 +25,9 @@ source, target, solver = sys.argv[1:]
 line = f"solver:\n  linear_solver: {solver}"
 for config in pathlib.Path(source).glob("*.yaml"):
     text = config.read_text()
-    if re.search(r"^solver:\s*$", text, re.M):
+    if re.search(r"^  linear_solver:", text, re.M):  # a config that pins its solver
+        text = re.sub(r"^  linear_solver: \w+", f"  linear_solver: {solver}", text, flags=re.M)
+    elif re.search(r"^solver:\s*$", text, re.M):
         text = re.sub(r"^solver:\s*$", line, text, count=1, flags=re.M)
     else:
         text += "\n" + line + "\n"

@@ -19,6 +19,27 @@ namespace {
 // (results/solve_profile.md).
 constexpr double kTinyPivot = 1e-30;
 
+// Ipopt's residual_ratio_max (IpPDFullSpaceSolver.cpp): a solution whose residual ratio is above
+// it is refined. One that KktSolver's own refinement leaves above it is solved again by MUMPS:
+// static pivots chosen at the analysis can lose every digit once the barrier parameter is small
+// (the compass-gait walk's ratio reached 0.4 at mu = 3e-8, and Ipopt's refinement stalled at
+// 0.16); MUMPS's threshold pivoting does not. Measured on the five-link configs at five meshes
+// (scripts/solver_robustness.sh): with the fallback on zero pivots only, 17 of 25 solves
+// converged; with this one as well, 19, against MUMPS's own 20 and 19 under its two orders.
+constexpr double kResidualRatioMax = 1e-10;
+// Refinement steps before giving up on the static pivots: two are enough on every shipped config
+// at its own mesh (no fallback on the five-link default or RABBIT); without them half the
+// five-link default's solves went to MUMPS.
+constexpr int kOwnRefinementSteps = 2;
+
+/// Ipopt's measure of a solution's accuracy (PDFullSpaceSolver::ComputeResidualRatio).
+double residualRatio(const Eigen::VectorXd& residual, const Eigen::VectorXd& x,
+                     const Eigen::VectorXd& b) {
+  const double rhs = b.lpNorm<Eigen::Infinity>();
+  return residual.lpNorm<Eigen::Infinity>() /
+         (std::min(x.lpNorm<Eigen::Infinity>(), 1e6 * rhs) + rhs);
+}
+
 double largestMagnitude(const double* values, int count) {
   double largest = 0;
   for (int k = 0; k < count; ++k) largest = std::max(largest, std::abs(values[k]));
@@ -52,24 +73,66 @@ bool KktSolver::lostADiagonal(const double* values) const {
 void KktSolver::factorize(const double* values) {
   if (!ldl_ || lostADiagonal(values)) analyse(values);
   ldl_->factorize(values, kTinyPivot * largestMagnitude(values, pattern_.nonZeros()));
+  onMumps_ = false;
+  mumpsRefused_ = false;
+  if (ldl_->perturbedPivots() > 0) factorizeWithMumps(values);  // a singular A goes to Ipopt
 }
 
-int KktSolver::solve(const double* values, double* rhs, int refinementSteps) const {
+void KktSolver::factorizeWithMumps(const double* values) {
+  if (!mumps_) mumps_ = std::make_unique<MumpsFactor>(pattern_);
+  mumps_->factorize(values);
+  onMumps_ = true;
+  ++fallbacks_;
+}
+
+int KktSolver::negativeEigenvalues() const {
+  return onMumps_ ? mumps_->negativeEigenvalues() : ldl_->negativeEigenvalues();
+}
+
+void KktSolver::applyInverse(double* x) const {
+  if (onMumps_)
+    mumps_->solve(x);
+  else
+    ldl_->solve(x);
+}
+
+double KktSolver::solveAndRefine(const double* values, double* rhs, int refinementSteps,
+                                 int& steps) const {
   using Vector = Eigen::VectorXd;
   const Eigen::Map<const Eigen::SparseMatrix<double, Eigen::ColMajor, int>> lower(
       pattern_.n, pattern_.n, pattern_.nonZeros(), pattern_.outer.data(), pattern_.inner.data(),
       values);
   Eigen::Map<Vector> b(rhs, pattern_.n);
   Vector x = b;
-  ldl_->solve(x.data());
-  int steps = 0;
-  for (; steps < refinementSteps; ++steps) {
-    Vector residual = b - lower.selfadjointView<Eigen::Lower>() * x;
-    if (residual.lpNorm<Eigen::Infinity>() <= 1e-15 * b.lpNorm<Eigen::Infinity>()) break;
-    ldl_->solve(residual.data());
+  applyInverse(x.data());
+  Vector residual = b - lower.selfadjointView<Eigen::Lower>() * x;
+  double ratio = residualRatio(residual, x, b);
+  for (steps = 0; steps < refinementSteps && ratio > kResidualRatioMax; ++steps) {
+    applyInverse(residual.data());
     x += residual;
+    residual = b - lower.selfadjointView<Eigen::Lower>() * x;
+    ratio = residualRatio(residual, x, b);
   }
   b = x;
+  return ratio;
+}
+
+int KktSolver::solve(const double* values, double* rhs, int refinementSteps) {
+  const std::vector<double> b(rhs, rhs + pattern_.n);
+  int steps = 0;
+  const double ratio =
+      solveAndRefine(values, rhs, std::max(refinementSteps, kOwnRefinementSteps), steps);
+  if (ratio <= kResidualRatioMax || onMumps_ || mumpsRefused_) return steps;
+  try {
+    factorizeWithMumps(values);
+  } catch (const SingularMatrix&) {
+    // Too late to tell Ipopt (it takes a solve's failure for an internal error): keep this
+    // solution, whose residual Ipopt's own refinement then measures.
+    mumpsRefused_ = true;
+    return steps;
+  }
+  std::copy(b.begin(), b.end(), rhs);
+  solveAndRefine(values, rhs, refinementSteps, steps);
   return steps;
 }
 

@@ -5,14 +5,16 @@
 /// Why not MUMPS: on these problems (4 000 rows, 26 000 entries) MUMPS spends 3.7 ms on a
 /// factorization of 2.7 Mflop, its bookkeeping per front rather than arithmetic, and two thirds
 /// of a whole solve (results/solve_profile.md); Debian ships no other solver Ipopt can load.
-/// What static pivots cost: no pivoting inside the elimination, so a matrix whose pairs leave a
-/// zero pivot (clamped and reported) or a small one (digits lost) is solved less accurately than
-/// by MUMPS; on three shipped configs Ipopt then takes another path or does not converge
-/// (results/linear_solver_compare.csv), which is why `ldl` is an option and not the default.
+/// What static pivots cost: no pivoting inside the elimination, so the pairs can leave a zero
+/// pivot, or a small one that loses the solution's digits. Such a matrix is factorized by MUMPS
+/// instead (mumps_factor.hpp), as `linear_solver: mumps` would have: a zero pivot at once, lost
+/// digits when refinement cannot recover them. Before, the zero pivot was clamped, which gave
+/// another inertia, and the lost digits were Ipopt's to refine, which stalled.
 #include <memory>
 #include <vector>
 
 #include "ocp/kkt/block_ldl.hpp"
+#include "ocp/kkt/mumps_factor.hpp"
 #include "ocp/kkt/symmetric_pattern.hpp"
 
 namespace gaitopt::ocp::kkt {
@@ -25,24 +27,36 @@ class KktSolver {
   void analyse(const double* values);
   /// Factorizes A(values); analyses again first if a variable row's diagonal has become zero
   /// since (Ipopt's first matrix, for the least-squares multipliers, has an identity there).
+  /// On a zero static pivot MUMPS factorizes A instead. @throws SingularMatrix from MUMPS.
   void factorize(const double* values);
-  /// rhs := A^{-1} rhs, then up to `refinementSteps` steps of iterative refinement against
-  /// A(values); returns the steps taken.
-  int solve(const double* values, double* rhs, int refinementSteps) const;
+  /// rhs := A^{-1} rhs, refined against A(values) while Ipopt's residual ratio is missed, at most
+  /// max(2, refinementSteps) steps; if it is still missed, MUMPS factorizes A and solves again.
+  /// Returns the refinement steps of the last solution.
+  int solve(const double* values, double* rhs, int refinementSteps);
 
-  int negativeEigenvalues() const { return ldl_->negativeEigenvalues(); }
-  int perturbedPivots() const { return ldl_->perturbedPivots(); }
+  /// A's negative eigenvalues, by the last factorization.
+  int negativeEigenvalues() const;
   int analyses() const { return analyses_; }
+  /// The factorizations MUMPS made in place of the static pivots'.
+  int fallbacks() const { return fallbacks_; }
 
  private:
   bool lostADiagonal(const double* values) const;
+  void factorizeWithMumps(const double* values);
+  void applyInverse(double* x) const;
+  /// Solves and refines in place; returns the residual ratio reached and sets the steps taken.
+  double solveAndRefine(const double* values, double* rhs, int refinementSteps, int& steps) const;
 
   SymmetricPattern pattern_;
   int constraintStart_;
   std::vector<char> mustPair_;  // row -> a variable row seen with a zero diagonal
   std::vector<char> paired_;    // row -> in a 2x2 pivot
   std::unique_ptr<BlockLdl> ldl_;
+  std::unique_ptr<MumpsFactor> mumps_;  // made at the first fallback
+  bool onMumps_ = false;                // the last factorization is MUMPS's
+  bool mumpsRefused_ = false;           // MUMPS found the last factorized A singular in a solve
   int analyses_ = 0;
+  int fallbacks_ = 0;
 };
 
 }  // namespace gaitopt::ocp::kkt

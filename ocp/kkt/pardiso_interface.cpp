@@ -7,8 +7,9 @@
 /// indefinite), the upper triangle by rows 1-based, phases 11 (symbolic), 22 (numeric),
 /// 33 (solve, IPARM(6) = 1: the solution overwrites B), -1 (release); it reads the inertia from
 /// IPARM(22) and IPARM(23), perturbed pivots from IPARM(14), refinement steps from IPARM(7), and
-/// sets the steps allowed in IPARM(8). Errors: -1 inconsistent input, -2 out of memory,
-/// -3 failure in the analysis; Ipopt stops on any.
+/// sets the steps allowed in IPARM(8). Errors: -4 a singular matrix (Ipopt then regularises the
+/// constraints), -1 inconsistent input, -2 out of memory, -3 any other failure; Ipopt stops on
+/// all but -4.
 #include <new>
 #include <stdexcept>
 
@@ -22,6 +23,7 @@ const char* const kLibraryName = "libpardiso.so";
 namespace {
 
 using gaitopt::ocp::kkt::KktSolver;
+using gaitopt::ocp::kkt::SingularMatrix;
 using gaitopt::ocp::kkt::SymmetricPattern;
 
 constexpr int kRealSymmetricIndefinite = -2;
@@ -42,10 +44,8 @@ void runPhase(void** handle, int phase, int n, const double* a, const int* ia, c
       solver->analyse(a);
       return;
     case 22:
-      solver->factorize(a);
-      // Ipopt analyses again on perturbed pivots (our analysis then pairs by the new values)
-      // and accepts the factorization if they persist, refining its solutions.
-      iparm[13] = solver->perturbedPivots();
+      solver->factorize(a);  // a zero static pivot is MUMPS's to factorize: none perturbed
+      iparm[13] = 0;
       iparm[21] = n - solver->negativeEigenvalues();
       iparm[22] = solver->negativeEigenvalues();
       return;
@@ -87,6 +87,8 @@ void pardiso(void** pt, const int* /*maxfct*/, const int* /*mnum*/, const int* m
   }
   try {
     runPhase(pt, *phase, *n, a, ia, ja, *nrhs, iparm, b);
+  } catch (const SingularMatrix&) {
+    *error = -4;
   } catch (const std::bad_alloc&) {
     *error = -2;
   } catch (const std::invalid_argument&) {
