@@ -75,7 +75,13 @@ void KktSolver::factorize(const double* values) {
   ldl_->factorize(values, kTinyPivot * largestMagnitude(values, pattern_.nonZeros()));
   onMumps_ = false;
   mumpsRefused_ = false;
-  if (ldl_->perturbedPivots() > 0) factorizeWithMumps(values);  // a singular A goes to Ipopt
+  // A zero static pivot, or an inertia other than a KKT matrix's (one negative eigenvalue per
+  // constraint row): MUMPS's threshold pivoting decides. Ipopt takes a wrong inertia for a
+  // nonconvex W and regularises it; from static pivots it can be a small pivot's rounding, and
+  // with Ipopt's finite-difference Jacobian on RABBIT it was, at every iteration (delta_w 1e4,
+  // 500 iterations, where MUMPS needs none and converges in 35).
+  if (ldl_->perturbedPivots() > 0 || ldl_->negativeEigenvalues() != pattern_.n - constraintStart_)
+    factorizeWithMumps(values);  // a singular A goes to Ipopt
 }
 
 void KktSolver::factorizeWithMumps(const double* values) {

@@ -6,10 +6,12 @@
 /// factorization of 2.7 Mflop, its bookkeeping per front rather than arithmetic, and two thirds
 /// of a whole solve (results/solve_profile.md); Debian ships no other solver Ipopt can load.
 /// What static pivots cost: no pivoting inside the elimination, so the pairs can leave a zero
-/// pivot, or a small one that loses the solution's digits. Such a matrix is factorized by MUMPS
-/// instead (mumps_factor.hpp), as `linear_solver: mumps` would have: a zero pivot at once, lost
-/// digits when refinement cannot recover them. Before, the zero pivot was clamped, which gave
-/// another inertia, and the lost digits were Ipopt's to refine, which stalled.
+/// pivot, or a small one that loses the solution's digits or flips the inertia's count. Such a
+/// matrix is factorized by MUMPS instead (mumps_factor.hpp), as `linear_solver: mumps` would
+/// have: a zero pivot, or an inertia other than a KKT matrix's, at once; lost digits when
+/// refinement cannot recover them. Before, the zero pivot was clamped, which gave another
+/// inertia, the lost digits were Ipopt's to refine, which stalled, and a flipped count made
+/// Ipopt regularise a matrix that needed none.
 #include <memory>
 #include <vector>
 
@@ -27,7 +29,8 @@ class KktSolver {
   void analyse(const double* values);
   /// Factorizes A(values); analyses again first if a variable row's diagonal has become zero
   /// since (Ipopt's first matrix, for the least-squares multipliers, has an identity there).
-  /// On a zero static pivot MUMPS factorizes A instead. @throws SingularMatrix from MUMPS.
+  /// On a zero static pivot, or an inertia other than one negative eigenvalue per constraint
+  /// row, MUMPS factorizes A instead. @throws SingularMatrix from MUMPS.
   void factorize(const double* values);
   /// rhs := A^{-1} rhs, refined against A(values) while Ipopt's residual ratio is missed, at most
   /// max(2, refinementSteps) steps; if it is still missed, MUMPS factorizes A and solves again.
