@@ -25,7 +25,8 @@ constexpr double kTinyPivot = 1e-30;
 // (the compass-gait walk's ratio reached 0.4 at mu = 3e-8, and Ipopt's refinement stalled at
 // 0.16); MUMPS's threshold pivoting does not. Measured on the five-link configs at five meshes
 // (scripts/solver_robustness.sh): with the fallback on zero pivots only, 17 of 25 solves
-// converged; with this one as well, 19, against MUMPS's own 20 and 19 under its two orders.
+// converged; with this and the inertia check, 19, against MUMPS's own 20 and 19 under its two
+// orders (results/solve_profile.md).
 constexpr double kResidualRatioMax = 1e-10;
 // Refinement steps before giving up on the static pivots: two are enough on every shipped config
 // at its own mesh (no fallback on the five-link default or RABBIT); without them half the
