@@ -24,8 +24,8 @@ struct SolverOptions {
   /// "ldl": gaitopt's block LDL^T with 2x2 pivots on matched constraint rows (ocp/kkt/), which
   /// Ipopt loads as its Pardiso, and which hands a matrix its static pivots fail on to MUMPS;
   /// or "mumps" (Debian's Ipopt ships it) for every matrix. ldl: the five-link default and
-  /// RABBIT in 0.55 of MUMPS's time, same iterations and optimum; on path-sensitive problems
-  /// converged as often as MUMPS (results/solve_profile.md, results/solver_robustness.csv)
+  /// RABBIT in about 0.6 of MUMPS's time, same iterations and optimum; on path-sensitive
+  /// problems it converges about as often (results/solve_profile.md, solver_robustness.csv)
   std::string linear_solver = "ldl";
   std::string mu_strategy = "adaptive";  ///< barrier update: "monotone" or "adaptive"
   double mu_init = 0.1;                  ///< initial barrier parameter

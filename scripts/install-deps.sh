@@ -9,17 +9,18 @@
 set -euo pipefail
 
 # What `make demo` needs: the compiler, the libraries of the CLI, and matplotlib for its pictures.
+# libmumps-seq-dev (also a dependency of coinor-libipopt-dev): the KKT solver hands MUMPS the
+# matrices its static pivots fail on (ocp/kkt/mumps_factor.hpp), and the solve profile times
+# MUMPS's calls, both through its C header (dmumps_c.h).
 packages=(
   build-essential cmake pkg-config ninja-build
-  coinor-libipopt-dev libeigen3-dev libnlopt-cxx-dev
+  coinor-libipopt-dev libmumps-seq-dev libeigen3-dev libnlopt-cxx-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   python3 python3-matplotlib python3-numpy python3-pil
 )
-# What the tests, benchmarks, bindings, report test and MPI libraries add (make test, make build);
-# the solve profile times MUMPS's calls through its C header (dmumps_c.h).
+# What the tests, benchmarks, bindings, report test and MPI libraries add (make test, make build).
 full_packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libboost-dev
-  libmumps-seq-dev
   python3-dev pybind11-dev python3-pytest
   chromium
   valgrind
