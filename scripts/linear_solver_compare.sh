@@ -23,15 +23,8 @@ echo "config,linear_solver,status,iterations,cost,wall_s" >"$rows"
 for config in "$root"/configs/ocp/*.yaml; do
   name="$(basename "$config" .yaml)"
   for solver in mumps ldl; do
-    out="$work/out_${solver}_$name"
-    "$gaitopt" optimize --config "$work/$solver/ocp/$name.yaml" --out "$out" --no-plots --quiet \
-      >/dev/null 2>&1 || true
-    [[ -d "$out" ]] || out="$out.failed"
-    /usr/bin/python3 - "$out/summary.json" "$name" "$solver" >>"$rows" <<'PY'
-import json, sys
-s = json.load(open(sys.argv[1]))
-print(f"{sys.argv[2]},{sys.argv[3]},{s['status']},{s['iterations']},{s['cost']!r},{s['wall_time_s']:.4f}")
-PY
+    "$root/scripts/solve_row.sh" "$gaitopt" "$work/$solver/ocp/$name.yaml" \
+      "$work/out_${solver}_$name" "$name" "$solver" >>"$rows"
   done
 done
 

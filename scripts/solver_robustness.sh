@@ -37,15 +37,8 @@ for config in "$root"/configs/ocp/mu2004_walk*.yaml; do
     for solver in "${solvers[@]}"; do
       variant="$work/$solver/ocp/${name}_$segments.yaml"
       sed "s/\({name: SSP, .*segments: \)30}/\1$segments}/" "$work/$solver/ocp/$name.yaml" >"$variant"
-      out="$work/out"
-      rm -rf "$out" "$out.failed"
-      "$gaitopt" optimize --config "$variant" --out "$out" --no-plots --quiet >/dev/null 2>&1 || true
-      [[ -d "$out" ]] || out="$out.failed"
-      /usr/bin/python3 - "$out/summary.json" "$name" "$segments" "$solver" >>"$rows" <<'PY'
-import json, sys
-s = json.load(open(sys.argv[1]))
-print(f"{sys.argv[2]},{sys.argv[3]},{sys.argv[4]},{s['status']},{s['iterations']},{s['cost']!r},{s['wall_time_s']:.4f}")
-PY
+      "$root/scripts/solve_row.sh" "$gaitopt" "$variant" "$work/out" "$name" "$segments" \
+        "$solver" >>"$rows"
       echo "  $name, $segments segments, $solver: $(tail -n 1 "$rows" | cut -d, -f4-6)" >&2
     done
   done
