@@ -36,7 +36,9 @@ struct SolverOptions {
   std::string bound_mult_init_method = "constant";
   /// MUMPS fill-reducing ordering (ICNTL(7)): 0 AMD, 2 AMF, 3 SCOTCH, 4 PORD, 5 METIS, 6 QAMD,
   /// 7 MUMPS chooses. AMD: 0.77 of the CPU time of a whole five-link solve against MUMPS's own
-  /// choice, 0.91 on RABBIT, same iterations (results/solve_profile.md)
+  /// choice, 0.91 on RABBIT, same iterations (results/solve_profile.md). With "mumps" only: the
+  /// matrices "ldl" hands MUMPS are ordered by AMD (ocp/kkt/mumps_factor.cpp), since Ipopt's
+  /// Pardiso door carries no MUMPS option
   int mumps_pivot_order = 0;
   std::string nlp_scaling_method = "gradient-based";  ///< or "none"
   int print_level = 0;                                ///< 0 silent ... 5 Ipopt's iteration table

@@ -74,8 +74,7 @@ bool KktSolver::lostADiagonal(const double* values) const {
 void KktSolver::factorize(const double* values) {
   if (!ldl_ || lostADiagonal(values)) analyse(values);
   ldl_->factorize(values, kTinyPivot * largestMagnitude(values, pattern_.nonZeros()));
-  onMumps_ = false;
-  mumpsRefused_ = false;
+  factor_ = Factor::kStatic;
   // A zero static pivot, or an inertia other than a KKT matrix's (one negative eigenvalue per
   // constraint row): MUMPS's threshold pivoting decides. Ipopt takes a wrong inertia for a
   // nonconvex W and regularises it; from static pivots it can be a small pivot's rounding, and
@@ -88,16 +87,16 @@ void KktSolver::factorize(const double* values) {
 void KktSolver::factorizeWithMumps(const double* values) {
   if (!mumps_) mumps_ = std::make_unique<MumpsFactor>(pattern_);
   mumps_->factorize(values);
-  onMumps_ = true;
+  factor_ = Factor::kMumps;
   ++fallbacks_;
 }
 
 int KktSolver::negativeEigenvalues() const {
-  return onMumps_ ? mumps_->negativeEigenvalues() : ldl_->negativeEigenvalues();
+  return factor_ == Factor::kMumps ? mumps_->negativeEigenvalues() : ldl_->negativeEigenvalues();
 }
 
 void KktSolver::applyInverse(double* x) const {
-  if (onMumps_)
+  if (factor_ == Factor::kMumps)
     mumps_->solve(x);
   else
     ldl_->solve(x);
@@ -129,13 +128,13 @@ int KktSolver::solve(const double* values, double* rhs, int refinementSteps) {
   int steps = 0;
   const double ratio =
       solveAndRefine(values, rhs, std::max(refinementSteps, kOwnRefinementSteps), steps);
-  if (ratio <= kResidualRatioMax || onMumps_ || mumpsRefused_) return steps;
+  if (ratio <= kResidualRatioMax || factor_ != Factor::kStatic) return steps;
   try {
     factorizeWithMumps(values);
   } catch (const SingularMatrix&) {
     // Too late to tell Ipopt (it takes a solve's failure for an internal error): keep this
     // solution, whose residual Ipopt's own refinement then measures.
-    mumpsRefused_ = true;
+    factor_ = Factor::kStaticMumpsRefused;
     return steps;
   }
   std::copy(b.begin(), b.end(), rhs);

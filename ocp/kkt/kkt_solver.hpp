@@ -56,8 +56,10 @@ class KktSolver {
   std::vector<char> paired_;    // row -> in a 2x2 pivot
   std::unique_ptr<BlockLdl> ldl_;
   std::unique_ptr<MumpsFactor> mumps_;  // made at the first fallback
-  bool onMumps_ = false;                // the last factorization is MUMPS's
-  bool mumpsRefused_ = false;           // MUMPS found the last factorized A singular in a solve
+  /// Whose factors of the last factorized A the solves use: the static pivots', MUMPS's, or the
+  /// static pivots' after MUMPS found A singular in a solve (not to be asked again).
+  enum class Factor { kStatic, kMumps, kStaticMumpsRefused };
+  Factor factor_ = Factor::kStatic;
   int analyses_ = 0;
   int fallbacks_ = 0;
 };
