@@ -33,9 +33,10 @@ std::string errnoText(int error) {
   return std::strerror(error);
 }
 
-void writeFile(const std::string& path, std::string_view content) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) fail(path, errno);
+namespace {
+
+/// Writes `content` to the open `fd` and closes it; on failure removes `path` and throws.
+void writeAndClose(int fd, const std::string& path, std::string_view content) {
   int error = writeAll(fd, content);
   // close() reports errors a file system defers (NFS, quotas): checked too.
   if (::close(fd) != 0 && error == 0) error = errno;
@@ -45,9 +46,30 @@ void writeFile(const std::string& path, std::string_view content) {
   }
 }
 
+/// A new file next to `path`, PATH.tmp-PID-N, created with O_EXCL | O_NOFOLLOW: whatever a user
+/// or another process put at such a name is neither written through nor replaced.
+int createTemporary(const std::string& path, std::string& tmp) {
+  for (int n = 0; n < 100; ++n) {
+    tmp = fmt::format("{}.tmp-{}-{}", path, ::getpid(), n);
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+    if (fd >= 0) return fd;
+    if (errno != EEXIST) fail(tmp, errno);
+  }
+  fail(tmp, EEXIST);
+}
+
+}  // namespace
+
+void writeFile(const std::string& path, std::string_view content) {
+  // O_NOFOLLOW: a link at `path` is refused (ELOOP), never written through to its target.
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0644);
+  if (fd < 0) fail(path, errno);
+  writeAndClose(fd, path, content);
+}
+
 void writeFileAtomically(const std::string& path, std::string_view content) {
-  const std::string tmp = path + ".tmp";
-  writeFile(tmp, content);
+  std::string tmp;
+  writeAndClose(createTemporary(path, tmp), tmp, content);
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     const int error = errno;
     ::unlink(tmp.c_str());
@@ -56,7 +78,7 @@ void writeFileAtomically(const std::string& path, std::string_view content) {
 }
 
 AppendFile::AppendFile(std::string path) : path_(std::move(path)) {
-  fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_NOFOLLOW | O_CLOEXEC, 0644);
   if (fd_ < 0) fail(path_, errno);
 }
 

@@ -18,18 +18,20 @@ class WriteError : public std::runtime_error {
 /// The system's text for an errno value ("No space left on device").
 std::string errnoText(int error);
 
-/// Creates or truncates `path` and writes `content`; checks every write and the close.
+/// Creates or truncates `path` and writes `content`; checks every write and the close. A link at
+/// `path` is refused, not followed.
 /// @throws WriteError; a partly written file is removed.
 void writeFile(const std::string& path, std::string_view content);
 
-/// Writes `content` to PATH.tmp and renames it over `path`: a reader (or a later run after a
-/// failure) sees the old file or the new one, whole. @throws WriteError.
+/// Writes `content` to a new PATH.tmp-PID-N (O_EXCL, links not followed) and renames it over
+/// `path`: a reader (or a later run after a failure) sees the old file or the new one, whole.
+/// @throws WriteError.
 void writeFileAtomically(const std::string& path, std::string_view content);
 
 /// A file that only grows (a resumable run's row log): each append is one checked write(2).
 class AppendFile {
  public:
-  /// Opens (creating) `path` for appending. @throws WriteError.
+  /// Opens (creating) `path` for appending; a link there is refused. @throws WriteError.
   explicit AppendFile(std::string path);
   ~AppendFile();
   AppendFile(const AppendFile&) = delete;

@@ -47,6 +47,14 @@ bool alive(long pid) {
   return pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
 }
 
+/// Whether `dir` is a folder gaitopt may remove: a real folder (no link) that holds the marker,
+/// or an empty one.
+bool removable(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(fs::symlink_status(dir, ec))) return false;
+  return fs::is_empty(dir, ec) || fs::is_regular_file(fs::symlink_status(dir / kMarker, ec));
+}
+
 std::string stagingName(const std::string& out, const char* kind) {
   return out + kind + std::to_string(::getpid());
 }
@@ -56,6 +64,29 @@ std::string checkedPath(const std::string& out, const std::vector<std::string>& 
   std::string path = normaliseOutPath(out, option);
   refuseInputs(path, inputs, option);
   return path;
+}
+
+/// Creates the staging folder `staging` afresh, marked as gaitopt's.
+void makeStaging(const fs::path& staging) {
+  // A run of an earlier process with our pid (reused) left it: ours only if removable.
+  if (fs::exists(fs::symlink_status(staging))) {
+    if (!removable(staging))
+      throw config::ConfigError(
+          staging.string(), "", 0,
+          "is in the way of this run's staging folder and was not made by gaitopt: remove it");
+    fs::remove_all(staging);
+  }
+  // create_directory fails on anything that is there, a link included; the marker goes in first
+  // so that a run killed while filling it leaves a leftover the next run knows as gaitopt's.
+  if (!fs::create_directory(staging))
+    throw WriteError(fmt::format("{}: cannot create: it appeared meanwhile", staging.string()));
+  try {
+    writeMarker(staging.string());
+  } catch (const WriteError&) {  // a full disk: nothing may be left behind
+    std::error_code ignored;
+    fs::remove_all(staging, ignored);
+    throw;
+  }
 }
 
 }  // namespace
@@ -79,10 +110,12 @@ void refuseInputs(const std::string& out, const std::vector<std::string>& inputs
   const fs::path o = realPath(out);
   for (const std::string& input : inputs) {
     if (input.empty()) continue;
-    if (contains(o, realPath(input)))
+    const fs::path i = realPath(input);
+    if (contains(o, i) || contains(i, o))
       throw config::ConfigError(option, "", 0,
-                                fmt::format("'{}' is or holds the input '{}' of this command: "
-                                            "writing there would destroy it; choose another {}",
+                                fmt::format("'{}' is, holds or is inside the input '{}' of this "
+                                            "command: writing there would destroy it or mix "
+                                            "results into it; choose another {}",
                                             out, input, option));
   }
 }
@@ -108,8 +141,7 @@ void writeMarker(const std::string& dir) {
 }
 
 void removeIfOurs(const std::string& dir) {
-  if (fs::is_directory(fs::symlink_status(dir)) && fs::exists(fs::path(dir) / kMarker))
-    fs::remove_all(dir);
+  if (removable(dir)) fs::remove_all(dir);
 }
 
 void cleanLeftovers(const std::string& out) {
@@ -123,7 +155,9 @@ void cleanLeftovers(const std::string& out) {
     const std::string name = entry.path().filename().string();
     for (const char* kind : {".tmp-", ".old-"}) {
       const auto pid = leftoverPid(name, base, kind);
-      if (!pid || alive(*pid)) continue;
+      // A leftover is removed or restored only when gaitopt made it (removable): a user's file,
+      // link or folder that happens to carry such a name is left alone.
+      if (!pid || alive(*pid) || !removable(entry.path())) continue;
       stale.push_back(entry.path());
       if (std::string(kind) == ".old-" && (!newest_old || fs::last_write_time(entry.path(), ec) >
                                                               fs::last_write_time(*newest_old, ec)))
@@ -147,11 +181,9 @@ void OutputFolder::write(const std::function<void(const std::string&)>& fill) co
   const fs::path target(path_);
   const fs::path staging = stagingName(path_, ".tmp-"), old = stagingName(path_, ".old-");
   if (target.has_parent_path()) fs::create_directories(target.parent_path());
-  fs::remove_all(staging);
-  fs::create_directories(staging);
+  makeStaging(staging);
   try {
     fill(staging.string());
-    writeMarker(staging.string());
   } catch (...) {
     std::error_code ignored;
     fs::remove_all(staging, ignored);

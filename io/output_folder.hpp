@@ -2,12 +2,14 @@
 /// @file output_folder.hpp
 /// The folder a command writes (--out), made safe (DESIGN 7a, issue 19):
 /// - the path is normalised ("DIR/" is DIR); "", ".", "..", "/" are refused (exit 2);
-/// - it must not be, nor contain, an input of the same command (compared as real paths);
+/// - it must not be, contain or lie inside an input of the same command, whether named on the
+///   command line or inside a config (compared as real paths);
 /// - an existing OUT is replaced only when it is a gaitopt folder (the marker file kMarker) or
 ///   empty, never a regular file, a link or a folder of someone else's files;
 /// - one writer at a time (FolderLock, OUT.lock); OUT.tmp-PID and OUT.old-PID left by killed
 ///   runs are removed, and an OUT.old-PID without OUT (a kill between the two renames) is
-///   restored first.
+///   restored first, but only when gaitopt made them: folders (not links) holding the marker,
+///   or empty. The staging folder carries the marker from its creation on.
 #include <functional>
 #include <string>
 #include <vector>
@@ -23,7 +25,7 @@ inline constexpr const char* kMarker = ".gaitopt-result";
 /// `option` when it names no folder of its own ("", ".", "..", "/").
 std::string normaliseOutPath(const std::string& text, const std::string& option);
 
-/// @throws config::ConfigError when `out` is one of `inputs` or holds one.
+/// @throws config::ConfigError when `out` is one of `inputs`, holds one or lies inside one.
 void refuseInputs(const std::string& out, const std::vector<std::string>& inputs,
                   const std::string& option);
 
@@ -33,7 +35,8 @@ void requireOurs(const std::string& dir, const std::string& option);
 /// Writes the marker into `dir`. @throws WriteError.
 void writeMarker(const std::string& dir);
 
-/// Removes `dir` when it is a gaitopt folder (e.g. OUT.failed of an earlier failed solve).
+/// Removes `dir` when it is a gaitopt folder or empty (e.g. OUT.failed of an earlier failed
+/// solve); anything else, a link included, is left alone.
 void removeIfOurs(const std::string& dir);
 
 /// Removes OUT.tmp-PID / OUT.old-PID of dead processes, restoring OUT from the newest

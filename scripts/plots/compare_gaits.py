@@ -101,7 +101,7 @@ def table(a_dir, b_dir, a=None, b=None):
 
 def write_text(path, text):
     try:
-        with open(path, "w", encoding="utf-8") as f:
+        with style.replacing(path) as tmp, open(tmp, "w", encoding="utf-8") as f:
             f.write(text)
     except OSError as e:
         raise InputError(f"{path}: cannot write ({e.strerror})") from e

@@ -4,6 +4,9 @@ A script calls pyplot() (once its input is checked, if importing matplotlib firs
 failure down) and draws with the colours named here, so a tip, a phase or a failure looks the
 same in every picture. save(fig, path) writes at DPI and closes the figure.
 """
+import contextlib
+import os
+import tempfile
 
 DPI = 110
 # Many-panel pages (a gait overview, the HZD pair) are drawn large and stored coarser.
@@ -86,16 +89,39 @@ def finish(ax, xlabel, ylabel, title=None, legend=True, **legend_kw):
         ax.legend(**legend_kw)
 
 
+@contextlib.contextmanager
+def replacing(path):
+    """Yields a new file's path next to `path` and renames it over `path` when the block ends.
+
+    The file is created by mkstemp (O_EXCL), so a link planted at `path` or at any temporary
+    name is never written through: the rename replaces the link itself. Pictures of resumable
+    folders (stability, library) are rewritten in place, where this matters."""
+    folder, name = os.path.split(os.fspath(path))
+    # The same extension: writers that pick the format by it (Pillow's GIF) still can.
+    fd, tmp = tempfile.mkstemp(prefix=name + ".tmp-", suffix=os.path.splitext(name)[1],
+                               dir=folder or ".")
+    os.close(fd)
+    try:
+        os.chmod(tmp, 0o644)
+        yield tmp
+        os.replace(tmp, path)
+    except BaseException:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+        raise
+
+
 def save(fig, path, dpi=DPI):
     """Writes the figure and closes it; a PNG is then stored with a 256-colour palette (a
     third of the bytes of matplotlib's RGBA for line charts, no visible change), when Pillow
     is there."""
     import matplotlib.pyplot as plt
 
-    fig.savefig(path, dpi=dpi)
+    with replacing(path) as tmp:
+        fig.savefig(tmp, dpi=dpi)
+        if tmp.endswith(".png"):
+            shrink_png(tmp)
     plt.close(fig)
-    if str(path).endswith(".png"):
-        shrink_png(path)
 
 
 def shrink_png(path):

@@ -55,7 +55,8 @@ def draw(frames, path):
     interval_ms = 1000 * float(np.median(dt[dt > 0])) if np.any(dt > 0) else 50
     anim = animation.FuncAnimation(fig, update, frames=len(frames), interval=interval_ms,
                                    blit=True)
-    anim.save(path, writer=animation.PillowWriter(fps=1000 / interval_ms), dpi=DPI)
+    with style.replacing(path) as tmp:
+        anim.save(tmp, writer=animation.PillowWriter(fps=1000 / interval_ms), dpi=DPI)
     plt.close(fig)
 
 

@@ -12,7 +12,28 @@ TEST_F(CheckedWriteTest, WritesAndReplacesAtomically) {
   writeFileAtomically(path("a.json"), "{}\n");
   writeFileAtomically(path("a.json"), "[1]\n");
   EXPECT_EQ(slurp(path("a.json")), "[1]\n");
-  EXPECT_FALSE(std::filesystem::exists(path("a.json.tmp")));
+  // No temporary is left next to it.
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir_), {}), 1);
+}
+
+// Issue 39: a link planted at a file gaitopt writes, or at the temporary names it may use, is
+// never written through; the user's file keeps its bytes.
+TEST_F(CheckedWriteTest, LinksAreNeverWrittenThrough) {
+  put(path("notes"), "user data");
+  namespace fs = std::filesystem;
+  fs::create_symlink(path("notes"), path("a.json.tmp"));
+  fs::create_symlink(path("notes"), path("a.json.tmp-" + std::to_string(::getpid()) + "-0"));
+  writeFileAtomically(path("a.json"), "{}\n");
+  EXPECT_EQ(slurp(path("a.json")), "{}\n");
+  EXPECT_TRUE(fs::is_symlink(path("a.json.tmp")));
+  fs::create_symlink(path("notes"), path("b.csv"));
+  EXPECT_THROW(writeFile(path("b.csv"), "x"), WriteError);
+  EXPECT_THROW(AppendFile{path("b.csv")}, WriteError);
+  EXPECT_EQ(slurp(path("notes")), "user data");
+  // A link at the target itself is replaced by the rename, its target left alone.
+  writeFileAtomically(path("b.csv"), "rows\n");
+  EXPECT_FALSE(fs::is_symlink(path("b.csv")));
+  EXPECT_EQ(slurp(path("notes")), "user data");
 }
 
 // /dev/full fails every write with ENOSPC: the full-disk case without a full disk.

@@ -1,6 +1,8 @@
 // The safe output folder of DESIGN 7a: what may be replaced, inputs, paths, locks, leftovers.
 #include "io/output_folder.hpp"
 
+#include <sys/stat.h>
+
 #include <stdexcept>
 
 #include "config/config_error.hpp"
@@ -86,6 +88,52 @@ TEST_F(OutputFolderTest, LeftoversOfDeadRunsAreCleanedAndAnOrphanedOldResultRest
   EXPECT_FALSE(fs::exists(path("res.tmp-" + dead)));
   EXPECT_FALSE(fs::exists(path("res.old-" + dead)));
   EXPECT_TRUE(fs::exists(path("res.tmp-1x")));
+}
+
+// Issue 39: DIR.lock is gaitopt's own. A link or a user's file there is refused and kept; a lock
+// a killed run left (tagged, or empty) is taken and removed at the end.
+TEST_F(OutputFolderTest, LockFileThatIsNotGaitoptsIsRefusedAndKept) {
+  put(path("notes"), "user data");
+  fs::create_symlink(path("notes"), path("res.lock"));
+  EXPECT_THROW(OutputFolder(path("res"), {}), config::ConfigError);
+  EXPECT_TRUE(fs::is_symlink(path("res.lock")));
+  fs::remove(path("res.lock"));
+  put(path("res.lock"), "my own lock notes\n");
+  EXPECT_THROW(OutputFolder(path("res"), {}), config::ConfigError);
+  EXPECT_EQ(slurp(path("res.lock")), "my own lock notes\n");
+  EXPECT_EQ(slurp(path("notes")), "user data");
+  fs::remove(path("res.lock"));
+  ASSERT_EQ(::mkfifo(path("res.lock").c_str(), 0644), 0);  // must not hang the open
+  EXPECT_THROW(OutputFolder(path("res"), {}), config::ConfigError);
+  fs::remove(path("res.lock"));
+  for (const std::string& stale : {std::string(kLockTag) + "\n4194305\n", std::string()}) {
+    put(path("res.lock"), stale);
+    { const OutputFolder out(path("res"), {}); }
+    EXPECT_FALSE(fs::exists(fs::symlink_status(path("res.lock")))) << stale;
+  }
+}
+
+// Issue 39: a dead pid's OUT.tmp-PID / OUT.old-PID that gaitopt did not make (no marker, or a
+// link) is neither removed nor restored as OUT.
+TEST_F(OutputFolderTest, LeftoversThatGaitoptDidNotMakeAreKept) {
+  const std::string dead = "4194305";
+  fs::create_directories(path("res.tmp-" + dead));
+  put(path("res.tmp-" + dead + "/thesis.tex"), "mine");
+  fs::create_directories(path("users"));
+  put(path("users/") + kMarker, "");
+  fs::create_directory_symlink(path("users"), path("res.old-" + dead));
+  const OutputFolder out(path("res"), {});
+  EXPECT_EQ(slurp(path("res.tmp-" + dead + "/thesis.tex")), "mine");
+  EXPECT_TRUE(fs::is_symlink(path("res.old-" + dead)));
+  EXPECT_FALSE(fs::exists(fs::symlink_status(path("res"))));
+  EXPECT_TRUE(fs::exists(path("users/") + kMarker));
+}
+
+TEST_F(OutputFolderTest, OutputInsideAnInputFolderIsRefused) {
+  fs::create_directories(path("ref"));
+  EXPECT_THROW(OutputFolder(path("ref/walk"), {path("ref")}), config::ConfigError);
+  EXPECT_THROW(ResumableFolder(path("ref/sweep/"), {path("ref")}), config::ConfigError);
+  EXPECT_FALSE(fs::exists(path("ref/sweep")));
 }
 
 TEST_F(OutputFolderTest, ResumableFolderKeepsItsFilesAndRefusesForeignOnes) {
