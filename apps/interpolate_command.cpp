@@ -26,8 +26,11 @@ struct InterpolateOptions {
 };
 
 void runInterpolate(InterpolateOptions o) {
-  const io::OutputFolder out(o.output.out_dir, {o.library_dir});
+  io::refuseInputs(o.output.out_dir, {o.library_dir}, "--out");  // before reading it
   const library::LibraryFolder lib = library::readLibraryFolder(o.library_dir);
+  std::vector<std::string> inputs = ocp::ocpInputs(lib.base);
+  inputs.push_back(o.library_dir);
+  const io::OutputFolder out(o.output.out_dir, inputs);
   if (!o.has_slope) o.values[library::kSlope] = library::basePoint(lib.base)[library::kSlope];
   const dynamics::Model model = library::pointProblem(lib.base, o.values).model;
   library::FolderGaits solved(o.library_dir, lib.grid, model);

@@ -54,8 +54,10 @@ ocp::GaitResultOptions resultOptions(const OptimizeOptions& o) {
 }  // namespace
 
 void runOptimize(const OptimizeOptions& o) {
-  const io::OutputFolder out(o.output.out_dir, {o.config_path, o.warm_start});
   ocp::OcpConfig config = ocp::loadOcpConfig(o.config_path);
+  std::vector<std::string> inputs = ocp::ocpInputs(config);
+  inputs.insert(inputs.end(), {o.config_path, o.warm_start});
+  const io::OutputFolder out(o.output.out_dir, inputs);
   const dynamics::Model model = ocp::problemModel(config);  // the robot on the config's slope
   ocp::requireReachable(model, config, o.config_path);
   if (!o.quiet) fmt::print("optimize: {} on {}\n", config.name, model.name());

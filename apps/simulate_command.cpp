@@ -53,9 +53,9 @@ void printOutcome(const sim::ScenarioResult& r, int steps) {
 }  // namespace
 
 void runSimulate(const SimulateOptions& o) {
-  const io::OutputFolder out(o.output.out_dir, sim::scenarioInputs(o.scenario));
   const sim::ReferenceFolder ref =
       sim::loadReferenceFolder(o.scenario.reference_dir, o.scenario.robot_path);
+  const io::OutputFolder out(o.output.out_dir, sim::scenarioInputs(o.scenario, ref));
   sim::requireControllerFits(o.scenario, ref.model);
   sim::Scenario scenario = sim::makeScenario(o.scenario);
   scenario.poincare = o.poincare && !scenario.push;  // a pushed walk has no periodic cycle

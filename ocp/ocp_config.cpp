@@ -42,8 +42,8 @@ PhaseConfig readPhase(const YamlReader& r) {
     try {
       PhaseLayout{.segments = p.segments, .mesh = p.mesh}.validate();
     } catch (const std::invalid_argument& e) {
-      r.fail("mesh", fmt::format("{} ({} segments: {} fractions)", e.what(), p.segments,
-                                 p.segments + 1));
+      r.fail("mesh",
+             fmt::format("{} ({} segments: {} fractions)", e.what(), p.segments, p.segments + 1));
     }
   }
   return p;
@@ -75,7 +75,8 @@ ClearanceProfile readClearance(const YamlReader& r) {
 void readConstraints(const YamlReader& r, OcpConfig& c) {
   r.allowOnly({"torque_limits", "knee_limits", "angle_range", "rate_limit", "joint_velocity_limits",
                "swing_descends", "trailing_lifts", "ground_contact", "impact_friction", "zmp",
-               "clearance", "friction_margin", "zmp_margin", "dsp_reduced_coordinates", "jerk_limit"});
+               "clearance", "friction_margin", "zmp_margin", "dsp_reduced_coordinates",
+               "jerk_limit"});
   c.ground_contact = r.booleanOr("ground_contact", true);
   c.impact_friction = r.booleanOr("impact_friction", true);
   c.zmp = r.booleanOr("zmp", true);
@@ -244,6 +245,10 @@ dynamics::Foot marginFoot(const dynamics::Model& model, const OcpConfig& config)
   if (!(foot.heel + foot.toe > 0))
     throw std::invalid_argument("zmp_margin must be below half the robot's foot");
   return foot;
+}
+
+std::vector<std::string> ocpInputs(const OcpConfig& config) {
+  return {config.robot_path, config.guess_gait_path};
 }
 
 dynamics::Model problemModel(const OcpConfig& config) {

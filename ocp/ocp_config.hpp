@@ -114,6 +114,10 @@ struct OcpConfig {
 /// @throws config::ConfigError naming file, key and expectation.
 OcpConfig loadOcpConfig(const std::string& path);
 
+/// The files a problem reads besides its config file (the robot, and the guess gait when it has
+/// one), as the config names them: an output folder may not be, hold or lie inside one.
+std::vector<std::string> ocpInputs(const OcpConfig& config);
+
 /// The model the gait problem is posed on: the config's robot on its slope,
 /// dynamics::withSlope(loadRobot(config.robot_path), config.slope).
 /// @throws config::ConfigError for a bad robot file.

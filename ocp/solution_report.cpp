@@ -207,9 +207,8 @@ nlohmann::ordered_json solutionSummary(const GaitResultOptions& o, const dynamic
       {"constraints", problem.nlp.constraints()},
       {"segments", solution.history.back().segments},
       {"scheme", toString(problem.ssp.layout.scheme)},
-      {"dsp_pin", problem.dsp && problem.dsp->reduced_coordinates
-                      ? "position (reduced coordinates)"
-                      : "acceleration"}};
+      {"dsp_pin", problem.dsp && problem.dsp->reduced_coordinates ? "position (reduced coordinates)"
+                                                                  : "acceleration"}};
   summary["mesh_history"] = meshHistory(solution.history);
   summary["solver"] = solverSettings(config);
   return summary;
@@ -244,7 +243,9 @@ std::string writeFailedResult(const GaitResultOptions& o, const dynamics::Model&
                               const OcpConfig& config, const GaitSolution& solution,
                               const std::string& failed_dir) {
   const FailureReport report = failureReport(solution, failed_dir);
-  io::OutputFolder(failed_dir, {o.config_path}).write([&](const std::string& dir) {
+  std::vector<std::string> inputs = ocpInputs(config);
+  inputs.push_back(o.config_path);
+  io::OutputFolder(failed_dir, inputs).write([&](const std::string& dir) {
     writeGaitResult(o, model, config, solution, report.summary, dir);
     writeFailedNote(dir + "/FAILED.txt", report.message);
   });

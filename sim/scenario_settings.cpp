@@ -41,8 +41,8 @@ Scenario makeScenario(const ScenarioSettings& o) {
   return s;
 }
 
-std::vector<std::string> scenarioInputs(const ScenarioSettings& o) {
-  return {o.reference_dir, o.robot_path, groundPath(o.ground)};
+std::vector<std::string> scenarioInputs(const ScenarioSettings& o, const ReferenceFolder& ref) {
+  return {ref.dir, ref.robot_path, groundPath(o.ground)};
 }
 
 void requireControllerFits(const ScenarioSettings& o, const dynamics::Model& model) {

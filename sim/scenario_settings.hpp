@@ -10,6 +10,7 @@
 
 #include "dynamics/model.hpp"
 #include "sim/contact_rules.hpp"
+#include "sim/reference_folder.hpp"
 #include "sim/scenario.hpp"
 
 namespace gaitopt::sim {
@@ -41,9 +42,10 @@ std::string groundRecord(const std::string& ground);
 /// The scenario the options describe. @throws config::ConfigError for a bad ground file.
 Scenario makeScenario(const ScenarioSettings& o);
 
-/// The files the scenario reads (reference folder, robot and ground files): a --out may not
-/// be one of them.
-std::vector<std::string> scenarioInputs(const ScenarioSettings& o);
+/// The files the scenario reads (the reference folder, the robot file it was loaded with, even
+/// one found through its summary.json, and the ground file): a --out may not be, hold or lie
+/// inside one of them.
+std::vector<std::string> scenarioInputs(const ScenarioSettings& o, const ReferenceFolder& ref);
 
 /// @throws config::ConfigError (exit 2) when the controller cannot drive `model`: the tracking
 /// laws set every joint acceleration through the torques, so the stance ankle must be actuated
