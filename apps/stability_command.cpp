@@ -53,11 +53,10 @@ std::pair<const sim::SweepParameter*, std::vector<double>> parseAxis(const std::
   }
 }
 
-/// NAME or NAME=a:b:n.
-Sweep parseSweep(const std::string& text, const std::string& out_dir, const sim::Scenario& base) {
+/// NAME or NAME=a:b:n (its row file is opened by openRowFiles).
+Sweep parseSweep(const std::string& text, const sim::Scenario& base) {
   auto [p, values] = parseAxis(text, "--sweep", base);
-  return {p, std::move(values),
-          std::make_unique<sim::SweepFile>(out_dir + "/sweep_" + p->name + ".csv")};
+  return {p, std::move(values), nullptr};
 }
 
 /// The parameter's value at the nominal point (the robot's friction when the scenario keeps it).
@@ -68,8 +67,7 @@ double nominalValue(const sim::Scenario& base, const std::string& name,
 }
 
 /// A[=a:b:n],B[=c:d:m]: two different parameters, each with at least 2 increasing values.
-Map parseMap(const std::string& text, const std::string& out_dir, const sim::Scenario& base,
-             const dynamics::Model& model) {
+Map parseMap(const std::string& text, const sim::Scenario& base, const dynamics::Model& model) {
   const std::size_t comma = text.find(',');
   if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos)
     throw config::ConfigError("--map", text, 0, "expected two parameters, A[=a:b:n],B[=c:d:m]");
@@ -85,11 +83,40 @@ Map parseMap(const std::string& text, const std::string& out_dir, const sim::Sce
   if (m.a.parameter == m.b.parameter)
     throw config::ConfigError("--map", m.a.parameter->name, 0,
                               "the same parameter twice; a map varies two different ones");
-  const std::string& a = m.a.parameter->name;
-  const std::string& b = m.b.parameter->name;
-  m.file = std::make_unique<sim::SweepFile>(out_dir + "/map_" + a + "_" + b + ".csv",
-                                            std::vector<std::string>{a, b});
   return m;
+}
+
+/// The grid the folder's rows belong to: with the scenario, it keys the folder (settings.json).
+nlohmann::ordered_json gridKey(const std::vector<Sweep>& sweeps, const std::vector<Map>& maps) {
+  nlohmann::ordered_json key = {{"sweeps", nlohmann::ordered_json::array()},
+                                {"maps", nlohmann::ordered_json::array()}};
+  for (const auto& s : sweeps) key["sweeps"].push_back({s.parameter->name, s.values});
+  for (const auto& m : maps)
+    key["maps"].push_back({m.a.parameter->name, m.a.values, m.b.parameter->name, m.b.values});
+  return key;
+}
+
+/// Each sweep writes its own row file, sweep_NAME.csv: a parameter swept twice would mix two
+/// grids in one file. @throws config::ConfigError (exit 2).
+void requireDistinct(const std::vector<Sweep>& sweeps) {
+  for (std::size_t i = 0; i < sweeps.size(); ++i)
+    for (std::size_t k = 0; k < i; ++k)
+      if (sweeps[i].parameter == sweeps[k].parameter)
+        throw config::ConfigError("--sweep", sweeps[i].parameter->name, 0,
+                                  "the same parameter twice; give one range per parameter");
+}
+
+/// Opens (creating) each sweep's and map's row file, once the folder's settings are claimed: a
+/// refused run must not touch them (SweepFile cuts a torn last row).
+void openRowFiles(std::vector<Sweep>& sweeps, std::vector<Map>& maps, const std::string& dir) {
+  for (auto& s : sweeps)
+    s.file = std::make_unique<sim::SweepFile>(dir + "/sweep_" + s.parameter->name + ".csv");
+  for (auto& m : maps) {
+    const std::string& a = m.a.parameter->name;
+    const std::string& b = m.b.parameter->name;
+    m.file = std::make_unique<sim::SweepFile>(dir + "/map_" + a + "_" + b + ".csv",
+                                              std::vector<std::string>{a, b});
+  }
 }
 
 void printInterval(const std::string& name, const nlohmann::ordered_json& j) {
@@ -129,13 +156,17 @@ void runStability(const StabilityOptions& o) {
   const sim::Reference reference(ref.step, ref.model);
   sim::Scenario base = sim::makeScenario(o.scenario);
   base.poincare = o.poincare;
-  const io::ResumableFolder folder(o.out_dir, sim::scenarioInputs(o.scenario));
-  const std::string& out_dir = folder.path();
-  io::claimSettings(out_dir + "/settings.json", sim::sweepFolderSettings(o.scenario, ref, base));
   std::vector<Sweep> sweeps;
-  for (const auto& text : o.sweeps) sweeps.push_back(parseSweep(text, out_dir, base));
+  for (const auto& text : o.sweeps) sweeps.push_back(parseSweep(text, base));
+  requireDistinct(sweeps);
   std::vector<Map> maps;
-  for (const auto& text : o.maps) maps.push_back(parseMap(text, out_dir, base, ref.model));
+  for (const auto& text : o.maps) maps.push_back(parseMap(text, base, ref.model));
+  const io::ResumableFolder folder(o.out_dir, sim::scenarioInputs(o.scenario, ref));
+  const std::string& out_dir = folder.path();
+  nlohmann::ordered_json key = sim::sweepFolderSettings(o.scenario, ref, base);
+  key.update(gridKey(sweeps, maps));
+  io::claimSettings(out_dir + "/settings.json", key);
+  openRowFiles(sweeps, maps, out_dir);
   // Each job walks one point and appends its row: on disk as soon as it is done.
   std::vector<std::function<void()>> todo;
   std::size_t done_before = 0;

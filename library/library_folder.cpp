@@ -64,8 +64,16 @@ LibraryFolder readLibraryFolder(const std::string& dir) {
 void claimLibraryFolder(const LibrarySetup& s) {
   nlohmann::ordered_json axes;
   for (int a = 0; a < 3; ++a) axes[kAxisNames[a]] = s.grid.axes()[a];
-  const nlohmann::ordered_json claim = {
+  nlohmann::ordered_json claim = {
       {"name", s.config.name}, {"ocp", ocpPathFromFolder(s)}, {"axes", axes}};
+  // The contents of every file the points are solved from (not their paths, which differ
+  // between machines), and the rate every point's trajectory.csv is written at.
+  claim["library_config_fnv1a"] = io::fileFingerprint(s.config.path);
+  claim["ocp_config_fnv1a"] = io::fileFingerprint(s.config.ocp_path);
+  claim["robot_file_fnv1a"] = io::fileFingerprint(s.config.base.robot_path);
+  if (!s.config.base.guess_gait_path.empty())
+    claim["guess_gait_fnv1a"] = io::fileFingerprint(s.config.base.guess_gait_path);
+  claim["rate_hz"] = s.result.rate_hz;
   io::claimSettings(s.out_dir + "/library.json", claim);
 }
 

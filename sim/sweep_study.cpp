@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <stdexcept>
 
 #include "io/settings_record.hpp"
@@ -71,18 +72,21 @@ nlohmann::ordered_json walkingInterval(const SweepParameter& parameter,
 
 nlohmann::ordered_json sweepFolderSettings(const ScenarioSettings& s, const ReferenceFolder& ref,
                                            const Scenario& base) {
-  return {{"robot", ref.model.name()},
-          {"robot_file_fnv1a", io::fileFingerprint(ref.robot_path)},
-          {"reference_trajectory_fnv1a", io::fileFingerprint(ref.dir + "/trajectory.csv")},
-          {"controller", s.controller},
-          {"gain_scale", s.gain_scale},
-          {"ground_file_fnv1a", io::fileFingerprint(groundPath(s.ground))},
-          {"uncertainty_case", s.uncertainty_case},
-          {"uncertainty_on", s.uncertainty_on},
-          {"friction", s.friction},
-          {"push_impulse_Ns", s.push},
-          {"steps", base.steps},
-          {"poincare", base.poincare}};
+  nlohmann::ordered_json j = scenarioJson(s, base);
+  // Paths differ between machines and say nothing of what they held: the bytes are keyed.
+  j.erase("reference");
+  j.erase("ground_file");
+  j["robot"] = ref.model.name();
+  j["robot_file_fnv1a"] = io::fileFingerprint(ref.robot_path);
+  j["reference_trajectory_fnv1a"] = io::fileFingerprint(ref.dir + "/trajectory.csv");
+  // summary.json carries the switch states and the slope the reference is walked with.
+  const std::string summary = ref.dir + "/summary.json";
+  j["reference_summary_fnv1a"] =
+      std::filesystem::exists(summary) ? io::fileFingerprint(summary) : "(absent)";
+  j["ground_file_fnv1a"] = io::fileFingerprint(groundPath(s.ground));
+  j["friction"] = s.friction;
+  j["poincare"] = base.poincare;
+  return j;
 }
 
 }  // namespace gaitopt::sim

@@ -36,10 +36,11 @@ SweepRow walkSweepPoint(const dynamics::Model& model, const Reference& reference
 nlohmann::ordered_json walkingInterval(const SweepParameter& parameter,
                                        const std::map<std::string, SweepRow>& rows, double nominal);
 
-/// What defines a sweep folder's rows (settings.json): the robot and fingerprints of its file,
-/// the reference's trajectory.csv and the ground file, the controller and plant settings, the
-/// steps and whether Poincare maps are taken. A rerun under other settings would mix two
-/// experiments.
+/// What defines a sweep folder's rows (settings.json): every setting of the scenario
+/// (scenarioJson: controller, gains, plant errors, push, contact rules, steps), the friction,
+/// whether Poincare maps are taken, and the contents of every input file (robot, the
+/// reference's trajectory.csv and summary.json, ground) by fingerprint, not by path. A rerun
+/// under other settings would mix two experiments; the grid is added by the caller.
 nlohmann::ordered_json sweepFolderSettings(const ScenarioSettings& settings,
                                            const ReferenceFolder& ref, const Scenario& base);
 
