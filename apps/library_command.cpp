@@ -13,6 +13,7 @@
 #include "apps/option_checks.hpp"
 #include "config/config_error.hpp"
 #include "gaits/gait_summary.hpp"
+#include "io/exit_code.hpp"
 #include "io/output_folder.hpp"
 #include "io/settings_record.hpp"
 #include "library/library_folder.hpp"
@@ -50,7 +51,9 @@ library::RunStats solveAll(const LibraryOptions& o, const library::LibrarySetup&
 
 void runScheduler(const LibraryOptions& o, const library::LibrarySetup& setup,
                   std::unique_ptr<parallel::Executor> executor) {
-  const io::ResumableFolder folder(setup.out_dir, {o.config_path, setup.config.ocp_path});
+  std::vector<std::string> inputs = ocp::ocpInputs(setup.config.base);
+  inputs.insert(inputs.end(), {o.config_path, setup.config.ocp_path});
+  const io::ResumableFolder folder(setup.out_dir, inputs);
   std::filesystem::create_directories(setup.out_dir + "/points");
   library::claimLibraryFolder(setup);
   library::LibraryIndex index(setup.out_dir);
@@ -63,6 +66,13 @@ void runScheduler(const LibraryOptions& o, const library::LibrarySetup& setup,
       "index in {}/index.csv\n",
       stats.points - stats.failed, stats.failed, stats.wall_time_s,
       stats.wall_time_s > 0 ? stats.points / stats.wall_time_s : 0.0, stats.workers, setup.out_dir);
+  // A solver that did not converge is an outcome a library records; a point that could not be
+  // set up or written (a full disk) is a failure of the run.
+  if (stats.errors > 0)
+    throw io::CommandError(io::kExitFailure,
+                           fmt::format("{} point(s) ended in an error, not a solver outcome; the "
+                                       "first: {}",
+                                       stats.errors, stats.first_error));
 }
 
 /// @throws config::ConfigError when two points of the grid would share a name.

@@ -120,7 +120,10 @@ IndexRow solveLibraryPoint(const LibrarySetup& setup, const PointJob& job) {
     solve(setup, job, pp, poly, attempts, row);
     record(setup, pp, attempts, setup.pointDir(job.point), row);
   } catch (const std::exception& e) {
+    // Whatever got this far (a solve that converged before its folder could not be written) is
+    // lost: the point is failed, never converged.
     row.status = "error";
+    row.converged = false;
     row.message = e.what();
     row.solve_time_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -8,7 +8,8 @@ namespace gaitopt::library {
 
 RunStats solveLibrary(const LibrarySetup& setup, ScheduleState state, LibraryIndex& index,
                       parallel::Executor& executor, const RowReport& report) {
-  RunStats stats{0, 0, 0, executor.slots(), 0};
+  RunStats stats;
+  stats.workers = executor.slots();
   const ScheduleState before = state;
   const auto start = std::chrono::steady_clock::now();
   const int root = setup.grid.nearest(basePoint(setup.config.base));
@@ -16,6 +17,7 @@ RunStats solveLibrary(const LibrarySetup& setup, ScheduleState state, LibraryInd
               [&](const PointJob&, const parallel::JobResult& r) {
                 const IndexRow row = indexRowFromJson(nlohmann::json::parse(r.payload));
                 index.append(row);
+                if (row.status == "error" && stats.errors++ == 0) stats.first_error = row.message;
                 const bool again = state.finished[static_cast<std::size_t>(r.id)];
                 stats.points += again ? 0 : 1;
                 ++stats.solves;

@@ -3,6 +3,7 @@
 /// One run of `gaitopt library`: the points not finished before, solved on an executor in the
 /// order of the warm-start schedule (schedule.hpp), each row appended to the index as it comes.
 #include <functional>
+#include <string>
 
 #include "library/library_index.hpp"
 #include "library/library_point.hpp"
@@ -16,6 +17,10 @@ namespace gaitopt::library {
 struct RunStats {
   int points = 0, failed = 0, solves = 0, workers = 0;
   double wall_time_s = 0;
+  /// Rows of status "error": a point that could not be set up or written, or whose worker died
+  /// (a failure of the run, not a solver outcome), and the first one's message.
+  int errors = 0;
+  std::string first_error;
 };
 
 /// Sees each finished row, whether it was the point's second chance, and the points finished so
