@@ -1,0 +1,161 @@
+#!/usr/bin/env bash
+# Resumes keyed by content (issue 39): every option of the resumable commands, read from their
+# --help, either shapes the rows and is in the folder's key (a rerun that changes it is refused,
+# exit 2, naming the key) or is listed here as not shaping them with the reason (a rerun that
+# changes it resumes). An option missing from the tables fails the test, so a new option must
+# be keyed or documented. impact-map is not resumable: every run writes its folder whole.
+# Usage: resume_key_cli_test.sh <path to gaitopt binary> <repo root>
+# shellcheck source=tests/apps/cli_test_lib.sh
+source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
+export GAITOPT_SCRIPTS="$TMP/no_scripts" # no pictures
+cd "$TMP" || exit 1
+ROBOT="$ROOT/configs/robots/mu2004_five_link.yaml"
+GAIT="$ROOT/configs/gaits/mu2004.yaml"
+FAILED=0
+
+# rerun COMMAND BASE OPTION [VALUE]: `gaitopt COMMAND` with the options of the associative array
+# BASE (option -> value, "" for a flag), OPTION set to VALUE (a flag when VALUE is absent).
+rerun() {
+  local command=$1 o
+  local -n base=$2
+  local -A args=()
+  for o in "${!base[@]}"; do args[$o]=${base[$o]}; done
+  [[ -z ${3:-} ]] || args[$3]=${4:-}
+  local words=()
+  for o in "${!args[@]}"; do
+    words+=("$o")
+    [[ -z ${args[$o]} ]] || words+=("${args[$o]}")
+  done
+  run "$command" "${words[@]}"
+}
+
+# The long options of `gaitopt COMMAND --help`, one a line.
+options_of() {
+  "$GAITOPT" "$1" --help | sed -nE 's/^  (-[a-zA-Z], ?)?(--[a-z][a-z0-9-]*).*/\2/p' | sort -u
+}
+# covered COMMAND TABLE...: every option of the help is a row of the tables and every row an option.
+covered() {
+  local command=$1 listed help
+  shift
+  listed=$(printf '%s\n' "$@" | sed 's/|.*//' | sort -u)
+  help=$(options_of "$command")
+  [[ -n $help ]] || { echo "FAIL $command: no options read from --help" && FAILED=1 && return; }
+  while read -r o; do
+    grep -qx -- "$o" <<<"$listed" || { echo "FAIL $command $o: neither keyed nor documented" && FAILED=1; }
+  done <<<"$help"
+  while read -r o; do
+    grep -qx -- "$o" <<<"$help" || { echo "FAIL $command $o: in the table but not an option" && FAILED=1; }
+  done <<<"$listed"
+}
+# refused NAME KEY: the last run was refused naming KEY and the rows were kept.
+refused() {
+  if [[ $RC -eq 2 ]] && grep -q -- "^  $2: folder" "$TMP/err"; then
+    echo "ok keyed $1 ($2)"
+  else
+    echo "FAIL keyed $1: expected exit 2 naming $2, got $RC: $(head -c 300 "$TMP/err")" && FAILED=1
+  fi
+}
+resumed() {
+  if [[ $RC -eq 0 ]] && grep -q "$2" "$TMP/out"; then
+    echo "ok not keyed $1"
+  else
+    echo "FAIL not keyed $1: expected a resume, got $RC: $(head -c 300 "$TMP/err")" && FAILED=1
+  fi
+}
+
+# --- stability -----------------------------------------------------------------------------------
+run poly --robot "$ROBOT" --gait "$GAIT" --no-plots --rate 100 --out gait
+[[ $RC -eq 0 ]] || fail "poly: $(cat "$TMP/err")"
+run poly --robot "$ROBOT" --gait "$GAIT" --no-plots --rate 200 --out gait200
+cp "$ROBOT" robot.yaml && echo "# the same robot, another file" >>robot.yaml
+declare -A BASE=([--reference]=gait [--robot]=$ROBOT [--controller]=sliding_mode
+  [--sweep]=push=0:1:2 [--steps]=2 [--no-plots]= [--quiet]= [--out]=s)
+rerun stability BASE
+[[ $RC -eq 0 ]] || fail "stability: $(cat "$TMP/err")"
+rows=$(md5sum <s/sweep_push.csv)
+# OPTION|VALUE|KEY: the rerun sets OPTION to VALUE (a flag when empty) and must name KEY.
+STABILITY_KEYED=(
+  "--reference|gait200|reference_trajectory_fnv1a"
+  "--robot|robot.yaml|robot_file_fnv1a"
+  "--controller|computed_torque|controller"
+  "--ground|impedance|ground"
+  "--steps|3|steps_requested"
+  "--uncertainty-case|2|uncertainty_case"
+  "--uncertainty-on|controller|uncertainty_on"
+  "--mass-error|0.1|parameter_errors"
+  "--length-error|0.05|parameter_errors"
+  "--friction|0.5|friction"
+  "--push|1|push_impulse_Ns"
+  "--gain-scale|2|gain_scale"
+  "--max-slip|0.5|contact_rules"
+  "--cop-limit|fail|contact_rules"
+  "--restitution|0.1|contact_rules"
+  "--sweep|push=0:1:3|sweeps"
+  "--map|push,mass_error|maps"
+  "--poincare||poincare"
+)
+# OPTION|VALUE|why it does not shape a row ("-" as VALUE: not rerun).
+STABILITY_FREE=(
+  "--out|-|names the folder that is resumed"
+  "--jobs|1|threads: each row is walked alone, the same on any thread"
+  "--quiet||progress on the terminal"
+  "--no-plots||the picture is drawn from the rows"
+  "--help|-|prints the help"
+)
+covered stability "${STABILITY_KEYED[@]}" "${STABILITY_FREE[@]}"
+for row in "${STABILITY_KEYED[@]}"; do
+  IFS='|' read -r option value key <<<"$row"
+  rerun stability BASE "$option" "$value"
+  refused "stability $option" "$key"
+done
+unset "BASE[--quiet]"
+for row in "${STABILITY_FREE[@]}"; do
+  IFS='|' read -r option value _ <<<"$row"
+  [[ $value != - ]] || continue
+  rerun stability BASE "$option" "$value"
+  resumed "stability $option" "0 points to walk (2 done before)"
+done
+[[ $(md5sum <s/sweep_push.csv) == "$rows" ]] || { echo "FAIL stability: the rows changed" && FAILED=1; }
+
+# --- library -------------------------------------------------------------------------------------
+sed "s|segments: 25|segments: 8|; s|\.\./|$ROOT/configs/|" "$ROOT/configs/ocp/rabbit_kelly2017.yaml" \
+  >base.yaml
+printf 'name: l\nocp: base.yaml\ngrid:\n  speed: [0.7]\n' >lib.yaml
+cp lib.yaml lib_other.yaml && echo "# another file" >>lib_other.yaml
+declare -A LBASE=([--config]=lib.yaml [--jobs]=1 [--quiet]= [--out]=l)
+rerun library LBASE
+[[ $RC -eq 0 ]] || fail "library: $(cat "$TMP/err")"
+rows=$(md5sum <l/index.csv)
+LIBRARY_KEYED=(
+  "--config|lib_other.yaml|library_config_fnv1a"
+  "--rate|500|rate_hz"
+)
+LIBRARY_FREE=(
+  "--out|-|names the folder that is resumed"
+  "--jobs|2|threads: each point is solved alone, the same on any thread"
+  "--retry-failed||which finished points are solved again, not how"
+  "--plots||pictures of the point folders, drawn from their rows"
+  "--quiet||progress on the terminal"
+  "--help|-|prints the help"
+)
+covered library "${LIBRARY_KEYED[@]}" "${LIBRARY_FREE[@]}"
+for row in "${LIBRARY_KEYED[@]}"; do
+  IFS='|' read -r option value key <<<"$row"
+  rerun library LBASE "$option" "$value"
+  refused "library $option" "$key"
+done
+unset "LBASE[--quiet]"
+for row in "${LIBRARY_FREE[@]}"; do
+  IFS='|' read -r option value _ <<<"$row"
+  [[ $value != - ]] || continue
+  rerun library LBASE "$option" "$value"
+  resumed "library $option" "^library: 0 points solved, 0 failed"
+done
+# The files named inside the configs, changed in place under the same paths.
+sed -i 's/torque_squared: 1.0/torque_squared: 2.0/' base.yaml
+rerun library LBASE
+refused "library: the OCP file's cost weight changed in place" ocp_config_fnv1a
+[[ $(md5sum <l/index.csv) == "$rows" ]] || { echo "FAIL library: the rows changed" && FAILED=1; }
+
+[[ $FAILED -eq 0 ]] || exit 1
+echo "every option of stability and library is keyed or documented"
