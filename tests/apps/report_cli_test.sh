@@ -2,7 +2,7 @@
 # End-to-end checks of `gaitopt report`: the page of a gait and of a walk (self-contained: no
 # http(s) reference, every chart inlined), walk.gif, a non-result folder exits 2; the walk page
 # in headless Chromium (report_browser_check.py: renders, no console error, the robot moves);
-# user text that stays script data.
+# user text that stays script data; a stability sweep whose reference is another robot's gait.
 # Usage: report_cli_test.sh <path to gaitopt binary> <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
@@ -104,4 +104,19 @@ t, _ = state_at((folder / "report.html").resolve().as_uri() + "#t=0.1", pathlib.
 assert abs(t - 0.1) < 1e-3, t
 PY
 
+# (f) a stability sweep whose reference folder now holds a gait of another robot (remade since):
+# exit 2 naming both robots, as simulate refuses such a pair, rather than animate that robot.
+mkdir -p "$TMP/sweep"
+printf '{"robot": "rabbit", "reference": "%s", "sweeps": {}}\n' "$TMP/poly" \
+  >"$TMP/sweep/summary.json"
+run report "$TMP/sweep"
+[[ $RC -eq 2 ]] || fail "(f) exit $RC for a sweep of another robot than its reference gait's"
+want="the sweep walked robot 'rabbit', but its reference $TMP/poly is a gait of robot "
+grep -qF "$want'mu2004_five_link'" "$TMP/err" || fail "(f) message: $(cat "$TMP/err")"
+[[ $(wc -l <"$TMP/err") -eq 1 ]] || fail "(f) not one line: $(cat "$TMP/err")"
+[[ -e "$TMP/sweep/report.html" ]] && fail "(f) a page was written"
+# The same with --robot naming the reference's robot: the sweep's is still another.
+run report --robot configs/robots/mu2004_five_link.yaml "$TMP/sweep"
+[[ $RC -eq 2 ]] || fail "(f) exit $RC with --robot of the reference's robot"
+grep -q "the sweep walked robot 'rabbit'" "$TMP/err" || fail "(f) message: $(cat "$TMP/err")"
 echo "report_cli_test: all checks passed"
