@@ -35,7 +35,8 @@ void registerReportCommand(CLI::App& app) {
   cmd->add_flag("!--no-gif", options->gif, "Do not draw walk.gif for a walk folder");
   cmd->footer(
       "The page opens from disk with no network access; URL hash #t=SECONDS shows that time.\n"
-      "Exit codes: 0 ok, 2 DIR is not a result folder or a file in it is malformed, 1 I/O.");
+      "Exit codes: 0 ok, 2 DIR is not a result folder, a file in it is malformed or its gait\n"
+      "is of another robot than the one used, 1 I/O.");
   cmd->callback([options] { runSubcommand([&] { runReport(*options); }); });
 }
 

@@ -17,7 +17,8 @@ struct ReportOptions {
   bool gif = true;
 };
 
-/// @throws config::ConfigError when DIR is not a result folder or its files are malformed.
+/// @throws config::ConfigError when DIR is not a result folder, its files are malformed or its
+/// gait is of another robot than the one used (report/report_folder.hpp).
 void runReport(const ReportOptions& options);
 void registerReportCommand(CLI::App& app);
 

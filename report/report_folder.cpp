@@ -49,14 +49,13 @@ std::vector<std::string> linkNames(const dynamics::Model& model) {
 }
 
 /// One step of a gait folder, B at the origin.
-void animateGait(ReportContent& c, const std::string& gait_dir, const std::string& robot_path) {
-  const sim::ReferenceFolder ref = sim::loadReferenceFolder(gait_dir, robot_path);
-  c.frames = framesJson(gaitFrames(ref.model, ref.step, kGaitFrameRate));
-  c.link_names = linkNames(ref.model);
+void animateGait(ReportContent& c, const sim::ReferenceFolder& gait) {
+  c.frames = framesJson(gaitFrames(gait.model, gait.step, kGaitFrameRate));
+  c.link_names = linkNames(gait.model);
   c.animation_note = fmt::format(
       "One step of {}/trajectory.csv ({}), drawn in the frame of the stance tip; it loops. "
       "Each step the legs swap (relabelling, Mu sec. 2.4).",
-      gait_dir, ref.model.name());
+      gait.dir, gait.model.name());
 }
 
 /// The walk as simulated, every step in the world frame (stick.csv).
@@ -83,17 +82,32 @@ void animateLibraryPoint(ReportContent& c, const std::string& dir, const std::st
     c.animation_note = "No point of the library kept its trajectory.csv (points/ is empty).";
     return;
   }
-  animateGait(c, folders.front(), robot_path);
+  animateGait(c, sim::loadReferenceFolder(folders.front(), robot_path));
+}
+
+/// @throws config::ConfigError unless `gait` is of the robot the sweep of `dir` walked. The
+/// reference folder may have been remade for another robot since the sweep; its step would then
+/// be drawn, as the sweep's, with that robot's lengths (simulate refuses such a pair the same way).
+void requireSweptRobot(const std::string& dir, const nlohmann::ordered_json& summary,
+                       const sim::ReferenceFolder& gait) {
+  const auto robot = summary.find("robot");
+  if (robot == summary.end() || !robot->is_string() || *robot == gait.model.name()) return;
+  throw config::ConfigError(
+      dir + "/summary.json", "robot", 0,
+      fmt::format("the sweep walked robot '{}', but its reference {} is a gait of robot '{}'",
+                  robot->get<std::string>(), gait.dir, gait.model.name()));
 }
 
 /// A stability sweep shows the reference gait it walked, when that folder is still there.
-void animateReference(ReportContent& c, const std::string& robot_path) {
+void animateReference(ReportContent& c, const std::string& dir, const std::string& robot_path) {
   const std::string ref = c.summary.value("reference", "");
   if (ref.empty() || !has(ref, "trajectory.csv")) {
     c.animation_note = fmt::format("The reference gait '{}' is not here to animate.", ref);
     return;
   }
-  animateGait(c, ref, robot_path);
+  const sim::ReferenceFolder gait = sim::loadReferenceFolder(ref, robot_path);
+  requireSweptRobot(dir, c.summary, gait);
+  animateGait(c, gait);
 }
 
 }  // namespace
@@ -122,11 +136,11 @@ ReportContent collectReport(const std::string& dir, const std::string& robot_pat
     animateWalk(c, dir);
   } else if (has(dir, "trajectory.csv")) {
     c.kind = "gait";
-    animateGait(c, dir, robot_path);
+    animateGait(c, sim::loadReferenceFolder(dir, robot_path));
   } else if (c.summary.contains("sweeps")) {
     c.kind = "stability";
     c.tables = filesOf(dir, "sweep_", ".csv");
-    animateReference(c, robot_path);
+    animateReference(c, dir, robot_path);
   } else {
     throw config::ConfigError(dir, "", 0,
                               "not a gait, walk, library or stability folder: no trajectory.csv, "

@@ -12,7 +12,8 @@ namespace gaitopt::report {
 
 /// The page's content for result folder `dir`; `robot_path` is the robot of a gait ("" =
 /// configs/robots/<summary's robot>.yaml).
-/// @throws config::ConfigError when `dir` is not a result folder or a file in it is malformed.
+/// @throws config::ConfigError when `dir` is not a result folder, a file in it is malformed or
+/// its gait is not of the robot used (a gait's summary.json, a stability sweep's robot).
 ReportContent collectReport(const std::string& dir, const std::string& robot_path);
 
 }  // namespace gaitopt::report

@@ -23,11 +23,30 @@ std::string readFile(const std::string& path) {
   return bytes.str();
 }
 
-/// JSON inside <script>: "</" would end the script element early (HTML 4.3.1.2).
-std::string scriptSafe(std::string json) {
-  for (std::size_t at = json.find("</"); at != std::string::npos; at = json.find("</", at + 3))
-    json.replace(at, 2, "<\\/");
-  return json;
+/// `data` as a JavaScript literal inside <script>: every `<`, `>` and `&` (found in JSON only
+/// within strings) written as a \u escape, so no text of the result folder can end the script
+/// early ("</script") or switch the HTML parser into its escaped states ("<!--", "<script"), which
+/// would swallow the rest of the page. JSON.parse and JavaScript read the same strings back.
+std::string scriptJson(const nlohmann::ordered_json& data) {
+  const std::string json = data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  std::string out;
+  out.reserve(json.size());
+  for (const char ch : json) {
+    switch (ch) {
+      case '<':
+        out += "\\u003c";
+        break;
+      case '>':
+        out += "\\u003e";
+        break;
+      case '&':
+        out += "\\u0026";
+        break;
+      default:
+        out += ch;
+    }
+  }
+  return out;
 }
 
 std::string fileName(const std::string& path) {
@@ -68,8 +87,7 @@ std::string renderReportPage(const ReportContent& c) {
   std::string page = kReportTemplate;
   const std::size_t at = page.find(kDataMarker);
   if (at == std::string::npos) throw std::logic_error("report template without its data marker");
-  page.replace(at, kDataMarker.size(),
-               scriptSafe(data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)));
+  page.replace(at, kDataMarker.size(), scriptJson(data));
   return page;
 }
 

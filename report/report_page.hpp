@@ -2,7 +2,8 @@
 /// @file report_page.hpp
 /// The one self-contained HTML page of `gaitopt report`: the page template
 /// (report/report_template.html, compiled into the tool) with the result's data, frames and
-/// pictures inlined, so it opens from disk with no network access.
+/// pictures inlined, so it opens from disk with no network access. The content's text is user
+/// text (folder, robot and file names, CSV cells) and enters the page only as escaped JSON data.
 #include <string>
 #include <vector>
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # End-to-end checks of `gaitopt report`: the page of a gait and of a walk (self-contained: no
 # http(s) reference, every chart inlined), walk.gif, a non-result folder exits 2; the walk page
-# in headless Chromium (report_browser_check.py: renders, no console error, the robot moves).
+# in headless Chromium (report_browser_check.py: renders, no console error, the robot moves);
+# user text that stays script data; a stability sweep whose reference is another robot's gait.
 # Usage: report_cli_test.sh <path to gaitopt binary> <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
@@ -64,4 +65,58 @@ grep -q "$TMP/empty" "$TMP/err" || fail "(c) message does not name the folder: $
 command -v chromium >/dev/null || fail "(d) chromium missing (scripts/install-deps.sh installs it)"
 "$PY" "$(dirname "$0")/report_browser_check.py" "$TMP/walk/report.html" "$TMP" 0.1 0.5 ||
   fail "(d) browser check"
+
+# (e) user text that would end the script or open the HTML parser's escaped states ("<!--",
+# "<script") stays data: a folder and a robot (and a link) so named; the page still renders.
+HOSTILE_DIR="$TMP/g<!--<script>&amp;"
+HOSTILE_ROBOT='r<!--<script></script>&amp;'
+cp -r "$TMP/poly" "$HOSTILE_DIR"
+"$PY" - "$HOSTILE_DIR/summary.json" "$HOSTILE_ROBOT" "$TMP/hostile.yaml" <<'PY' || fail "(e) inputs"
+import json, re, sys
+summary_path, robot, robot_file = sys.argv[1:]
+summary = json.load(open(summary_path))
+summary["robot"] = robot
+json.dump(summary, open(summary_path, "w"))
+yaml = open("configs/robots/mu2004_five_link.yaml").read()
+yaml = re.sub(r"(?m)^name: .*$", lambda _: f'name: "{robot}"', yaml)
+open(robot_file, "w").write(yaml.replace("name: torso", 'name: "torso<!--<script>"'))
+PY
+run report --robot "$TMP/hostile.yaml" "$HOSTILE_DIR"
+[[ $RC -eq 0 ]] || fail "(e) report exited $RC: $(cat "$TMP/err")"
+"$PY" - "$HOSTILE_DIR" "$HOSTILE_ROBOT" "$(dirname "$0")" "$TMP" <<'PY' || fail "(e) script data"
+import json, pathlib, re, sys
+folder, robot = pathlib.Path(sys.argv[1]), sys.argv[2]
+page = (folder / "report.html").read_text()
+# The template's one script element, whole: the data opened and closed no other.
+assert len(re.findall(r"<script", page, re.I)) == 1, "a <script tag came from the data"
+assert len(re.findall(r"</script", page, re.I)) == 1, "a </script tag came from the data"
+script = re.search(r"<script>(.*?)</script>", page, re.S).group(1)
+literal = re.search(r"const DATA = (.*?);\n", script).group(1)
+assert not re.search(r"[<>&]", literal), "raw <, > or & of the data in the script"
+data = json.loads(literal)
+assert data["title"] == folder.name, data["title"]
+assert f"({robot})" in data["animation_note"], data["animation_note"]
+assert "torso<!--<script>" in data["link_names"], data["link_names"]
+# A browser shows the page (it would stay blank, titled "loading", in a double-escaped script).
+sys.path.insert(0, sys.argv[3])
+from report_browser_check import state_at
+t, _ = state_at((folder / "report.html").resolve().as_uri() + "#t=0.1", pathlib.Path(sys.argv[4]))
+assert abs(t - 0.1) < 1e-3, t
+PY
+
+# (f) a stability sweep whose reference folder now holds a gait of another robot (remade since):
+# exit 2 naming both robots, as simulate refuses such a pair, rather than animate that robot.
+mkdir -p "$TMP/sweep"
+printf '{"robot": "rabbit", "reference": "%s", "sweeps": {}}\n' "$TMP/poly" \
+  >"$TMP/sweep/summary.json"
+run report "$TMP/sweep"
+[[ $RC -eq 2 ]] || fail "(f) exit $RC for a sweep of another robot than its reference gait's"
+want="the sweep walked robot 'rabbit', but its reference $TMP/poly is a gait of robot "
+grep -qF "$want'mu2004_five_link'" "$TMP/err" || fail "(f) message: $(cat "$TMP/err")"
+[[ $(wc -l <"$TMP/err") -eq 1 ]] || fail "(f) not one line: $(cat "$TMP/err")"
+[[ -e "$TMP/sweep/report.html" ]] && fail "(f) a page was written"
+# The same with --robot naming the reference's robot: the sweep's is still another.
+run report --robot configs/robots/mu2004_five_link.yaml "$TMP/sweep"
+[[ $RC -eq 2 ]] || fail "(f) exit $RC with --robot of the reference's robot"
+grep -q "the sweep walked robot 'rabbit'" "$TMP/err" || fail "(f) message: $(cat "$TMP/err")"
 echo "report_cli_test: all checks passed"

@@ -1,6 +1,11 @@
-// The report page (report/report_page.hpp, report_frames.hpp): RFC 4648 base64, data inlined
-// so no "</" ends the script early, and a walk's stick.csv read into frames.
+// The report page (report/report_page.hpp, report_frames.hpp): RFC 4648 base64, user text
+// inlined as data that neither ends the script nor opens markup, and a walk's stick.csv read
+// into frames.
+#include <algorithm>
+#include <cctype>
+
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "config/config_error.hpp"
 #include "io/io_test_dir.hpp"
@@ -22,13 +27,61 @@ TEST(Base64, MatchesTheTestVectorsOfRfc4648) {
   EXPECT_EQ(base64(std::string("\xff\x00\x10", 3)), "/wAQ");
 }
 
-TEST(ReportPage, InlinedDataCannotCloseTheScript) {
+// User text that would end the script ("</script>") or send the HTML parser into its escaped
+// states ("<!--", "<script"), which swallow the rest of the page, and an entity.
+const std::string kHostile = "a<!--<script>b</script>c<SCRIPT>&amp;d";
+
+std::string lowercase(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  return text;
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+/// The data literal the page's script starts with ("const DATA = ...;").
+std::string dataLiteral(const std::string& page) {
+  const std::string start = "const DATA = ";
+  const std::size_t from = page.find(start) + start.size();
+  return page.substr(from, page.find(";\n", from) - from);
+}
+
+using ReportPage = io::test::IoTest;
+
+TEST_F(ReportPage, UserTextStaysDataInsideTheScript) {
+  put(path("sweep.csv"), "name,value\n" + kHostile + ",1\n");
+  const std::string chart = "a<!--<script>&amp;.png";  // a file name holds no "/"
+  put(path(chart), "png bytes");
   ReportContent c;
-  c.title = "</script><b>x";
-  const std::string page = renderReportPage(c);
-  EXPECT_EQ(page.find("</script><b>"), std::string::npos);
-  EXPECT_NE(page.find("<\\/script><b>x"), std::string::npos);
-  EXPECT_EQ(page.find("/*GAITOPT_REPORT_DATA*/null"), std::string::npos);
+  c.title = c.kind = c.animation_note = kHostile;
+  c.summary = {{kHostile, kHostile}};
+  c.link_names = {kHostile};
+  c.tables = {path("sweep.csv")};
+  c.charts = {path(chart)};
+  const std::string page = lowercase(renderReportPage(c));
+  const std::string plain = lowercase(renderReportPage({}));
+  // The template's tags and comments only: the data opened and closed none.
+  EXPECT_EQ(count(page, "<script"), count(plain, "<script"));
+  EXPECT_EQ(count(page, "</script"), count(plain, "</script"));
+  EXPECT_EQ(count(page, "<!--"), count(plain, "<!--"));
+  // The script block holding the data runs past all of it to the template's "</script".
+  const std::string data = dataLiteral(renderReportPage(c));
+  EXPECT_EQ(data.find_first_of("<>&"), std::string::npos) << data;
+  const std::size_t block = page.rfind("<script", page.find("const data = "));
+  EXPECT_GT(page.find("</script", block), page.find(lowercase(data)));
+
+  const auto json = nlohmann::json::parse(data);
+  EXPECT_EQ(json["title"], kHostile);
+  EXPECT_EQ(json["kind"], kHostile);
+  EXPECT_EQ(json["animation_note"], kHostile);
+  EXPECT_EQ(json["summary"][kHostile], kHostile);
+  EXPECT_EQ(json["link_names"][0], kHostile);
+  EXPECT_EQ(json["tables"][0]["csv"], "name,value\n" + kHostile + ",1\n");
+  EXPECT_EQ(json["charts"][0]["name"], chart);
 }
 
 using StickCsv = io::test::IoTest;
