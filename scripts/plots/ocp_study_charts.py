@@ -348,7 +348,7 @@ def main(folder):
     for name, study in found:
         table = study(folder, os.path.join(folder, f"{name}.csv"))
         out = os.path.join(folder, f"{name}.md")
-        with open(out, "w", encoding="utf-8") as f:
+        with style.replacing(out) as tmp, open(tmp, "w", encoding="utf-8") as f:
             f.write(table)
         print(out)
 

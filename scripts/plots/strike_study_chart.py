@@ -113,7 +113,7 @@ def interval(r, column):
 
 
 def write_csv(rows, path):
-    with open(path, "w", newline="", encoding="utf-8") as f:
+    with style.replacing(path) as tmp, open(tmp, "w", newline="", encoding="utf-8") as f:
         w = csv.DictWriter(f, FIELDS)
         w.writeheader()
         for r in rows:
@@ -142,7 +142,7 @@ def write_markdown(rows, path):
             x = swept.get(c)
             cells += [interval(x, "push"), interval(x, "mass")] if x else ["", ""]
         lines.append("| " + " | ".join(cells) + " |")
-    with open(path, "w", encoding="utf-8") as f:
+    with style.replacing(path) as tmp, open(tmp, "w", encoding="utf-8") as f:
         f.write("\n".join(lines) + "\n")
 
 

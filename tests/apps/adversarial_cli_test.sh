@@ -119,6 +119,33 @@ case_sweep_files_are_links() {
   done
 }
 
+# Every file of a library folder, each in turn a link to a user's file.
+case_library_files_are_links() {
+  ocp8 base.yaml "$ROBOT" "$GAIT"
+  printf 'name: l\nocp: base.yaml\ngrid:\n  speed: [0.7]\n' >lib.yaml
+  local f
+  for f in library.json index.csv index.json; do
+    rm -rf l && run library --config lib.yaml --out l --quiet && code 0 || return 1
+    rm l/"$f" && victim "notes_$f" && ln -s "$PWD/notes_$f" l/"$f"
+    run library --config lib.yaml --out l --quiet
+    intact "notes_$f" || return 1
+    [[ $RC -ne 0 ]] || [[ ! -L l/$f ]] || bad "$f: exit 0 and the link still in place"
+  done
+}
+# The sources: every open(2) that creates a file refuses links (O_NOFOLLOW), no stream writes a
+# file, and every plot script writes through plot_style.replacing (mkstemp + rename).
+case_every_writer_in_the_sources() {
+  local src=(apps io gaits ocp sim library report parallel dynamics config python)
+  local found
+  found=$(cd "$ROOT" && grep -rn --include='*.cpp' --include='*.hpp' -E '::open\(' "${src[@]}" |
+    grep 'O_CREAT' | grep -v O_NOFOLLOW)
+  [[ -z $found ]] || bad "open(2) creating a file without O_NOFOLLOW: $found"
+  found=$(cd "$ROOT" && grep -rn --include='*.cpp' --include='*.hpp' -E 'std::ofstream|fopen\(' "${src[@]}")
+  [[ -z $found ]] || bad "a stream writer outside io/checked_write: $found"
+  found=$(cd "$ROOT" && grep -rn -E "open\([^)]*['\"][wa]" scripts/plots/*.py | grep -v 'replacing(')
+  [[ -z $found ]] || bad "a plot script writes a file in place: $found"
+}
+
 # --- Kill and resume, two runs at once -----------------------------------------------------------
 # A sweep killed (SIGKILL) while it writes rows, then resumed: every point once, no torn row.
 case_kill_and_resume() {
@@ -186,6 +213,8 @@ CASES=(
   "links: OUT.tmp-PID / OUT.old-PID of a dead pid that gaitopt did not make|staging_names_not_ours"
   "links: OUT.tmp-PID that gaitopt made, of a dead pid, is removed|staging_of_a_killed_run"
   "links: every file of a stability folder a link|sweep_files_are_links"
+  "links: every file of a library folder a link|library_files_are_links"
+  "links: every writer in the sources refuses links|every_writer_in_the_sources"
   "kill: a sweep killed while writing, then resumed|kill_and_resume"
   "concurrency: two runs on one folder|two_runs_at_once"
   "writers: library on a nearly full disk|library_on_a_nearly_full_disk"
