@@ -157,5 +157,17 @@ rerun library LBASE
 refused "library: the OCP file's cost weight changed in place" ocp_config_fnv1a
 [[ $(md5sum <l/index.csv) == "$rows" ]] || { echo "FAIL library: the rows changed" && FAILED=1; }
 
+# --- impact-map: not resumable ------------------------------------------------------------------
+# Its folder is written whole by every run: a second run on other values leaves none of the
+# first run's rows.
+im() { run impact-map --robot "$ROBOT" --step-lengths "$1" --knee-bias 5:10:2 --no-plots --quiet --out im; }
+im 0.2:0.3:2 && im 0.4:0.5:2
+if [[ $RC -eq 0 ]] && ! cut -d, -f1 im/impact_map.csv | grep -qx "0.2\|0.3"; then
+  echo "ok impact-map writes its folder whole"
+else
+  echo "FAIL impact-map: $RC, rows of the first run left: $(cut -d, -f1 im/impact_map.csv | sort -u | head)"
+  FAILED=1
+fi
+
 [[ $FAILED -eq 0 ]] || exit 1
 echo "every option of stability and library is keyed or documented"
