@@ -32,6 +32,11 @@ set_target_properties(gaitopt_cli PROPERTIES
   INSTALL_RPATH "$ORIGIN/../${CMAKE_INSTALL_LIBDIR}/gaitopt")
 install(TARGETS gaitopt_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(EXPORT gaitoptTargets NAMESPACE gaitopt:: DESTINATION ${GAITOPT_INSTALL_CMAKEDIR})
+# The files the tool reads at run time (io/data_dir.hpp): the shipped configs and the plot
+# scripts, so an installed tree works with the source tree gone.
+install(DIRECTORY configs/ DESTINATION ${CMAKE_INSTALL_DATADIR}/gaitopt/configs)
+install(DIRECTORY scripts/plots/ DESTINATION ${CMAKE_INSTALL_DATADIR}/gaitopt/scripts/plots
+        FILES_MATCHING PATTERN "*.py")
 
 configure_package_config_file(cmake/gaitoptConfig.cmake.in
   ${CMAKE_CURRENT_BINARY_DIR}/gaitoptConfig.cmake

@@ -7,15 +7,17 @@
 
 #include <fmt/format.h>
 
+#include "io/data_dir.hpp"
 #include "io/spawn.hpp"
 
 namespace gaitopt::report {
 namespace {
 
-/// Scripts live in the source tree; GAITOPT_SCRIPTS overrides (an installed copy).
+/// The shipped scripts (io/data_dir.hpp); GAITOPT_SCRIPTS overrides (the tests point it at a
+/// missing folder to skip the pictures).
 std::string scriptDir() {
   if (const char* env = std::getenv("GAITOPT_SCRIPTS")) return env;
-  return GAITOPT_SOURCE_DIR "/scripts/plots";
+  return io::dataFile("scripts/plots");
 }
 
 }  // namespace

@@ -10,13 +10,15 @@
 #include "dynamics/model_variation.hpp"
 #include "dynamics/robot_config.hpp"
 #include "gaits/trajectory_csv.hpp"
+#include "io/data_dir.hpp"
 #include "io/strict_json.hpp"
 #include "io/terminal_text.hpp"
 
 namespace gaitopt::sim {
 namespace {
 
-/// The robot file named by the folder's summary.json, by the configs/robots convention.
+/// The robot file named by the folder's summary.json, by the configs/robots convention: under the
+/// working directory (a user's own robots), else the shipped one (io/data_dir.hpp).
 std::string robotOfFolder(const std::string& dir) {
   const std::string summary = dir + "/summary.json";
   if (!std::filesystem::is_regular_file(summary))
@@ -26,11 +28,14 @@ std::string robotOfFolder(const std::string& dir) {
   if (!json.is_object() || !json.contains("robot") || !json["robot"].is_string())
     throw config::ConfigError(summary, "robot", 0, "expected the robot's name (or pass --robot)");
   const std::string path = "configs/robots/" + json["robot"].get<std::string>() + ".yaml";
-  if (!std::filesystem::exists(path))
-    throw config::ConfigError(
-        summary, "robot", 0,
-        fmt::format("no {} under the working directory; pass --robot FILE", path));
-  return path;
+  if (std::filesystem::exists(path)) return path;
+  if (const std::string shipped = io::dataFile(path); std::filesystem::exists(shipped))
+    return shipped;
+  throw config::ConfigError(
+      summary, "robot", 0,
+      fmt::format("no {} under the working directory nor among the shipped robots ({}); pass "
+                  "--robot FILE",
+                  path, io::dataDir()));
 }
 
 /// The ground slope the gait was designed for: summary.json's "slope_rad", 0 when the folder

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "config/config_error.hpp"
+#include "io/data_dir.hpp"
 #include "sim/ground_config.hpp"
 
 namespace gaitopt::sim {
@@ -14,7 +15,7 @@ bool isBuiltinGround(const std::string& ground) {
 }  // namespace
 
 std::string groundPath(const std::string& ground) {
-  if (isBuiltinGround(ground)) return std::string(GAITOPT_SOURCE_DIR "/") + groundRecord(ground);
+  if (isBuiltinGround(ground)) return io::dataFile(groundRecord(ground));
   return ground;
 }
 

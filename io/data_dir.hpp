@@ -1,0 +1,23 @@
+#pragma once
+/// @file data_dir.hpp
+/// Where gaitopt's shipped files are found at run time: the plot scripts (scripts/plots/) and the
+/// default configs (configs/: robots, grounds, ...). An installed tool reads them from
+/// PREFIX/share/gaitopt, so it keeps working when the source tree it was built from is gone; a
+/// tool run from its build tree reads the source tree, so an edit there is seen at once.
+#include <string>
+
+namespace gaitopt::io {
+
+/// The folder holding configs/ and scripts/plots/, the first of:
+/// 1. $GAITOPT_DATA_DIR, when set;
+/// 2. PREFIX/share/gaitopt, when the running program is PREFIX/bin/NAME and that folder exists
+///    (an installed tree, wherever it was moved);
+/// 3. the source tree the library was built from, when it still exists;
+/// 4. the install prefix's share/gaitopt chosen at configure time (a program of another project
+///    linking gaitopt's installed libraries).
+std::string dataDir();
+
+/// dataDir() / `relative` (e.g. "configs/grounds/rigid.yaml").
+std::string dataFile(const std::string& relative);
+
+}  // namespace gaitopt::io

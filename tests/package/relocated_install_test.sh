@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# An installed tree needs no source tree (io/data_dir.hpp): `cmake --install` of the build into a
+# temporary prefix, the prefix moved elsewhere, and the source tree (which holds the build tree)
+# hidden under an empty tmpfs in a private mount namespace, as if the checkout were deleted. The
+# moved tool then optimises a shipped config with its pictures, walks the result on the shipped
+# rigid ground with the robot its summary.json names, and makes the report page with the GIF.
+# Needs root for the mount namespace: exits 77 (ctest's skip) where it cannot make one.
+# Usage: relocated_install_test.sh <build dir> <repo root> <gaitopt binary>
+set -u
+[[ $# -eq 3 ]] || { echo "usage: $0 <build dir> <repo root> <gaitopt binary>" >&2; exit 1; }
+BUILD=$1
+ROOT=$2
+# shellcheck source=tests/apps/cli_test_lib.sh
+source "$ROOT/tests/apps/cli_test_lib.sh" gaitopt "$3" "$ROOT"
+if ! unshare --mount --propagation private true 2>/dev/null; then
+  echo "SKIP: cannot make a mount namespace here (not root?)"
+  exit 77
+fi
+cmake --install "$BUILD" --prefix "$TMP/prefix" >"$TMP/install.log" 2>&1 ||
+  fail "cmake --install: $(tail -5 "$TMP/install.log")"
+mv "$TMP/prefix" "$TMP/moved"
+for f in share/gaitopt/configs/ocp/rabbit_kelly2017.yaml share/gaitopt/configs/grounds/rigid.yaml \
+         share/gaitopt/scripts/plots/gait_plots.py; do
+  [[ -f "$TMP/moved/$f" ]] || fail "not installed: $f"
+done
+mkdir "$TMP/work"
+# The checks run inside the namespace, where $ROOT is an empty folder.
+unshare --mount --propagation private bash -s "$ROOT" "$TMP" <<'SH' || fail "see above"
+set -u
+ROOT=$1 TMP=$2
+G="$TMP/moved/bin/gaitopt"
+mount -t tmpfs -o size=1m tmpfs "$ROOT" || { echo "FAIL: cannot hide $ROOT"; exit 1; }
+[[ -z $(ls -A "$ROOT") ]] || { echo "FAIL: $ROOT is not hidden"; exit 1; }
+cd "$TMP/work" || exit 1
+check() { # check NAME COMMAND...: runs it, fails with its output unless it exits 0
+  local name=$1
+  shift
+  "$@" >out.log 2>err.log || { echo "FAIL: $name exited $?: $(tail -5 err.log)"; exit 1; }
+  ! grep -q "warning" err.log || { echo "FAIL: $name warned: $(cat err.log)"; exit 1; }
+}
+check optimize "$G" optimize --config "$TMP/moved/share/gaitopt/configs/ocp/rabbit_kelly2017.yaml" \
+  --out opt --rate 200 --quiet
+[[ -f opt/trajectory.csv && -f opt/overview.png ]] || { echo "FAIL: optimize: no pictures"; exit 1; }
+check simulate "$G" simulate --reference opt --controller hzd --steps 3 --no-poincare --rate 100 \
+  --out walk --quiet
+grep -q '"steps_completed": 3' walk/summary.json || { echo "FAIL: simulate: $(cat out.log)"; exit 1; }
+ls walk/*.png >/dev/null 2>&1 || { echo "FAIL: simulate: no pictures"; exit 1; }
+check report "$G" report walk
+[[ -s walk/report.html && -s walk/walk.gif ]] || { echo "FAIL: report: no page or GIF"; exit 1; }
+echo "ok: optimize, simulate and report with pictures from $TMP/moved, the checkout hidden"
+SH
+echo "relocated_install_test: all checks passed"
