@@ -32,6 +32,13 @@ set_target_properties(gaitopt_cli PROPERTIES
   INSTALL_RPATH "$ORIGIN/../${CMAKE_INSTALL_LIBDIR}/gaitopt")
 install(TARGETS gaitopt_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(EXPORT gaitoptTargets NAMESPACE gaitopt:: DESTINATION ${GAITOPT_INSTALL_CMAKEDIR})
+# The Python module, for PYTHONPATH=PREFIX/lib/python3/dist-packages; it finds the KKT solver
+# beside the libraries as the tool does.
+if(TARGET gaitopt_python)
+  set_target_properties(gaitopt_python PROPERTIES
+    INSTALL_RPATH "$ORIGIN/../../gaitopt")
+  install(TARGETS gaitopt_python LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/python3/dist-packages)
+endif()
 # The files the tool reads at run time (io/data_dir.hpp): the shipped configs and the plot
 # scripts, so an installed tree works with the source tree gone.
 install(DIRECTORY configs/ DESTINATION ${CMAKE_INSTALL_DATADIR}/gaitopt/configs)

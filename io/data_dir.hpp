@@ -10,8 +10,9 @@ namespace gaitopt::io {
 
 /// The folder holding configs/ and scripts/plots/, the first of:
 /// 1. $GAITOPT_DATA_DIR, when set;
-/// 2. PREFIX/share/gaitopt, when the running program is PREFIX/bin/NAME and that folder exists
-///    (an installed tree, wherever it was moved);
+/// 2. PREFIX/share/gaitopt, when the running program is PREFIX/bin/NAME or the running code is the
+///    Python module PREFIX/lib/python3/dist-packages/gaitopt.so, and that folder exists (an
+///    installed tree, wherever it was moved);
 /// 3. the source tree the library was built from, when it still exists;
 /// 4. the install prefix's share/gaitopt chosen at configure time (a program of another project
 ///    linking gaitopt's installed libraries).

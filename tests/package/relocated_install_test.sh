@@ -3,7 +3,8 @@
 # temporary prefix, the prefix moved elsewhere, and the source tree (which holds the build tree)
 # hidden under an empty tmpfs in a private mount namespace, as if the checkout were deleted. The
 # moved tool then optimises a shipped config with its pictures, walks the result on the shipped
-# rigid ground with the robot its summary.json names, and makes the report page with the GIF.
+# rigid ground with the robot its summary.json names, and makes the report page with the GIF; the
+# installed Python module imports from the moved prefix and solves RABBIT.
 # Needs root for the mount namespace: exits 77 (ctest's skip) where it cannot make one.
 # Usage: relocated_install_test.sh <build dir> <repo root> <gaitopt binary>
 set -u
@@ -48,5 +49,18 @@ ls walk/*.png >/dev/null 2>&1 || { echo "FAIL: simulate: no pictures"; exit 1; }
 check report "$G" report walk
 [[ -s walk/report.html && -s walk/walk.gif ]] || { echo "FAIL: report: no page or GIF"; exit 1; }
 echo "ok: optimize, simulate and report with pictures from $TMP/moved, the checkout hidden"
+module=$(ls "$TMP"/moved/lib*/python3/dist-packages/gaitopt*.so 2>/dev/null | head -n 1)
+if [[ -z $module ]]; then
+  echo "the Python module was not built (GAITOPT_PYTHON=OFF): import not checked"
+  exit 0
+fi
+PYTHONPATH=$(dirname "$module") /usr/bin/python3 - "$TMP/moved" <<'PY' || { echo "FAIL: python"; exit 1; }
+import sys
+import gaitopt
+assert gaitopt.__file__.startswith(sys.argv[1]), gaitopt.__file__
+r = gaitopt.optimize(sys.argv[1] + "/share/gaitopt/configs/ocp/rabbit_kelly2017.yaml", rate_hz=200)
+assert abs(r["cost"] - 390.79) < 0.01, r["cost"]  # RABBIT's optimum (Kelly 2017 setting)
+print(f"ok: import gaitopt from the moved prefix, RABBIT's optimum {r['cost']:.2f}")
+PY
 SH
 echo "relocated_install_test: all checks passed"
