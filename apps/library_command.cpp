@@ -96,7 +96,7 @@ void runLibrary(const LibraryOptions& o) {
   const library::LibrarySetup setup{std::move(config),
                                     std::move(grid),
                                     io::normaliseOutPath(o.out_dir, "--out"),
-                                    {o.config_path, o.rate_hz, report::gaitPictures(o.plots)}};
+                                    {o.config_path, o.rate_hz, report::gaitPictures(o.plots), {}}};
   const bool under_mpi = parallel::launchedByMpi();
   // No more worker processes than points.
   const int jobs =

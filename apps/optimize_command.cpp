@@ -37,7 +37,13 @@ gaits::Trajectory initialGuess(const dynamics::Model& model, const ocp::OcpConfi
 }
 
 ocp::GaitResultOptions resultOptions(const OptimizeOptions& o) {
-  return {o.config_path, o.output.rate_hz, report::gaitPictures(o.output.plots)};
+  return {o.config_path, o.output.rate_hz, report::gaitPictures(o.output.plots), o.sets};
+}
+
+std::vector<config::Override> overridesOf(const OptimizeOptions& o) {
+  std::vector<config::Override> overrides;
+  for (const std::string& text : o.sets) overrides.push_back(config::parseOverride(text));
+  return overrides;
 }
 
 /// A failed solve goes to OUT.failed and never touches a previous good result in OUT.
@@ -54,7 +60,7 @@ ocp::GaitResultOptions resultOptions(const OptimizeOptions& o) {
 }  // namespace
 
 void runOptimize(const OptimizeOptions& o) {
-  ocp::OcpConfig config = ocp::loadOcpConfig(o.config_path);
+  ocp::OcpConfig config = ocp::loadOcpConfig(o.config_path, overridesOf(o));
   std::vector<std::string> inputs = ocp::ocpInputs(config);
   inputs.insert(inputs.end(), {o.config_path, o.warm_start});
   const io::OutputFolder out(o.output.out_dir, inputs);
@@ -97,6 +103,11 @@ void registerOptimizeCommand(CLI::App& app) {
   cmd->add_option("--warm-start", options->warm_start,
                   "Start from the trajectory.csv of a previous result folder (same robot)")
       ->option_text("DIR");
+  cmd->add_option("--set", options->sets,
+                  "Replace one value of the config, e.g. --set phases[0].segments=24 or --set "
+                  "constraints.friction_margin=0.2 (repeatable; checked as the file is, recorded "
+                  "in summary.json)")
+      ->option_text("KEY=VALUE");
   cmd->add_flag("--quiet", options->quiet, "No per-iteration progress");
   cmd->footer(
       "Exit codes: 0 ok, 2 bad input, 3 infeasible (Ipopt's local infeasibility, or a leg "

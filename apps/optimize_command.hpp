@@ -15,6 +15,7 @@ struct OptimizeOptions {
   std::string config_path;
   OutputOptions output;
   std::string warm_start;  ///< result folder whose trajectory.csv seeds the solve ("" = none)
+  std::vector<std::string> sets;  ///< --set KEY=VALUE, config values replaced
   bool quiet = false;
 };
 

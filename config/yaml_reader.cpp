@@ -38,7 +38,7 @@ NumberCheck angleInRange(double lo, double hi) {
   };
 }
 
-YamlReader YamlReader::fromFile(const std::string& path) {
+YamlReader YamlReader::fromFile(const std::string& path, const std::vector<Override>& overrides) {
   if (!std::filesystem::is_regular_file(path))
     throw ConfigError(path, "", 0, "file not found or not a regular file");
   YAML::Node root;
@@ -48,7 +48,11 @@ YamlReader YamlReader::fromFile(const std::string& path) {
     throw ConfigError(path, "", e.mark.line + 1, "not valid YAML: " + e.msg);
   }
   if (!root.IsMap()) throw ConfigError(path, "", 0, "expected a YAML mapping at the top level");
-  return YamlReader(path, root, "");
+  if (overrides.empty()) return YamlReader(path, root, "");
+  applyOverrides(root, overrides);
+  std::vector<std::string> texts;
+  for (const Override& o : overrides) texts.push_back("--set " + o.text());
+  return YamlReader(fmt::format("{} ({})", path, fmt::join(texts, ", ")), root, "");
 }
 
 YamlReader::YamlReader(std::string file, YAML::Node node, std::string path)

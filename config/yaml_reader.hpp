@@ -11,6 +11,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "config/config_error.hpp"
+#include "config/overrides.hpp"
 
 namespace gaitopt::config {
 
@@ -27,8 +28,10 @@ NumberCheck angleInRange(double lo, double hi);
 
 class YamlReader {
  public:
-  /// Parses a file. @throws ConfigError when it is missing or not valid YAML mapping.
-  static YamlReader fromFile(const std::string& path);
+  /// Parses a file, with `overrides` (--set) put in place of the file's values; every error
+  /// about the document then names the file and the overrides. @throws ConfigError when it is
+  /// missing or not valid YAML mapping, or an override does not fit it.
+  static YamlReader fromFile(const std::string& path, const std::vector<Override>& overrides = {});
   /// Wraps a parsed node; `path` is the key path of the node ("" for the document root).
   /// @throws ConfigError when the node is a mapping with a key given twice (both lines named).
   YamlReader(std::string file, YAML::Node node, std::string path);

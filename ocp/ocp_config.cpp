@@ -183,8 +183,8 @@ std::string CostWeights::primary() const {
   return abs_work > 0 ? "abs_work" : "torque_squared";
 }
 
-OcpConfig loadOcpConfig(const std::string& path) {
-  const YamlReader root = YamlReader::fromFile(path);
+OcpConfig loadOcpConfig(const std::string& path, const std::vector<config::Override>& overrides) {
+  const YamlReader root = YamlReader::fromFile(path, overrides);
   root.allowOnly({"name", "description", "robot", "initial_guess", "step_length", "phases",
                   "step_duration", "scheme", "impact", "cost", "mesh_refinement", "constraints",
                   "solver", "slope", "touchdown"});

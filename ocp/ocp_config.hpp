@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "config/overrides.hpp"
 #include "dynamics/model.hpp"
 #include "ocp/clearance_profile.hpp"
 #include "ocp/collocation.hpp"
@@ -111,8 +112,11 @@ struct OcpConfig {
   SolverOptions solver;
 };
 
-/// @throws config::ConfigError naming file, key and expectation.
-OcpConfig loadOcpConfig(const std::string& path);
+/// The problem of the config file `path`, with `overrides` (`--set KEY=VALUE`) in place of the
+/// file's values and checked like them. @throws config::ConfigError naming file, key and
+/// expectation.
+OcpConfig loadOcpConfig(const std::string& path,
+                        const std::vector<config::Override>& overrides = {});
 
 /// The files a problem reads besides its config file (the robot, and the guess gait when it has
 /// one), as the config names them: an output folder may not be, hold or lie inside one.

@@ -178,6 +178,7 @@ nlohmann::ordered_json solutionSummary(const GaitResultOptions& o, const dynamic
                                     {o.config_path, r.status, r.iterations, r.wall_time_s,
                                      r.callback_time_s, config.cost.primary()});
   summary["converged"] = r.success;
+  if (!o.config_overrides.empty()) summary["config_overrides"] = o.config_overrides;
   summary["cost"] = r.cost;  // the solver's objective (the scheme's own quadrature)
   summary["cost_terms"] = costTermsJson(problem.nlp, r.x, config.cost);
   summary["cost_quadrature"] = fmt::format(

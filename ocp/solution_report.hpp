@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -24,6 +25,8 @@ struct GaitResultOptions {
   std::string config_path;  ///< recorded in summary.json
   double rate_hz = 1000;    ///< of trajectory.csv
   FolderPictures pictures;
+  /// The config values set on the command line (KEY=VALUE), recorded in summary.json
+  std::vector<std::string> config_overrides;
 };
 
 /// The files of every gait folder (designed, optimised or interpolated) into `dir`:

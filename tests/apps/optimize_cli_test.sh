@@ -106,4 +106,32 @@ assert abs(again["cost"] - first["cost"]) <= 1e-9 * first["cost"], (again["cost"
 assert again["iterations"] == first["iterations"], (again["iterations"], first["iterations"])
 assert again["solver"] == first["solver"], (again["solver"], first["solver"])
 PY
+# (h) --set replaces config values as an edit of the file would (the same optimum), records them
+# in summary.json, and is checked as the file is: the friction bound holds at mu - margin.
+C="$ROOT/configs/ocp/mu2004_walk.yaml"
+run optimize --config "$C" --set 'phases[0].segments=24' --set constraints.friction_margin=0.2 \
+  --out "$TMP/set" --quiet --no-plots
+[[ $RC -eq 0 ]] || fail "(h) --set exited $RC: $(cat "$TMP/err")"
+sed "s|\.\./|$ROOT/configs/|; s/\({name: SSP, .*segments: \)30}/\124}/; s/friction_margin: [0-9.]*/friction_margin: 0.2/" \
+  "$C" >"$TMP/edited.yaml"
+grep -q "segments: 24}" "$TMP/edited.yaml" && grep -q "friction_margin: 0.2" "$TMP/edited.yaml" ||
+  fail "(h) the edited copy lacks the edits"
+run optimize --config "$TMP/edited.yaml" --out "$TMP/edited" --quiet --no-plots
+[[ $RC -eq 0 ]] || fail "(h) edited config exited $RC: $(cat "$TMP/err")"
+"$PY" - "$TMP/set/summary.json" "$TMP/edited/summary.json" <<'PY' || fail "(h) --set"
+import json, sys
+s, e = (json.load(open(f)) for f in sys.argv[1:3])
+assert s["config_overrides"] == ["phases[0].segments=24", "constraints.friction_margin=0.2"], s
+assert "config_overrides" not in e, e.keys()
+assert s["mesh_history"][0]["segments"][0] == 24, s["mesh_history"]
+assert abs(s["cost"] - e["cost"]) <= 1e-9 * e["cost"], (s["cost"], e["cost"])
+assert s["max_friction_ratio"] <= s["friction"] - 0.2 + 1e-6, s["max_friction_ratio"]
+PY
+run optimize --config "$C" --set 'phases[0].segments=0' --out "$TMP/v" --quiet --no-plots
+[[ $RC -eq 2 ]] && grep -q -- "--set phases\[0\].segments=0.*expected a number in \[1, 1000\]" "$TMP/err" ||
+  fail "(h) a bad --set value: exit $RC: $(cat "$TMP/err")"
+run optimize --config "$C" --set 'phases[2].segments=8' --out "$TMP/v" --quiet --no-plots
+[[ $RC -eq 2 ]] && grep -q "there is no list item \[2\]" "$TMP/err" ||
+  fail "(h) --set past a list's end: exit $RC: $(cat "$TMP/err")"
+[[ ! -e $TMP/v ]] || fail "(h) a refused --set wrote a folder"
 echo "optimize CLI: all checks passed"

@@ -1,8 +1,11 @@
 // YamlReader: duplicate keys are errors naming the file, the key path and both lines, wherever
-// the mapping sits (top level, nested, inside a list).
+// the mapping sits (top level, nested, inside a list); --set overrides replace values before the
+// checks, and a path that does not fit the document is an error naming --set.
 #include <fstream>
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -59,6 +62,52 @@ TEST(YamlReader, DistinctKeysAreAccepted) {
   const YamlReader root = YamlReader::fromFile(path);
   EXPECT_EQ(root.number("a", positive("[m]")), 1.0);
   EXPECT_EQ(root.map("b").number("a", positive("[m]")), 2.0);
+}
+
+}  // namespace
+}  // namespace gaitopt::config
+
+namespace gaitopt::config {
+namespace {
+
+YamlReader withSets(const std::string& path, const std::vector<std::string>& sets) {
+  std::vector<Override> overrides;
+  for (const auto& text : sets) overrides.push_back(parseOverride(text));
+  return YamlReader::fromFile(path, overrides);
+}
+
+TEST(YamlReaderOverrides, ReplaceNestedListAndNewValuesBeforeTheChecks) {
+  const std::string path =
+      writeYaml("sets.yaml", "a: 1\nm: {x: 2}\nl:\n  - {n: 3}\n  - {n: 4}\nv: [1, 2]\n");
+  const YamlReader r = withSets(path, {"a=5", "m.x=6", "l[1].n=7", "m.y=8", "v=[9]", "new.k=1"});
+  const auto any = inRange(-100, 100, "");
+  EXPECT_EQ(r.number("a", any), 5);
+  EXPECT_EQ(r.map("m").number("x", any), 6);
+  EXPECT_EQ(r.map("m").number("y", any), 8);  // a key the file did not have
+  EXPECT_EQ(r.list("l")[0].number("n", any), 3);
+  EXPECT_EQ(r.list("l")[1].number("n", any), 7);
+  EXPECT_EQ(r.numbers("v", any), std::vector<double>{9});  // a list replaced whole
+  EXPECT_EQ(r.map("new").number("k", any), 1);
+  // A value set is checked as one in the file, and the error names the --set.
+  const std::string message = errorOf([&] { r.number("a", inRange(0, 1, "[m]")); });
+  EXPECT_NE(message.find("(--set a=5, --set m.x=6"), std::string::npos) << message;
+  EXPECT_NE(message.find("expected a number in [0, 1] [m], got 5"), std::string::npos) << message;
+}
+
+TEST(YamlReaderOverrides, PathsThatDoNotFitAreErrorsNamingSet) {
+  const std::string path = writeYaml("sets_bad.yaml", "a: 1\nl:\n  - {n: 3}\n");
+  for (const auto& [set, why] :
+       std::vector<std::pair<std::string, std::string>>{{"l[1].n=2", "no list item [1]"},
+                                                        {"a.b=2", "runs through a value"},
+                                                        {"l[x].n=2", "expected a list index"},
+                                                        {"a", "expected KEY=VALUE"},
+                                                        {"=2", "expected KEY=VALUE"},
+                                                        {".a=2", "expected a key path"},
+                                                        {"a=[1", "not valid YAML"}}) {
+    const std::string message = errorOf([&] { withSets(path, {set}); });
+    EXPECT_EQ(message.rfind("--set", 0), 0u) << set << ": " << message;
+    EXPECT_NE(message.find(why), std::string::npos) << set << ": " << message;
+  }
 }
 
 }  // namespace

@@ -104,9 +104,12 @@ TEST_F(FailedResult, IsMarkedAndNamesItsWorstViolation) {
   const std::string failed = path("out.failed");
   std::vector<bool> had_failed_note;  // when the pictures were drawn
   GaitResultOptions options{
-      "cfg.yaml", 100, [&](const std::string& dir) {
+      "cfg.yaml",
+      100,
+      [&](const std::string& dir) {
         had_failed_note.push_back(std::filesystem::exists(dir + "/FAILED.txt"));
-      }};
+      },
+      {}};
   const std::string message = writeFailedResult(options, r.model, r.config, r.solution, failed);
   EXPECT_EQ(message.rfind("solver status Maximum_Iterations_Exceeded after 7 iterations", 0), 0u)
       << message;

@@ -1,0 +1,86 @@
+#include "config/overrides.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "config/config_error.hpp"
+
+namespace gaitopt::config {
+namespace {
+
+/// One step of a key path: a mapping key, or a list index.
+struct Step {
+  std::string key;
+  int index = -1;  ///< >= 0: a list item
+};
+
+[[noreturn]] void refuse(const Override& o, const std::string& why) {
+  throw ConfigError("--set", o.key, 0, fmt::format("'{}': {}", o.text(), why));
+}
+
+/// "a.b[2].c" as a, b, [2], c.
+std::vector<Step> stepsOf(const Override& o) {
+  std::vector<Step> steps;
+  std::size_t at = 0;
+  while (at <= o.key.size()) {
+    const std::size_t end = std::min(o.key.find('.', at), o.key.size());
+    const std::string part = o.key.substr(at, end - at);
+    const std::size_t bracket = part.find('[');
+    if (part.empty() || bracket == 0) refuse(o, "expected a key path such as constraints.zmp");
+    steps.push_back({part.substr(0, bracket)});
+    for (std::size_t b = bracket; b != std::string::npos; b = part.find('[', b + 1)) {
+      const std::size_t close = part.find(']', b);
+      int index = -1;
+      const auto [ptr, ec] = std::from_chars(part.data() + b + 1, part.data() + close, index);
+      if (close == std::string::npos || ec != std::errc() || ptr != part.data() + close ||
+          index < 0)
+        refuse(o, "expected a list index such as phases[0]");
+      steps.push_back({"", index});
+    }
+    at = end + 1;
+  }
+  return steps;
+}
+
+/// The child of `node` at `step` (a mapping is created where the path names a missing key).
+YAML::Node childOf(YAML::Node& node, const Step& step, const Override& o) {
+  if (step.index >= 0) {
+    if (!node.IsSequence() || static_cast<std::size_t>(step.index) >= node.size())
+      refuse(o, fmt::format("there is no list item [{}] there", step.index));
+    return node[step.index];
+  }
+  if (!node.IsMap() && !node.IsNull()) refuse(o, "the path runs through a value, not a mapping");
+  if (!node[step.key]) node[step.key] = YAML::Node(YAML::NodeType::Map);
+  return node[step.key];
+}
+
+}  // namespace
+
+Override parseOverride(const std::string& text) {
+  const std::size_t eq = text.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
+    throw ConfigError("--set", text, 0,
+                      "expected KEY=VALUE, e.g. --set constraints.friction_margin=0.2");
+  return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+void applyOverrides(YAML::Node& root, const std::vector<Override>& overrides) {
+  for (const Override& o : overrides) {
+    YAML::Node value;
+    try {
+      value = YAML::Load(o.value);
+    } catch (const YAML::Exception& e) {
+      refuse(o, "the value is not valid YAML: " + e.msg);
+    }
+    const std::vector<Step> steps = stepsOf(o);
+    YAML::Node node = root;
+    for (std::size_t i = 0; i + 1 < steps.size(); ++i) node.reset(childOf(node, steps[i], o));
+    // A leaf that is a mapping or list in the file is replaced whole, as a file edit would.
+    childOf(node, steps.back(), o) = value;
+  }
+}
+
+}  // namespace gaitopt::config

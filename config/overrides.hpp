@@ -1,0 +1,28 @@
+#pragma once
+/// @file overrides.hpp
+/// One config value given on the command line (`--set phases[0].segments=24`): the key path as
+/// the readers name it in their messages (mappings joined by '.', list items by [i]) and the
+/// value as YAML text. It replaces the value in the parsed document before the reader checks
+/// it, so a value set this way is validated exactly as one in the file.
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+namespace gaitopt::config {
+
+struct Override {
+  std::string key;    ///< e.g. "constraints.friction_margin", "phases[0].segments"
+  std::string value;  ///< YAML text: a number, a word, a list "[0.1, 0.2]", ...
+  std::string text() const { return key + "=" + value; }
+};
+
+/// KEY=VALUE. @throws ConfigError naming --set when there is no '=', no key or no value.
+Override parseOverride(const std::string& text);
+
+/// Sets each override's value in the document `root`, creating missing mappings on the way
+/// (the reader then refuses keys it does not know). @throws ConfigError naming --set and the
+/// key when the path runs through a value that is not a mapping, or past a list's end.
+void applyOverrides(YAML::Node& root, const std::vector<Override>& overrides);
+
+}  // namespace gaitopt::config
