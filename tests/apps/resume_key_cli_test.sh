@@ -63,6 +63,28 @@ resumed() {
   fi
 }
 
+# prove COMMAND BASE KEYED FREE RESUMED: the tables cover the help; each KEYED row's change is
+# refused naming its key; each FREE row's change (without --quiet) resumes, printing RESUMED.
+prove() {
+  local command=$1 base=$2 resumed_line=$5 row option value key
+  local -n keyed=$3 free=$4
+  covered "$command" "${keyed[@]}" "${free[@]}"
+  for row in "${keyed[@]}"; do
+    IFS='|' read -r option value key <<<"$row"
+    rerun "$command" "$base" "$option" "$value"
+    refused "$command $option" "$key"
+  done
+  local -n args=$base
+  unset "args[--quiet]"
+  for row in "${free[@]}"; do
+    IFS='|' read -r option value _ <<<"$row"
+    [[ $value != - ]] || continue
+    rerun "$command" "$base" "$option" "$value"
+    resumed "$command $option" "$resumed_line"
+  done
+  args[--quiet]=
+}
+
 # --- stability -----------------------------------------------------------------------------------
 run poly --robot "$ROBOT" --gait "$GAIT" --no-plots --rate 100 --out gait
 [[ $RC -eq 0 ]] || fail "poly: $(cat "$TMP/err")"
@@ -95,26 +117,16 @@ STABILITY_KEYED=(
   "--poincare||poincare"
 )
 # OPTION|VALUE|why it does not shape a row ("-" as VALUE: not rerun).
-STABILITY_FREE=(
+COMMON_FREE=(
   "--out|-|names the folder that is resumed"
-  "--jobs|1|threads: each row is walked alone, the same on any thread"
   "--quiet||progress on the terminal"
-  "--no-plots||the picture is drawn from the rows"
   "--help|-|prints the help"
 )
-covered stability "${STABILITY_KEYED[@]}" "${STABILITY_FREE[@]}"
-for row in "${STABILITY_KEYED[@]}"; do
-  IFS='|' read -r option value key <<<"$row"
-  rerun stability BASE "$option" "$value"
-  refused "stability $option" "$key"
-done
-unset "BASE[--quiet]"
-for row in "${STABILITY_FREE[@]}"; do
-  IFS='|' read -r option value _ <<<"$row"
-  [[ $value != - ]] || continue
-  rerun stability BASE "$option" "$value"
-  resumed "stability $option" "0 points to walk (2 done before)"
-done
+STABILITY_FREE=("${COMMON_FREE[@]}"
+  "--jobs|1|threads: each row is walked alone, the same on any thread"
+  "--no-plots||the picture is drawn from the rows"
+)
+prove stability BASE STABILITY_KEYED STABILITY_FREE "0 points to walk (2 done before)"
 [[ $(md5sum <s/sweep_push.csv) == "$rows" ]] || { echo "FAIL stability: the rows changed" && FAILED=1; }
 
 # --- library -------------------------------------------------------------------------------------
@@ -130,27 +142,12 @@ LIBRARY_KEYED=(
   "--config|lib_other.yaml|library_config_fnv1a"
   "--rate|500|rate_hz"
 )
-LIBRARY_FREE=(
-  "--out|-|names the folder that is resumed"
+LIBRARY_FREE=("${COMMON_FREE[@]}"
   "--jobs|2|threads: each point is solved alone, the same on any thread"
   "--retry-failed||which finished points are solved again, not how"
   "--plots||pictures of the point folders, drawn from their rows"
-  "--quiet||progress on the terminal"
-  "--help|-|prints the help"
 )
-covered library "${LIBRARY_KEYED[@]}" "${LIBRARY_FREE[@]}"
-for row in "${LIBRARY_KEYED[@]}"; do
-  IFS='|' read -r option value key <<<"$row"
-  rerun library LBASE "$option" "$value"
-  refused "library $option" "$key"
-done
-unset "LBASE[--quiet]"
-for row in "${LIBRARY_FREE[@]}"; do
-  IFS='|' read -r option value _ <<<"$row"
-  [[ $value != - ]] || continue
-  rerun library LBASE "$option" "$value"
-  resumed "library $option" "^library: 0 points solved, 0 failed"
-done
+prove library LBASE LIBRARY_KEYED LIBRARY_FREE "^library: 0 points solved, 0 failed"
 # The files named inside the configs, changed in place under the same paths.
 sed -i 's/torque_squared: 1.0/torque_squared: 2.0/' base.yaml
 rerun library LBASE
