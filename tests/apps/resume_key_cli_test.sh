@@ -63,6 +63,12 @@ resumed() {
   fi
 }
 
+# first_run COMMAND BASE ROWS: the run every rerun resumes; `rows` keeps its row file's checksum.
+first_run() {
+  rerun "$1" "$2"
+  [[ $RC -eq 0 ]] || fail "$1: $(cat "$TMP/err")"
+  rows=$(md5sum <"$3")
+}
 # prove COMMAND BASE KEYED FREE RESUMED: the tables cover the help; each KEYED row's change is
 # refused naming its key; each FREE row's change (without --quiet) resumes, printing RESUMED.
 prove() {
@@ -92,9 +98,7 @@ run poly --robot "$ROBOT" --gait "$GAIT" --no-plots --rate 200 --out gait200
 cp "$ROBOT" robot.yaml && echo "# the same robot, another file" >>robot.yaml
 declare -A BASE=([--reference]=gait [--robot]=$ROBOT [--controller]=sliding_mode
   [--sweep]=push=0:1:2 [--steps]=2 [--no-plots]= [--quiet]= [--out]=s)
-rerun stability BASE
-[[ $RC -eq 0 ]] || fail "stability: $(cat "$TMP/err")"
-rows=$(md5sum <s/sweep_push.csv)
+first_run stability BASE s/sweep_push.csv
 # OPTION|VALUE|KEY: the rerun sets OPTION to VALUE (a flag when empty) and must name KEY.
 STABILITY_KEYED=(
   "--reference|gait200|reference_trajectory_fnv1a"
@@ -135,9 +139,7 @@ sed "s|segments: 25|segments: 8|; s|\.\./|$ROOT/configs/|" "$ROOT/configs/ocp/ra
 printf 'name: l\nocp: base.yaml\ngrid:\n  speed: [0.7]\n' >lib.yaml
 cp lib.yaml lib_other.yaml && echo "# another file" >>lib_other.yaml
 declare -A LBASE=([--config]=lib.yaml [--jobs]=1 [--quiet]= [--out]=l)
-rerun library LBASE
-[[ $RC -eq 0 ]] || fail "library: $(cat "$TMP/err")"
-rows=$(md5sum <l/index.csv)
+first_run library LBASE l/index.csv
 LIBRARY_KEYED=(
   "--config|lib_other.yaml|library_config_fnv1a"
   "--rate|500|rate_hz"
