@@ -5,8 +5,10 @@
 # whole solve's time goes, and the solver settings measured against the shipped ones,
 # bench/solve_profile.cpp), every shipped config with MUMPS and with gaitopt's KKT solver
 # (scripts/linear_solver_compare.sh) and how often each converges on the five-link configs at
-# five meshes (scripts/solver_robustness.sh), the double support in theta against reduced coordinates
-# (bench/dsp_coordinates.cpp, issue 15), then the speed-against-accuracy table and chart
+# five meshes (scripts/solver_robustness.sh), how often every shipped problem converges over
+# meshes and starts (bench/convergence_bench.cpp, issue 34), the double support in theta
+# against reduced coordinates (bench/dsp_coordinates.cpp, issue 15), then the
+# speed-against-accuracy table and chart
 # of the ground models (bench/ground_bench.cpp, scripts/plots/ground_chart.py).
 # Usage: scripts/bench.sh BUILD_DIR   (BUILD_DIR configured with GAITOPT_BUILD_BENCH=ON, built)
 set -euo pipefail
@@ -83,6 +85,12 @@ echo
 echo "How often each solver converges on the five-link configs at five meshes:"
 scripts/solver_robustness.sh "$1" "$1/solver_robustness.csv" 2>/dev/null
 echo "(also in $1/solver_robustness.csv; results/solver_robustness.csv is a copy)"
+echo
+echo "How often every shipped problem converges over five meshes and two starts, and where to:"
+conv="$1/bench/convergence_bench"
+[[ -x "$conv" ]] || { echo "error: $conv not built" >&2; exit 1; }
+"$conv" "$1/convergence.csv" 2>/dev/null | tee "$1/convergence.md"
+echo "(also in $1/convergence.{csv,md}; results/convergence.{csv,md} are copies)"
 
 echo
 dsp="$1/bench/dsp_coordinates"

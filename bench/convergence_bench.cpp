@@ -1,0 +1,193 @@
+/// @file convergence_bench.cpp
+/// How often the shipped problems converge, and to which optimum (issue 34, item 1): every OCP
+/// config at SSP meshes of 24, 27, 30, 33 and 36 segments, each from two starts, the config's
+/// own initial guess (the polynomial gait, or the straight-leg guess) and a neighbouring solved
+/// gait (the config's solution at its shipped mesh, resampled onto the other mesh), plus every
+/// point of the shipped gait libraries from the polynomial gait. One solve is one draw: the
+/// success rate over the draws and the spread of the converged costs per config are what a
+/// user who changes the mesh or the start meets.
+/// Writes one CSV row per solve and prints a markdown table per config.
+/// Usage: convergence_bench OUT.csv [OCP_CONFIG | LIBRARY_CONFIG ...]
+///        (default: every configs/ocp/*.yaml and configs/library/*.yaml of the source tree)
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "io/checked_write.hpp"
+#include "library/grid.hpp"
+#include "library/library_config.hpp"
+#include "library/library_point.hpp"
+#include "ocp/gait_solve.hpp"
+#include "ocp/initial_guess.hpp"
+#include "ocp_bench_common.hpp"
+
+namespace gaitopt::bench {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kMeshes[] = {24, 27, 30, 33, 36};
+
+/// One solve: the config, its SSP mesh, where it started, and how it ended.
+struct Draw {
+  std::string config, start;
+  int segments = 0;
+  std::string status;
+  bool converged = false;
+  int iterations = 0;
+  double cost = 0, wall_s = 0;
+};
+
+Draw drawOf(const std::string& name, int segments, const std::string& start,
+            const ocp::SolveResult& r) {
+  return {name, start, segments, r.status, r.success, r.iterations, r.cost, r.wall_time_s};
+}
+
+/// The config at an SSP mesh of `segments` equal segments (mesh refinement left as configured).
+ocp::OcpConfig atMesh(ocp::OcpConfig config, int segments) {
+  config.phases.front().segments = segments;
+  config.phases.front().mesh.clear();
+  config.solver.progress = false;
+  return config;
+}
+
+/// Solves `config` from `guess`, or a row "error" when it cannot even be set up.
+Draw solve(const std::string& name, const dynamics::Model& model, const ocp::OcpConfig& config,
+           const gaits::Trajectory& guess, const std::string& start,
+           std::optional<ocp::GaitSolution>* kept = nullptr) {
+  const int segments = config.phases.front().segments;
+  try {
+    ocp::GaitSolution s = ocp::solveGait(model, config, guess);
+    Draw d = drawOf(name, segments, start, s.result);
+    if (kept != nullptr) *kept = std::move(s);
+    return d;
+  } catch (const std::exception& e) {
+    return {name, start, segments, std::string("error: ") + e.what(), false, 0, 0, 0};
+  }
+}
+
+/// The config's own guess and the neighbour's at every mesh.
+std::vector<Draw> ocpDraws(const std::string& path) {
+  const std::string name = fs::path(path).stem().string();
+  const ocp::OcpConfig shipped = ocp::loadOcpConfig(path);
+  const dynamics::Model model = ocp::problemModel(shipped);
+  const gaits::Trajectory own = ocp::initialGuess(model, shipped);
+  const std::string own_name = shipped.guess_gait_path.empty() ? "straight_leg" : "polynomial";
+  // The neighbour: the solution at the shipped mesh (not a draw of its own).
+  std::optional<ocp::GaitSolution> neighbour;
+  solve(name, model, shipped, own, own_name, &neighbour);
+  std::vector<Draw> draws;
+  const std::optional<gaits::Trajectory> warm =
+      neighbour && neighbour->result.success
+          ? std::optional(ocp::reconstructDense(neighbour->problem, model, neighbour->result.x,
+                                                ocp::kRefinementResampleHz))
+          : std::nullopt;
+  for (const int segments : kMeshes) {
+    const ocp::OcpConfig config = atMesh(shipped, segments);
+    draws.push_back(solve(name, model, config, own, own_name));
+    if (warm) draws.push_back(solve(name, model, config, *warm, "neighbour (shipped mesh)"));
+  }
+  return draws;
+}
+
+/// Every point of a library, from the polynomial gait (no warm start), into a scratch folder.
+std::vector<Draw> libraryDraws(const std::string& path, const std::string& scratch) {
+  library::LibraryConfig config = library::loadLibraryConfig(path);
+  const std::string name = "library " + fs::path(path).stem().string();
+  library::Grid grid(config.axes);
+  const int segments = config.base.phases.front().segments;
+  const library::LibrarySetup setup{
+      std::move(config), std::move(grid), scratch, {path, 100, {}, {}}};
+  std::vector<Draw> draws;
+  for (int p = 0; p < setup.grid.size(); ++p) {
+    const library::IndexRow row = library::solveLibraryPoint(setup, {p, -1});
+    draws.push_back({name, row.start, segments, row.status, row.converged, row.iterations, row.cost,
+                     row.solve_time_s});
+  }
+  return draws;
+}
+
+std::string csvOf(const std::vector<Draw>& draws) {
+  std::string text = "config,ssp_segments,start,status,converged,iterations,cost,wall_s\n";
+  for (const Draw& d : draws) {
+    std::string status = d.status;
+    std::replace(status.begin(), status.end(), ',', ';');
+    std::replace(status.begin(), status.end(), '\n', ' ');
+    text += fmt::format("{},{},{},{},{},{},{:.10g},{:.4f}\n", d.config, d.segments, d.start, status,
+                        d.converged ? 1 : 0, d.iterations, d.cost, d.wall_s);
+  }
+  return text;
+}
+
+/// Per config: draws converged, the converged costs' range and spread, median iterations and
+/// time. The spread is (max - min) / min of the converged costs.
+void printTable(const std::vector<Draw>& draws) {
+  std::map<std::string, std::vector<const Draw*>> by_config;
+  for (const Draw& d : draws) by_config[d.config].push_back(&d);
+  fmt::print(
+      "| config | converged | least cost | greatest cost | spread | median iterations | "
+      "median solve s |\n|---|---:|---:|---:|---:|---:|---:|\n");
+  int converged = 0;
+  for (const auto& [name, group] : by_config) {
+    std::vector<double> costs, iterations, times;
+    for (const Draw* d : group) {
+      iterations.push_back(d->iterations);
+      times.push_back(d->wall_s);
+      if (d->converged) costs.push_back(d->cost);
+    }
+    converged += static_cast<int>(costs.size());
+    const auto [lo, hi] = std::minmax_element(costs.begin(), costs.end());
+    fmt::print("| {} | {} of {} | {} | {} | {} | {:.0f} | {:.3f} |\n", name, costs.size(),
+               group.size(), costs.empty() ? "-" : fmt::format("{:.6g}", *lo),
+               costs.empty() ? "-" : fmt::format("{:.6g}", *hi),
+               costs.empty() ? "-" : fmt::format("{:.2f} %", 100 * (*hi - *lo) / std::abs(*lo)),
+               median(iterations), median(times));
+  }
+  fmt::print("\n{} of {} solves converged ({:.1f} %).\n", converged, draws.size(),
+             100.0 * converged / static_cast<double>(draws.size()));
+}
+
+std::vector<std::string> shippedConfigs() {
+  std::vector<std::string> paths;
+  for (const char* folder : {"configs/ocp", "configs/library"})
+    for (const auto& entry : fs::directory_iterator(fs::path(GAITOPT_SOURCE_DIR) / folder))
+      if (entry.path().extension() == ".yaml") paths.push_back(entry.path().string());
+  std::sort(paths.begin(), paths.end());
+  return paths;
+}
+
+}  // namespace
+}  // namespace gaitopt::bench
+
+int main(int argc, char** argv) {
+  using namespace gaitopt;
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: %s OUT.csv [OCP_CONFIG | LIBRARY_CONFIG ...]\n", argv[0]);
+    return 2;
+  }
+  std::vector<std::string> paths(argv + 2, argv + argc);
+  if (paths.empty()) paths = bench::shippedConfigs();
+  const auto scratch = std::filesystem::temp_directory_path() /
+                       fmt::format("convergence_bench_{}", static_cast<long>(::getpid()));
+  std::vector<bench::Draw> draws;
+  for (const std::string& path : paths) {
+    const bool library = path.find("/library/") != std::string::npos;
+    std::fprintf(stderr, "convergence_bench: %s\n", path.c_str());
+    const auto more =
+        library ? bench::libraryDraws(path, (scratch / "library").string()) : bench::ocpDraws(path);
+    draws.insert(draws.end(), more.begin(), more.end());
+    io::writeFileAtomically(argv[1], bench::csvOf(draws));  // a long run keeps what it has
+  }
+  std::filesystem::remove_all(scratch);
+  bench::printTable(draws);
+  return 0;
+}
