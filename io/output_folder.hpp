@@ -1,6 +1,6 @@
 #pragma once
 /// @file output_folder.hpp
-/// The folder a command writes (--out), made safe (DESIGN 7a, issue 19):
+/// The folder a command writes (--out), made safe (docs/design.md#output-folders-and-failures):
 /// - the path is normalised ("DIR/" is DIR); "", ".", "..", "/" are refused (exit 2);
 /// - it must not be, nor contain, an input of the same command (compared as real paths);
 /// - an existing OUT is replaced only when it is a gaitopt folder (the marker file kMarker) or
