@@ -3,7 +3,8 @@
 #               part of the main job into results/ and print where its report page is
 #               (make demo-full: every solve, walk, sweep and library of the README, much longer)
 #   make test   same set-up, then the whole test suite (Release, then Debug+ASan/UBSan) via ctest,
-#               and one optimise under valgrind
+#               the quick tests before the full ones, and one optimise under valgrind
+#               (make test-quick: the Release build's quick tests only, a few minutes)
 JOBS ?= $(shell nproc)
 BUILD ?= build
 SAN_BUILD ?= build-sanitize
@@ -14,7 +15,8 @@ SAN_OPT ?= -g -O1
 # Looked up when a recipe runs (=, not :=): on a fresh machine ninja arrives with the deps.
 CMAKE_GEN = $(shell command -v ninja >/dev/null 2>&1 && echo "-G Ninja")
 
-.PHONY: deps configure build test test-release test-sanitize valgrind demo demo-full bench format clean
+.PHONY: deps configure build test test-quick test-release test-sanitize valgrind demo demo-full \
+  bench format clean
 
 # Each target names every option, so one build folder serves them all in any order.
 # The demo builds the CLI alone and needs none of the test, benchmark, binding or MPI packages;
@@ -27,7 +29,7 @@ CONFIGURE_FLAGS = $(FULL_FLAGS)
 DEPS_FLAGS =
 demo: CONFIGURE_FLAGS = $(DEMO_FLAGS)
 demo: DEPS_FLAGS = --demo
-test-release: CONFIGURE_FLAGS = $(TEST_FLAGS)
+test-release test-quick: CONFIGURE_FLAGS = $(TEST_FLAGS)
 
 deps:
 	@bash scripts/install-deps.sh $(DEPS_FLAGS)
@@ -38,16 +40,23 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
+# Tests are labelled quick or full (tests/CMakeLists.txt). The quick ones run first, so a broken
+# build shows in minutes; the full ones run whatever the quick ones gave, and either failing fails.
+CTEST = ctest --output-on-failure -j $(JOBS)
+QUICK_THEN_FULL = { $(CTEST) -L quick; quick=$$?; $(CTEST) -L full && exit $$quick; }
+test-quick: build
+	@cd $(BUILD) && $(CTEST) -L quick
+
 test-release: build
-	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+	@cd $(BUILD) && $(QUICK_THEN_FULL)
 
 test-sanitize: deps
 	@cmake -S . -B $(SAN_BUILD) $(CMAKE_GEN) -DCMAKE_BUILD_TYPE=Debug -DGAITOPT_SANITIZE=ON \
 	  -DCMAKE_CXX_FLAGS_DEBUG="$(SAN_OPT)" -DGAITOPT_BUILD_BENCH=OFF \
 	  -DGAITOPT_PYTHON=OFF >/dev/null
 	@cmake --build $(SAN_BUILD) -j $(JOBS)
-	@cd $(SAN_BUILD) && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-	  ctest --output-on-failure -j $(JOBS)
+	@cd $(SAN_BUILD) && export ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 && \
+	  $(QUICK_THEN_FULL)
 
 # One optimise of the small RABBIT problem under memcheck: errors or leaks fail (about 15 s).
 valgrind: build

@@ -1,6 +1,7 @@
 #pragma once
 /// @file conventions.hpp
-/// The one place that owns gaitopt's conventions (DESIGN.md section 3). Everything else uses it.
+/// The one place that owns gaitopt's conventions; everything else uses it. For readers they are
+/// stated in docs/design.md#conventions.
 ///
 /// Frames and units: SI units, radians. x points in the walking direction, y up. Every step is
 /// expressed in the frame whose origin is the stance tip B. On a slope (Model::slope(), > 0

@@ -1,7 +1,7 @@
 #pragma once
 /// @file frictional_impact.hpp
 /// Rigid impact of the swing tip E with Coulomb friction and Newton restitution (Hurmuzlu,
-/// Genot, Brogliato 2001, seed 001: sec. 3.3.2 and appendix B, eqs. 76-82). Labels are the
+/// Genot, Brogliato 2001, sec. 3.3.2 and appendix B, eqs. 76-82). Labels are the
 /// pre-impact ones (impact.hpp): B the trailing tip, E the colliding one; impulses are exerted by
 /// the ground on the robot; the configuration does not change.
 ///

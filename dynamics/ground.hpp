@@ -1,8 +1,8 @@
 #pragma once
 /// @file ground.hpp
-/// Ground reactions and the zero-moment point. Mu gives neither formula (notes/mu2004.md sec.
-/// 2.5); these are the standard Newton-Euler results for the whole robot. On a slope everything
-/// is in the ground frame (model.hpp) with gravity g_vec = model.gravityAcceleration().
+/// Ground reactions and the zero-moment point. Mu gives neither formula; these are the standard
+/// Newton-Euler results for the whole robot (docs/derivations.md#ground-reactions-and-the-zmp).
+/// On a slope everything is in the ground frame (model.hpp), gravity model.gravityAcceleration().
 #include "dynamics/kinematics.hpp"
 
 namespace gaitopt::dynamics {

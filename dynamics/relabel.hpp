@@ -2,7 +2,7 @@
 /// @file relabel.hpp
 /// Stance/swing relabelling at the end of a step (Mu 2.38, corrected): the chain is reversed,
 /// leg links turn by pi, the torso keeps its angle (the printed Pi has pi in the torso entry,
-/// which would flip the torso upside down; notes/mu2004.md sec. 0 item 5). Rates are reversed
+/// which would flip the torso upside down; docs/derivations.md#relabelling). Rates are reversed
 /// without sign change. The new origin is the old swing tip E.
 #include <cmath>
 #include <numbers>

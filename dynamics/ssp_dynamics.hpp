@@ -3,7 +3,7 @@
 /// Single-support dynamics of the pinned chain, Mu (2.7): D(theta) ddtheta + H(theta, dtheta)
 /// dtheta + G(theta) = M^T tau, with D, H, G from (2.8) and the gravity sign of (2.8c)
 /// corrected to G_i = -g_i sin(theta_i) (printed "+" violates energy conservation; Appendix I
-/// eq. A1 has the minus; see notes/mu2004.md sec. 0 item 1). On a ground inclined by gamma
+/// eq. A1 has the minus; docs/derivations.md#gravity-sign). On a ground inclined by gamma
 /// (model.hpp: theta from the slope normal, gravity rotated) G_i = -g_i sin(theta_i - gamma).
 /// Templated on the scalar type.
 #include <cmath>

@@ -1,9 +1,9 @@
 #pragma once
 /// @file export_checks.hpp
 /// What a controller relies on in a dense export (trajectory.csv), checked on its samples
-/// rather than at the solver's nodes (issue 15, DESIGN.md sec. 6): the swing tip above the
-/// ground, each loaded foot's own centre of pressure on that foot, the double-support tip where
-/// it was pinned, and rates that are the derivatives of the angles.
+/// rather than at the solver's nodes (docs/design.md#the-optimal-control-problem): the swing tip
+/// above the ground, each loaded foot's own centre of pressure on that foot, the double-support tip
+/// where it was pinned, and rates that are the derivatives of the angles.
 #include "dynamics/model.hpp"
 #include "gaits/trajectory.hpp"
 

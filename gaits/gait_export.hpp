@@ -1,8 +1,8 @@
 #pragma once
 /// @file gait_export.hpp
-/// The files of a gait folder a controller reads (DESIGN.md sec. 5): the step on one fixed-rate
-/// grid (grid_export.hpp) in trajectory.csv and trajectory.json, and summary.json with the
-/// states the grid does not sample (switch_states.hpp). readTrajectoryCsv on the folder's
+/// The files of a gait folder a controller reads (docs/design.md#the-export-contract): the step on
+/// one fixed-rate grid (grid_export.hpp) in trajectory.csv and trajectory.json, and summary.json
+/// with the states the grid does not sample (switch_states.hpp). readTrajectoryCsv on the folder's
 /// trajectory.csv gives the step back.
 #include <cstddef>
 #include <string>

@@ -1,7 +1,7 @@
 #pragma once
 /// @file gait_params.hpp
 /// Parameters of the polynomial gait of Mu (2004) ch. 3, in gaitopt's conventions
-/// (configs/gaits/*.yaml). Mu's S_L is 2 * step_length (DESIGN.md sec. 3).
+/// (configs/gaits/*.yaml). Mu's S_L is 2 * step_length (docs/design.md#conventions).
 #include <optional>
 #include <string>
 

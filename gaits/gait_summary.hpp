@@ -1,6 +1,7 @@
 #pragma once
 /// @file gait_summary.hpp
-/// summary.json of a result folder (DESIGN.md sec. 5): flat keys, SI units, fixed names.
+/// summary.json of a result folder: flat keys, SI units, fixed names
+/// (docs/design.md#the-export-contract).
 #include <string>
 
 #include <nlohmann/json.hpp>

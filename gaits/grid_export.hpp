@@ -1,6 +1,6 @@
 #pragma once
 /// @file grid_export.hpp
-/// The controller-ready form of a step (DESIGN.md sec. 5, issue 15 item 6): samples on one
+/// The controller-ready form of a step (docs/design.md#the-export-contract): samples on one
 /// fixed-rate grid t_i = i / rate, i = 0..N, time strictly increasing, each sample in the phase
 /// it lies in; the states either side of each phase switch and the state at the end of the step
 /// kept beside the grid, so the Trajectory (with its same-time switch pairs) is rebuilt exactly.

@@ -104,7 +104,8 @@ int nearestIndex(const GridAxis& g, double value) {
   return best;
 }
 
-/// Mu's reference case of notes sec. 7: S_L 0.7 m (step_length 0.35 m), sigma 15, alpha 90 deg.
+/// Mu's reference case, S_L 0.7 m (step_length 0.35 m), sigma 15, alpha 90 deg
+/// (docs/derivations.md#impact-reference-values).
 nlohmann::ordered_json referenceJson(const ImpactMap& map) {
   const std::array<double, 3> mu_case = {0.35, 15 * kDeg, 90 * kDeg};
   std::array<int, 3> k{};

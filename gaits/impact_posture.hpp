@@ -9,7 +9,8 @@ namespace gaitopt::gaits {
 
 /// Parameters of one pre-impact state, all "measured right before impact" (Mu sec. 5.3).
 struct ImpactPostureParams {
-  double step_length = 0;     ///< tip distance at touchdown [m] (Mu's S_L / 2, see DESIGN.md 3)
+  /// tip distance at touchdown [m], Mu's S_L / 2 (docs/design.md#conventions)
+  double step_length = 0;
   double knee_bias = 0;       ///< sigma = theta1^- - theta2^-, the trailing knee angle [rad]
   double approach_angle = 0;  ///< alpha = acot(xdot_e^- / ydot_e^-), from the -x axis [rad]
   double approach_speed = 1;  ///< V_e = |Xdot_e^-| [m/s]

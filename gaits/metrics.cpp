@@ -17,7 +17,7 @@ namespace gaitopt::gaits {
 namespace {
 
 /// Trapezoidal rule over consecutive knots. A switch pair has zero width, so it adds nothing and
-/// the integrand may jump there (DESIGN.md sec. 5: integrals per phase).
+/// the integrand may jump there: each integral runs phase by phase.
 template <class F>
 double trapezoid(const Trajectory& traj, F integrand) {
   const auto& knots = traj.knots();

@@ -1,8 +1,8 @@
 #pragma once
 /// @file metrics.hpp
 /// Gait metrics, one function each, shared by the polynomial gait and the optimiser's reports
-/// (DESIGN.md sec. 5, summary.json). Integrals use the trapezoidal rule over the knots of each
-/// phase (a zero-length interval at a phase switch contributes nothing).
+/// (summary.json, docs/design.md#the-export-contract). Integrals use the trapezoidal rule over the
+/// knots of each phase (a zero-length interval at a phase switch contributes nothing).
 #include <optional>
 
 #include <Eigen/Core>

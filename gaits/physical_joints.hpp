@@ -1,9 +1,9 @@
 #pragma once
 /// @file physical_joints.hpp
-/// Joint coordinates as a robot's joint encoders have them (DESIGN.md sec. 5): per leg, the
-/// ankle, knee and hip with one sign convention in both legs, where Mu's q (2.41) measures the
-/// swing leg's joints with the opposite sign (stance knee q1 >= 0, swing knee q4 <= 0) and its
-/// hip against the torso's upward direction (q3 near -pi).
+/// Joint coordinates as a robot's joint encoders have them (docs/design.md#the-export-contract):
+/// per leg, the ankle, knee and hip with one sign convention in both legs, where Mu's q (2.41)
+/// measures the swing leg's joints with the opposite sign (stance knee q1 >= 0, swing knee q4 <= 0)
+/// and its hip against the torso's upward direction (q3 near -pi).
 ///
 /// Convention: a link's "down angle" is its direction from its upper joint toward the ground,
 /// from the downward vertical, > 0 pointing forward; the torso's is minus its lean. Then

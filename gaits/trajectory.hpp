@@ -1,7 +1,7 @@
 #pragma once
 /// @file trajectory.hpp
 /// The one exchange type between the polynomial gait, the optimiser, the simulator, export and
-/// plots (DESIGN.md sec. 2 and 5): one step sampled on a time grid, with phase labels.
+/// plots (docs/design.md#architecture): one step sampled on a time grid, with phase labels.
 ///
 /// Knots are sorted by time. A phase switch (SSP -> DSP at touchdown) is stored as two knots at
 /// the same time, the last SSP knot and the first DSP knot, because rates, accelerations and
@@ -48,7 +48,7 @@ class Trajectory {
   Trajectory(std::string robot, double step_length, std::vector<Knot> knots);
 
   const std::string& robot() const { return robot_; }
-  /// Distance between the tips at touchdown [m] (DESIGN.md sec. 3).
+  /// Distance between the tips at touchdown [m] (docs/design.md#conventions).
   double stepLength() const { return step_length_; }
   const std::vector<Knot>& knots() const { return knots_; }
   int nLinks() const;

@@ -35,9 +35,9 @@ std::vector<std::string> muColumnNames(int n) {
   return names;
 }
 
-/// Column names of DESIGN.md sec. 5 for an n-link robot: angles 1-based like Mu's links, joint
-/// quantities 0-based like q0 = stance ankle; then the physical joints (physical_joints.hpp):
-/// angles, rates ("d" + name) and torques ("tau_" + name).
+/// Column names of docs/design.md#the-export-contract for an n-link robot: angles 1-based like Mu's
+/// links, joint quantities 0-based like q0 = stance ankle; then the physical joints
+/// (physical_joints.hpp): angles, rates ("d" + name) and torques ("tau_" + name).
 std::vector<std::string> columnNames(const dynamics::Model& model) {
   std::vector<std::string> names = muColumnNames(model.nLinks());
   const auto joints = physicalJoints(model);

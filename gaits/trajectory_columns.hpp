@@ -1,10 +1,10 @@
 #pragma once
 /// @file trajectory_columns.hpp
-/// The columns of an exported trajectory (DESIGN.md sec. 5), one definition for trajectory.csv
-/// and trajectory.json: t, phase, Mu's absolute angles theta, rates and accelerations, joint
-/// angles q and rates dq (Mu 2.41), torques tau, the tip forces, the ZMP, hip, swing tip and
-/// centre of mass, then the physical joints' angles, rates ("d" + name) and torques ("tau_" +
-/// name) (physical_joints.hpp).
+/// The columns of an exported trajectory (docs/design.md#the-export-contract), one definition for
+/// trajectory.csv and trajectory.json: t, phase, Mu's absolute angles theta, rates and
+/// accelerations, joint angles q and rates dq (Mu 2.41), torques tau, the tip forces, the ZMP, hip,
+/// swing tip and centre of mass, then the physical joints' angles, rates ("d" + name) and torques
+/// ("tau_" + name) (physical_joints.hpp).
 #include <string>
 #include <vector>
 

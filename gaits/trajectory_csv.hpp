@@ -1,10 +1,10 @@
 #pragma once
 /// @file trajectory_csv.hpp
-/// The controller interface: trajectory.csv of DESIGN.md sec. 5. One header row, one row per
-/// sample, columns t,phase,theta1..,dtheta1..,ddtheta1..,q0..,dq0..,tau0..,fb_x,fb_y,fe_x,fe_y,
-/// zmp_x,hip_x,hip_y,swing_x,swing_y,com_x,com_y, then the physical joints (robots with fewer
-/// links write the columns they have). Numbers are the shortest text that reads back as the same
-/// double, so a round trip is exact.
+/// The controller interface: trajectory.csv (docs/design.md#the-export-contract). One header
+/// row, one row per sample, columns t,phase,theta1..,dtheta1..,ddtheta1..,q0..,dq0..,tau0..,
+/// fb_x,fb_y,fe_x,fe_y,zmp_x,hip_x,hip_y,swing_x,swing_y,com_x,com_y, then the physical joints
+/// (robots with fewer links write the columns they have). Numbers are the shortest text that reads
+/// back as the same double, so a round trip is exact.
 ///
 /// A gait folder's file holds the fixed-rate grid of grid_export.hpp (t_i = i / rate, strictly
 /// increasing) and its summary.json the switch states (switch_states.hpp); files written before

@@ -1,7 +1,7 @@
 #pragma once
 /// @file exit_code.hpp
-/// The exit codes of the gaitopt tool (DESIGN 7a), shared by the command line and the Python
-/// module's exceptions, and the failure that chooses its own code.
+/// The exit codes of the gaitopt tool (docs/design.md#output-folders-and-failures), shared by the
+/// command line and the Python module's exceptions, and the failure that chooses its own code.
 #include <stdexcept>
 #include <string>
 

@@ -1,6 +1,6 @@
 #pragma once
 /// @file output_folder.hpp
-/// The folder a command writes (--out), made safe (DESIGN 7a, issue 19):
+/// The folder a command writes (--out), made safe (docs/design.md#output-folders-and-failures):
 /// - the path is normalised ("DIR/" is DIR); "", ".", "..", "/" are refused (exit 2);
 /// - it must not be, contain or lie inside an input of the same command, whether named on the
 ///   command line or inside a config (compared as real paths);

@@ -1,10 +1,10 @@
 #pragma once
 /// @file gait_problem.hpp
-/// The periodic gait as one NLP (DESIGN.md sec. 6): a single-support phase collocated with the
-/// pinned-chain dynamics (Mu 2.7), the touchdown at its end (rigid single or double impact with
-/// the impulses as variables, or impactless), optionally a double-support phase with both tips
-/// pinned and the tip force as a variable (2.11), and relabelling (2.38) back to the start.
-/// The initial guess is the polynomial gait of Mu ch. 3 sampled on the mesh.
+/// The periodic gait as one NLP (docs/design.md#the-optimal-control-problem): a single-support
+/// phase collocated with the pinned-chain dynamics (Mu 2.7), the touchdown at its end (rigid single
+/// or double impact with the impulses as variables, or impactless), optionally a double-support
+/// phase with both tips pinned and the tip force as a variable (2.11), and relabelling (2.38) back
+/// to the start. The initial guess is the polynomial gait of Mu ch. 3 sampled on the mesh.
 #include <optional>
 #include <string>
 #include <vector>

@@ -1,6 +1,7 @@
 #pragma once
 /// @file ground_contact.hpp
-/// Contact conditions at a collocation point v (point_layout.hpp) (DESIGN.md sec. 6); every row is
+/// Contact conditions at a collocation point v (point_layout.hpp;
+/// docs/design.md#the-optimal-control-problem); every row is
 /// >= 0 when its condition holds:
 ///   F_By, mu F_By - F_Bx, mu F_By + F_Bx                 (unilateral, Coulomb friction at B)
 ///   F_Ey, mu F_Ey - F_Ex, mu F_Ey + F_Ex                 (the same at E, DSP only)

@@ -1,8 +1,9 @@
 #pragma once
 /// @file initial_guess.hpp
-/// The initial guess a gait problem starts from (DESIGN.md sec. 6): the polynomial gait of Mu
-/// ch. 3 named by the config, its free hip parameters chosen by NLopt (hip_plan_search.hpp),
-/// sampled at 1 kHz; robots with straight legs start from straight_leg_guess.hpp.
+/// The initial guess a gait problem starts from (docs/design.md#the-optimal-control-problem): the
+/// polynomial gait of Mu ch. 3 named by the config, its free hip parameters chosen by NLopt
+/// (hip_plan_search.hpp), sampled at 1 kHz; robots with straight legs start from
+/// straight_leg_guess.hpp.
 #include "dynamics/model.hpp"
 #include "gaits/gait_params.hpp"
 #include "gaits/trajectory.hpp"

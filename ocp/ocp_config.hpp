@@ -1,7 +1,7 @@
 #pragma once
 /// @file ocp_config.hpp
 /// configs/ocp/*.yaml: which robot, which phases, the mesh and scheme, the cost, the constraint
-/// switches and the solver options (DESIGN.md sec. 4 and 6). Paths are relative to the file.
+/// switches and the solver options (docs/design.md#configs). Paths are relative to the file.
 #include <string>
 #include <vector>
 
@@ -47,13 +47,13 @@ struct MeshRefinement {
 /// stay; leads into a DSP), or impactless (zero swing-tip velocity at touchdown, Mu ch. 3).
 enum class ImpactModel { kSingle, kDouble, kImpactless };
 
-/// A designed strike (DESIGN.md sec. 6): the swing tip hits the ground with a downward normal
-/// velocity v_n = -ydot_e^- in [normal_min, normal_max] [m/s] and, optionally, at a strike
-/// angle alpha = cot^-1(xdot_e^- / ydot_e^-) in [angle_min, angle_max] [rad] (Mu ch. 5: the
-/// angle between the tip velocity and the -x axis, 0..pi, pi/2 straight down, > pi/2 moving
-/// forward; Xdot_e^- = -V_e (cos alpha, sin alpha)). Mu's Fig. 5.7 puts the flat part of the
-/// single-impact sector, |mu_S| < 0.5, at 50 deg < alpha < 140 deg for S_L < 1.35 m.
-/// A tip that lands at rest makes touchdown time go as the square root of a height error.
+/// A designed strike (docs/design.md#the-optimal-control-problem): the swing tip hits the ground
+/// with a downward normal velocity v_n = -ydot_e^- in [normal_min, normal_max] [m/s] and,
+/// optionally, at a strike angle alpha = cot^-1(xdot_e^- / ydot_e^-) in [angle_min, angle_max]
+/// [rad] (Mu ch. 5: the angle between the tip velocity and the -x axis, 0..pi, pi/2 straight down,
+/// > pi/2 moving forward; Xdot_e^- = -V_e (cos alpha, sin alpha)). Mu's Fig. 5.7 puts the flat part
+/// of the single-impact sector, |mu_S| < 0.5, at 50 deg < alpha < 140 deg for S_L < 1.35 m. A tip
+/// that lands at rest makes touchdown time go as the square root of a height error.
 struct StrikeDesign {
   bool enabled = false;
   double normal_min = 0, normal_max = 0;  ///< [m/s], 0 <= min <= max

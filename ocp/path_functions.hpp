@@ -25,9 +25,10 @@ class TorqueSquared : public PointFunction {
   double weight_;
 };
 
-/// Absolute mechanical work made smooth with slack variables (DESIGN.md sec. 6): each joint's
-/// power tau_j dq_j = s+_j - s-_j with s+, s- >= 0 (WorkSplit), and the running cost
-/// L = weight sum_j (s+_j + s-_j), which equals weight sum_j |tau_j dq_j| at the optimum.
+/// Absolute mechanical work made smooth with slack variables
+/// (docs/design.md#the-optimal-control-problem): each joint's power tau_j dq_j = s+_j - s-_j with
+/// s+, s- >= 0 (WorkSplit), and the running cost L = weight sum_j (s+_j + s-_j), which equals
+/// weight sum_j |tau_j dq_j| at the optimum.
 class AbsoluteWork : public PointFunction {
  public:
   AbsoluteWork(const PointLayout& point, double weight = 1.0) : point_(point), weight_(weight) {}

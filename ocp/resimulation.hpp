@@ -1,11 +1,11 @@
 #pragma once
 /// @file resimulation.hpp
 /// The accuracy of a collocated gait measured by an independent re-simulation of its torques
-/// (chain_simulation.hpp, adaptive RKF 7(8)) (DESIGN.md sec. 7, rung 3). The integrator shares
-/// nothing with the transcription but the dynamics functions, so the measured error is the
-/// collocation's discretisation error (Betts 2010, sec. 4.7; Kelly 2017, sec. 4): trapezoidal
-/// O(h^2), Hermite-Simpson O(h^4) at the end of the phase. Header-only, like chain_simulation.hpp:
-/// its users link Boost::boost.
+/// (chain_simulation.hpp, adaptive RKF 7(8)) (docs/design.md#the-verification-ladder, rung 3). The
+/// integrator shares nothing with the transcription but the dynamics functions, so the measured
+/// error is the collocation's discretisation error (Betts 2010, sec. 4.7; Kelly 2017, sec. 4):
+/// trapezoidal O(h^2), Hermite-Simpson O(h^4) at the end of the phase. Header-only, like
+/// chain_simulation.hpp: its users link Boost::boost.
 #include <algorithm>
 #include <functional>
 #include <utility>

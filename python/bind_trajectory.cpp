@@ -111,7 +111,8 @@ void bindTrajectory(py::module_& m) {
   m.def("write_trajectory", &writeFolder, py::arg("trajectory"), py::arg("robot"), py::arg("dir"),
         py::arg("rate_hz") = 1000.0,
         "Writes DIR/trajectory.csv and trajectory.json on the grid t_i = i / rate_hz and "
-        "DIR/summary.json with the metrics and the switch states (DESIGN.md sec. 5); returns "
+        "DIR/summary.json with the metrics and the switch states "
+        "(docs/design.md#the-export-contract); returns "
         "the number of samples.");
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 /// @file contact_dynamics.hpp
 /// The chain on rigid ground with each tip free, sticking or sliding (Hurmuzlu, Genot, Brogliato
-/// 2001, seed 001, sec. 3.3.1): the free-base equations of motion (floating_base_dynamics.hpp)
+/// 2001, sec. 3.3.1): the free-base equations of motion (floating_base_dynamics.hpp)
 ///   D_ext qddot + b = M_ext^T tau + J_H^T F_push + sum_tips (J_n^T N + J_t^T T),
 /// with, at a tip on the ground, the normal acceleration zero (N is its multiplier, HGB 10 with
 /// the contact kept), and tangentially either

@@ -1,8 +1,8 @@
 #pragma once
 /// @file contact_rules.hpp
-/// One failure rule on every ground (DESIGN.md sec. 7 item 4): the rigid walk (hybrid_walk.hpp)
-/// and the free-base walks (free_base_walk.hpp: impedance and LCP grounds) end a walk for the
-/// same reasons, named alike, with the same thresholds:
+/// One failure rule on every ground (docs/design.md#the-verification-ladder): the rigid walk
+/// (hybrid_walk.hpp) and the free-base walks (free_base_walk.hpp: impedance and LCP grounds) end a
+/// walk for the same reasons, named alike, with the same thresholds:
 ///   a fall       the hip below min_hip_height times the leg length, or the torso leaning more
 ///                than max_torso_lean from upright;
 ///   a slip       a tip on the ground moved along it by more than max_slip from where it was set

@@ -1,7 +1,7 @@
 #pragma once
 /// @file ground_model.hpp
 /// The three interchangeable grounds a walk can run on, so a scene models no more than it needs
-/// (Addi & Rodic 2010, seed 000): rigid ground with impact maps and located events
+/// (Addi & Rodic 2010): rigid ground with impact maps and located events
 /// (hybrid_walk.hpp); a compliant Hunt-Crossley ground integrated with a fixed explicit step
 /// (impedance_contact.hpp); and velocity-level time stepping with a Lemke LCP per step
 /// (lcp_contact_step.hpp). Friction always comes from the robot (Model::friction()).

@@ -1,7 +1,7 @@
 #pragma once
 /// @file hybrid_walk.hpp
-/// Event-driven simulation of walking on rigid ground (DESIGN.md sec. 2, sim). Each phase runs
-/// the chain with a free base under the contact modes of contact_dynamics.hpp: single support
+/// Event-driven simulation of walking on rigid ground (docs/design.md#architecture). Each phase
+/// runs the chain with a free base under the contact modes of contact_dynamics.hpp: single support
 /// with B sticking (Mu 2.7), touchdown located by root finding on the swing-tip height, the
 /// impact map with Coulomb friction (dynamics/frictional_impact.hpp; with every tip sticking it
 /// is Mu's 2.23-2.37), chosen by Mu's conditions (double impact when the trailing tip's impulse
@@ -10,14 +10,14 @@
 /// normal force reaches zero or the reference's double support ends, and relabelling (2.38)
 /// into the next step.
 ///
-/// Slip is measured, not fatal (seed 001 sec. 3.3.1): a tip left sliding by a sliding impact,
-/// or whose sticking force leaves the friction cone, slides with the force -mu N sgn(v_t) (held
-/// on the ground in the normal direction) until its tangential velocity crosses zero, when it
-/// sticks again where it has slid to (or slides on if the cone is still left). The dynamics of
-/// the chain do not depend on where its base is, so a slid B or E only moves the step's origin:
-/// the step advance is measured from B's start to E's final world position. A tip still sliding
-/// when the step ends carries its velocity into the next step (StepResult::stance_velocity).
-/// Failures follow contact_rules.hpp, the same on every ground.
+/// Slip is measured, not fatal (Hurmuzlu, Genot, Brogliato 2001, sec. 3.3.1): a tip left sliding
+/// by a sliding impact, or whose sticking force leaves the friction cone, slides with the force
+/// -mu N sgn(v_t) (held on the ground in the normal direction) until its tangential velocity
+/// crosses zero, when it sticks again where it has slid to (or slides on if the cone is still
+/// left). The dynamics of the chain do not depend on where its base is, so a slid B or E only
+/// moves the step's origin: the step advance is measured from B's start to E's final world
+/// position. A tip still sliding when the step ends carries its velocity into the next step
+/// (StepResult::stance_velocity). Failures follow contact_rules.hpp, the same on every ground.
 #include <functional>
 #include <limits>
 #include <optional>

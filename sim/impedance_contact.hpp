@@ -4,7 +4,7 @@
 /// LCP contact in Addi & Rodic (2010) sec. 4. Normal force of Hunt-Crossley type; their pad model
 /// (60) is the case exponent = 1 with damping = (3/2) alpha stiffness. Tangential force from a
 /// spring-damper to a sticking anchor with a Coulomb limit, their stick/slip law (62) with the
-/// normal force in place of the misprinted F_y (notes/hurmuzlu2001_addi2010.md A.1.6).
+/// normal force in place of the misprinted F_y (docs/derivations.md#impedance-ground).
 /// The anchor is state the caller carries between steps: see impedanceContactForce.
 
 namespace gaitopt::sim {

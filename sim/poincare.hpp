@@ -1,7 +1,7 @@
 #pragma once
 /// @file poincare.hpp
-/// Stability of the closed-loop walking cycle by its Poincare return map (Hurmuzlu et al.,
-/// seed 001): P maps the state at a section to the state one step later. A fixed point
+/// Stability of the closed-loop walking cycle by its Poincare return map (Hurmuzlu, Genot,
+/// Brogliato 2001): P maps the state at a section to the state one step later. A fixed point
 /// x* = P(x*) is a periodic gait; it is locally stable when every eigenvalue (multiplier) of
 /// dP/dx at x* lies inside the unit circle. The fixed point is found by iterating P (the closed
 /// loop contracts towards it) and the Jacobian by central differences.

@@ -1,8 +1,9 @@
 #pragma once
 /// @file reference.hpp
-/// An exported gait (trajectory CSV, DESIGN.md sec. 5) as the reference a controller tracks:
-/// one step, SSP then optionally DSP, read on the step clock (0 at every SSP start). Three
-/// choices make it survive timing errors (issue 14 item 1; DESIGN.md sec. 7 item 4):
+/// An exported gait (trajectory CSV, docs/design.md#the-export-contract) as the reference a
+/// controller tracks: one step, SSP then optionally DSP, read on the step clock (0 at every SSP
+/// start). Three choices make it survive timing errors (docs/design.md#the-verification-ladder,
+/// rung 4):
 ///  - Past the planned touchdown the SSP reference does not freeze: it goes on at the touchdown
 ///    rates, its touchdown accelerations faded out over 20 ms (reference.cpp says why), with the
 ///    swing tip's downward speed raised to at least `strike_velocity`. A gait

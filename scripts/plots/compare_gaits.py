@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Compares two gait result folders (DESIGN.md sec. 5): a markdown table and overlaid pictures.
+"""Compares two gait result folders (docs/design.md#the-export-contract): a markdown table and
+overlaid pictures.
 
 Usage: compare_gaits.py A_DIR B_DIR [OUT.md | OUT_DIR]
 Without a third argument, prints the markdown table of the two summary.json files (columns A, B

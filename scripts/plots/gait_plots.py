@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Draws the pictures of a gait result folder (DESIGN.md sec. 5), after Mu (2004) ch. 3.
+"""Draws the pictures of a gait result folder (docs/design.md#the-export-contract), after
+Mu (2004) ch. 3.
 
 Usage: gait_plots.py RESULT_DIR
 Reads RESULT_DIR/trajectory.csv (one step, stance tip B at the origin) and RESULT_DIR/summary.json

@@ -7,7 +7,8 @@ Reads RESULT_DIR/impact_map.csv and writes RESULT_DIR/impact_map.png, printing i
   bottom row  impact type over (sigma, alpha) at S_L 1.0 m and 1.8 m (Fig. 5.3c-d); |mu_S| contours
               in the single region (Fig. 5.7) and |mu_L|, |mu_R| contours in the double region
               (Fig. 5.4), both over (S_L, alpha) at one sigma
-S_L is Mu's step length, twice the tip distance `step_length` of the CSV (DESIGN.md sec. 3).
+S_L is Mu's step length, twice the tip distance `step_length` of the CSV
+(docs/design.md#conventions).
 A panel whose axes have fewer than two grid values is left out. A missing file or column, or a
 malformed value, ends the script with exit code 1.
 """

@@ -127,7 +127,7 @@ def check_increasing(path, name, values):
 
 
 # ---------------------------------------------------------------------------------------------
-# trajectory.csv (DESIGN.md sec. 5)
+# trajectory.csv (docs/design.md#the-export-contract)
 
 
 class Trajectory:

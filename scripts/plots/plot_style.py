@@ -22,7 +22,7 @@ RC = {
     "savefig.dpi": DPI,
 }
 
-# Contact tips (DESIGN.md sec. 5): B the stance/trailing tip, E the swing/leading tip.
+# Contact tips (docs/design.md#conventions): B the stance/trailing tip, E the swing/leading tip.
 TIP_B = "tab:blue"
 TIP_E = "tab:orange"
 ZMP = "tab:red"

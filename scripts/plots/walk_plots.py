@@ -38,8 +38,8 @@ STEPS_COLUMNS = ["step", "ok", "impact", "ssp_duration", "dsp_duration", "advanc
                  "max_tracking_error", "failure"]
 STICK_COLUMNS = ["t", "step", "link", "x0", "y0", "x1", "y1"]
 SUMMARY_STRINGS = ["robot", "reference", "controller", "ground", "failure"]
-# Link and joint names of the five-link robot (DESIGN.md: tau0 stance ankle, tau1..tau4 knee,
-# hip, hip, knee as Mu 2.39); other robots get numbered names.
+# Link and joint names of the five-link robot (docs/design.md#conventions: tau0 stance ankle,
+# tau1..tau4 knee, hip, hip, knee as Mu 2.39); other robots get numbered names.
 FIVE_LINKS = ["stance shank", "stance thigh", "torso", "swing thigh", "swing shank"]
 FIVE_JOINTS = ["stance ankle", "stance knee", "stance hip", "swing hip", "swing knee"]
 # Single-support stick frames drawn over a whole walk (a dozen per phase for a short walk).

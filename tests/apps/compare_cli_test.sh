@@ -4,7 +4,7 @@
 # Usage: compare_cli_test.sh <path to gaitopt binary> <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
-"$PY" -c "import matplotlib" 2>/dev/null || { echo "SKIP: no matplotlib"; exit 0; }
+"$PY" -c "import matplotlib" 2>/dev/null || skip "no matplotlib"
 cd "$ROOT" || fail "no repo root $ROOT"
 
 # (a) the polynomial gait against itself at a lower rate: the table's B/A column is 1.

@@ -3,12 +3,12 @@
 # DSP rows, B without): the markdown table (a known row, B/A left empty for a tiny A and for
 # differing signs), the OUT.md mode, the OUT_DIR mode (the files it prints and writes), and
 # "error: <file>: ..." with exit code 1 for a missing folder, file, column and key.
-# Needs Debian's python3-matplotlib; skips (exit 0) without it.
+# Needs Debian's python3-matplotlib; skips (ctest: skipped) without it.
 # Usage: compare_plots_test.sh <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" root "$@"  # PY, TMP (removed on exit), fail
 SCRIPT="$ROOT/scripts/plots/compare_gaits.py"
-"$PY" -c "import matplotlib, numpy" 2>/dev/null || { echo "SKIP: no matplotlib/numpy"; exit 0; }
+"$PY" -c "import matplotlib, numpy" 2>/dev/null || skip "no matplotlib/numpy"
 
 # Runs compare_gaits.py with the given arguments, keeping stdout, stderr and the exit code.
 compare() {

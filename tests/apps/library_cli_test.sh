@@ -45,7 +45,7 @@ PY
 }
 
 if [[ $MODE == mpi ]]; then
-  command -v mpirun >/dev/null || { echo "SKIP: no mpirun"; exit 0; }
+  command -v mpirun >/dev/null || skip "no mpirun"
   run library --config "$TMP/tiny.yaml" --out "$TMP/one" --jobs 2 --quiet
   [[ $RC -eq 0 ]] || fail "(mpi) one-process run exited $RC: $(cat "$TMP/err")"
   mpirun --allow-run-as-root --oversubscribe -np 2 "$GAITOPT" library --config "$TMP/tiny.yaml" \

@@ -3,12 +3,12 @@
 # 3 x 2 x 1 grid with a failed point (two panels), for a 2 x 1 x 3 grid (CoT vs slope), for an
 # empty index, and "error: <file>: ..." with exit code 2 for a missing folder, a missing or
 # malformed index.json and a point off the grid.
-# Needs Debian's python3-matplotlib; skips (exit 0) without it.
+# Needs Debian's python3-matplotlib; skips (ctest: skipped) without it.
 # Usage: library_plots_test.sh <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" root "$@"  # PY, TMP (removed on exit), fail
 SCRIPT="$ROOT/scripts/plots/library_plots.py"
-"$PY" -c "import matplotlib, numpy" 2>/dev/null || { echo "SKIP: no matplotlib/numpy"; exit 0; }
+"$PY" -c "import matplotlib, numpy" 2>/dev/null || skip "no matplotlib/numpy"
 
 plot() {
   "$PY" "$SCRIPT" "$@" >"$TMP/out" 2>"$TMP/err"

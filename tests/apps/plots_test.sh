@@ -3,12 +3,12 @@
 # result folders: the pictures they print, and "error: <file>: ..." with exit code 1 for broken
 # inputs. Also checks that gait_plots.py, compare_gaits.py and impact_map.py report broken inputs
 # through plot_io the same way.
-# Needs Debian's python3-matplotlib; skips (exit 0) without it.
+# Needs Debian's python3-matplotlib; skips (ctest: skipped) without it.
 # Usage: plots_test.sh <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" root "$@"  # PY, TMP (removed on exit), fail
 PLOTS="$ROOT/scripts/plots"
-"$PY" -c "import matplotlib, numpy" 2>/dev/null || { echo "SKIP: no matplotlib/numpy"; exit 0; }
+"$PY" -c "import matplotlib, numpy" 2>/dev/null || skip "no matplotlib/numpy"
 
 # Runs a plotting script on a folder, keeping stdout, stderr and the exit code.
 plot() {
@@ -372,7 +372,7 @@ assert abs(g.zmp_margin().min() - g.s["min_zmp_margin"]) < 1e-9, g.zmp_margin().
 PY
 # (h) a gait folder on the fixed-rate grid: the touchdown's two rows and the end row come from
 # summary.json (phase_switches, step_end) and plot_io puts them back in time order, replacing
-# the grid rows at 0.6 s and 0.7 s (DESIGN.md sec. 5, gaits/switch_states.hpp).
+# the grid rows at 0.6 s and 0.7 s (docs/design.md#the-export-contract, gaits/switch_states.hpp).
 make_gait "$TMP/grid"
 (cd "$PLOTS" && "$PY" - "$TMP/grid" <<'PY') || fail "(h) switch rows from summary.json"
 import csv, json, sys

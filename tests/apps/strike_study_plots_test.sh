@@ -3,11 +3,11 @@
 # one controller (walks 0 .. 0.5 N s, fails at nominal under mass error, the failure read from
 # its sweep CSV), a strike variant whose solve failed; the table's rows, the CSV's failures and
 # the picture, and "error: <file>: ..." for a broken summary.
-# Needs Debian's python3-matplotlib; skips (exit 0) without it.
+# Needs Debian's python3-matplotlib; skips (ctest: skipped) without it.
 # Usage: strike_study_plots_test.sh <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" root "$@"  # PY, TMP (removed on exit), fail
-"$PY" -c "import matplotlib, numpy" 2>/dev/null || { echo "SKIP: no matplotlib/numpy"; exit 0; }
+"$PY" -c "import matplotlib, numpy" 2>/dev/null || skip "no matplotlib/numpy"
 chart="$ROOT/scripts/plots/strike_study_chart.py"
 work="$TMP/work"
 mkdir -p "$work/v0_f0.15_z0.06" "$work/v0_f0.15_z0.06_computed_torque"

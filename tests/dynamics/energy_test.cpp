@@ -1,6 +1,6 @@
-// Free motion with zero torque conserves K + P (DESIGN.md sec. 7, rung 1), on level ground and
-// on a slope. Integrated with an adaptive 7(8) Runge-Kutta-Fehlberg scheme from Boost.Odeint at
-// tolerance 1e-13.
+// Free motion with zero torque conserves K + P (docs/design.md#the-verification-ladder, rung 1), on
+// level ground and on a slope. Integrated with an adaptive 7(8) Runge-Kutta-Fehlberg scheme from
+// Boost.Odeint at tolerance 1e-13.
 #include <gtest/gtest.h>
 
 #include <vector>

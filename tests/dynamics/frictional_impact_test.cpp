@@ -153,8 +153,9 @@ INSTANTIATE_TEST_SUITE_P(AllRobots, FrictionalImpactTest, ::testing::ValuesIn(al
 INSTANTIATE_TEST_SUITE_P(DoubleImpactRobots, FrictionalDoubleImpactTest,
                          ::testing::Values("mu2004_five_link", "three_link", "compass_gait"));
 
-/// Mu's reference impact (notes/mu2004.md sec. 7; impact_test.cpp): S_L = 0.7 m, a vertical
-/// strike at 1 m/s. The sticking single impact needs |P_x / P_y| = 0.115 (1.3560 / 11.7933).
+/// Mu's reference impact, S_L = 0.7 m, a vertical strike at 1 m/s
+/// (docs/derivations.md#impact-reference-values; impact_test.cpp). The sticking single impact
+/// needs |P_x / P_y| = 0.115 (1.3560 / 11.7933).
 class MuSlidingImpact : public ::testing::Test {
  protected:
   VecD theta_ = (VecD(5) << 23.3079, 8.3079, 0, 155.9782, 170.9782).finished() * kDeg;

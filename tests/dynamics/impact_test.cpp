@@ -1,5 +1,5 @@
 // Rigid impact maps (Mu 2.23-2.37) against the floating-base impulse solution, conservation
-// laws, and the reference numbers of notes/mu2004.md sec. 7.
+// laws, and the reference numbers of docs/derivations.md#impact-reference-values.
 #include <gtest/gtest.h>
 
 #include "dynamics/energy.hpp"
@@ -126,9 +126,9 @@ TEST_P(ImpactTest, ZeroTipVelocityGivesNoImpulse) {
 
 INSTANTIATE_TEST_SUITE_P(AllRobots, ImpactTest, ::testing::ValuesIn(allRobots()));
 
-/// notes/mu2004.md sec. 7: S_L = 0.7 m, sigma = 15 deg, alpha = 90 deg, V_e = 1 m/s,
-/// I_i = 0.033 kg m^2. Impulses depend on Xdot_e^- only, so any dtheta^- with that tip velocity
-/// serves; we take the Euclidean minimum-norm one.
+/// Mu's reference impact, S_L = 0.7 m, sigma = 15 deg, alpha = 90 deg, V_e = 1 m/s,
+/// I_i = 0.033 kg m^2 (docs/derivations.md#impact-reference-values). Impulses depend on Xdot_e^-
+/// only, so any dtheta^- with that tip velocity serves; we take the Euclidean minimum-norm one.
 class MuReferenceImpact : public ::testing::Test {
  protected:
   Model model_ = loadNamed("mu2004_five_link");
@@ -156,7 +156,7 @@ TEST_F(MuReferenceImpact, DoubleImpactImpulses) {
   const VecD expected = (VecD(5) << -1.1926, -1.1881, 2.4789, -8.5592, 5.0088).finished();
   EXPECT_LT((delta - expected).cwiseAbs().maxCoeff(), 2e-3);
   EXPECT_FALSE(r.unilateral_ok);  // P_ly < 0: not a valid double impact
-  // The energy lost does not depend on the null-space part of dtheta^- (notes: 22.889 -> 16.489).
+  // The energy lost does not depend on the null-space part of dtheta^- (6.401 J).
   EXPECT_NEAR(dynamics::kineticEnergy<double>(model_, theta_, dtheta_) -
                   dynamics::kineticEnergy<double>(model_, theta_, r.dtheta_plus),
               22.889 - 16.489, 2e-3);

@@ -1,5 +1,6 @@
 // Numbers of the five-link model against the values worked out from Mu's Table 3.1
-// (notes/mu2004.md sec. 2.2 and sec. 9 fact 7, I_i = 0.033 kg m^2 for every link).
+// (docs/derivations.md#link-inertias, I_i = 0.033 kg m^2 for every link, and
+// docs/derivations.md#the-initial-state).
 #include <numbers>
 
 #include <gtest/gtest.h>

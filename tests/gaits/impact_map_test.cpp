@@ -1,5 +1,5 @@
 // The impact-type map of Mu (2004) sec. 5.3: parallel sweep, grid checks, and the region
-// statements of the thesis (Figs. 5.2, 5.3, 5.5, 5.7; notes/mu2004.md sec. 3.9 and 7).
+// statements of the thesis (Figs. 5.2, 5.3, 5.5, 5.7; docs/derivations.md#impact-regions).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -88,7 +88,7 @@ TEST_F(ImpactMapTest, ShortStepsGiveOnlySingleImpactAtSigma15) {
 
 TEST_F(ImpactMapTest, LongerStepsTurnSingleIntoDoubleNearMusBoundary) {
   // Fig. 5.3(a), sigma 15, alpha 90: single below S_L ~1.4 m, double at long steps, with the
-  // 'both may occur' band of Fig. 5.2 between them (notes sec. 7: '.' at S_L 1.4-1.6).
+  // 'both may occur' band of Fig. 5.2 between them (docs/derivations.md#impact-regions).
   const auto map = gaits::sweepImpactMap(model_, grid({0.025, 1.0, 40}, one(15), one(90)), 1);
   const auto changes = gaits::typeChangesAlong(map, MapAxis::kStepLength, {0, 0, 0});
   ASSERT_EQ(changes.size(), 2u);
@@ -146,8 +146,9 @@ TEST_F(ImpactMapTest, ShortStepDoubleRegionGrowsWithKneeBias) {
 }
 
 TEST_F(ImpactMapTest, SingleImpactFrictionRatioIsModerateInTheFlatRegion) {
-  // Fig. 5.7: for 50 < alpha < 140 deg and S_L <= 1.35 m, |mu_S| stays under ~0.5 (notes sec. 7
-  // reconstruction: <= 0.6); for alpha > 140 deg and S_L < 0.5 m it rises sharply (sigma >= 20).
+  // Fig. 5.7: for 50 < alpha < 140 deg and S_L <= 1.35 m, |mu_S| stays under ~0.5 (here at
+  // most 0.58, docs/derivations.md#impact-regions); for alpha > 140 deg and S_L < 0.5 m it rises
+  // sharply (sigma >= 20).
   for (double sigma : {1.0, 20.0, 40.0, 60.0}) {
     const auto flat =
         gaits::sweepImpactMap(model_, grid({0.05, 0.675, 26}, one(sigma), {55, 135, 17}), 1);

@@ -1,6 +1,6 @@
 // The pre-impact state of Mu (2004) sec. 5.3 and one point of the contact-event study: geometry
-// to rounding, the reference cases of notes/mu2004.md sec. 7, and the refined criterion against
-// sign conditions recomputed from the independent floating-base impulse problem.
+// to rounding, the reference cases of docs/derivations.md#impact-reference-values, and the refined
+// criterion against sign conditions recomputed from the independent floating-base impulse problem.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -52,7 +52,8 @@ TEST_F(ImpactPostureTest, SwingTipLandsAtTheStepWithTheRequestedVelocity) {
 }
 
 TEST_F(ImpactPostureTest, ReproducesMuReferencePosture) {
-  // notes sec. 7: S_L 0.7 m, sigma 15 deg -> theta in degrees, hip (0.175, 0.60374) m.
+  // S_L 0.7 m, sigma 15 deg -> theta in degrees, hip (0.175, 0.60374) m
+  // (docs/derivations.md#impact-reference-values).
   const auto s = gaits::impactPosture(model_, {0.35, 15 * kDeg, 90 * kDeg, 1.0});
   const VecD expected = (VecD(5) << 23.3079, 8.3079, 0, 155.9782, 170.9782).finished();
   EXPECT_LT((s.theta / kDeg - expected).cwiseAbs().maxCoeff(), 1e-4);
@@ -60,7 +61,8 @@ TEST_F(ImpactPostureTest, ReproducesMuReferencePosture) {
 }
 
 TEST_F(ImpactPostureTest, MuReferenceCaseIsASingleImpact) {
-  // notes sec. 7: P_l = (-1.6583, -3.6015) (P_ly < 0), ydot_b+ = 0.25 > 0, mu_S = -0.115.
+  // P_l = (-1.6583, -3.6015) (P_ly < 0), ydot_b+ = 0.25 > 0, mu_S = -0.115
+  // (docs/derivations.md#impact-reference-values).
   const auto pt = gaits::evaluateImpactPoint(model_, {0.35, 15 * kDeg, 90 * kDeg, 1.0});
   EXPECT_EQ(pt.type, ImpactType::kSingle);
   EXPECT_NEAR(pt.double_model.impulse_trailing(0), -1.6583, 2e-3);
@@ -70,8 +72,8 @@ TEST_F(ImpactPostureTest, MuReferenceCaseIsASingleImpact) {
 }
 
 TEST_F(ImpactPostureTest, MuLongStepCaseIsADoubleImpact) {
-  // notes sec. 7: S_L 1.8 m, sigma 10 deg, alpha 100 deg -> P_l = (2.8726, 2.1938),
-  // P_r = (-6.9136, 8.9482), ydot_b+ = -0.0628.
+  // S_L 1.8 m, sigma 10 deg, alpha 100 deg -> P_l = (2.8726, 2.1938), P_r = (-6.9136, 8.9482),
+  // ydot_b+ = -0.0628 (docs/derivations.md#impact-reference-values).
   const auto pt = gaits::evaluateImpactPoint(model_, {0.9, 10 * kDeg, 100 * kDeg, 1.0});
   EXPECT_EQ(pt.type, ImpactType::kDouble);
   EXPECT_NEAR(pt.double_model.impulse_trailing(0), 2.8726, 2e-3);

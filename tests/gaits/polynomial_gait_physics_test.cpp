@@ -64,7 +64,8 @@ TEST_F(MuGaitPhysics, HipPlanSearchFindsAWideDspMargin) {
   // Mu: the ZMP stays near the centre of the DSP support; the best margin is half the support.
   EXPECT_GT(search_->margin, 0.35 * params_->step_length);
   EXPECT_LE(search_->margin, 0.5 * params_->step_length + 1e-9);
-  // The optimum is at least as good as the hand-picked plans of notes/mu2004.md sec. 7.
+  // The optimum is at least as good as the hand-picked plan of
+  // docs/derivations.md#the-polynomial-gait.
   const gaits::PolynomialGait by_hand(*model_, *params_, {0.3, 0.3, 0.17});
   EXPECT_GE(search_->margin, gaits::dspStabilityMargin(by_hand, *model_, 41) - 1e-9);
 }

@@ -29,8 +29,8 @@ class PolynomialGaitTest : public ::testing::Test {
 };
 
 TEST_F(PolynomialGaitTest, SwingTipMatchesMuCoefficients) {
-  // notes/mu2004.md sec. 4.2: a = (-0.35, 0, 5.8333, -6.4815), b = (0, 0, 2.2222, -7.4074,
-  // 6.1728, 0), T_m = 0.3 s for S_L = 0.70 m, T_S = 0.6 s, H_m = 0.05 m.
+  // docs/derivations.md#the-polynomial-gait: a = (-0.35, 0, 5.8333, -6.4815), b = (0, 0, 2.2222,
+  // -7.4074, 6.1728, 0), T_m = 0.3 s for S_L = 0.70 m, T_S = 0.6 s, H_m = 0.05 m.
   const Eigen::Vector4d a(-0.35, 0, 5.833333333, -6.481481481);
   EXPECT_LT((gait_.swingX().coefficients() - a).cwiseAbs().maxCoeff(), 1e-8);
   Eigen::VectorXd b(6);
@@ -72,7 +72,7 @@ TEST_F(PolynomialGaitTest, BoundaryConditionsHoldToMachinePrecision) {
 }
 
 TEST_F(PolynomialGaitTest, InverseKinematicsReproducesTable41) {
-  // notes/mu2004.md sec. 9 fact 22: hip (-0.15, 0.59), swing tip (-0.36, 0).
+  // docs/derivations.md#the-initial-state: hip (-0.15, 0.59), swing tip (-0.36, 0).
   gaits::PointMotion hip{{-0.15, 0.59}, {}, {}};
   gaits::PointMotion tip{{-0.36 + 0.15, -0.59}, {}, {}};
   const auto stance =

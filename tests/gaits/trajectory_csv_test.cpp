@@ -1,5 +1,5 @@
-// trajectory.csv (DESIGN.md sec. 5): exact round trip, derived columns, and one error per kind
-// of malformed file, each naming the file, the line and the column.
+// trajectory.csv (docs/design.md#the-export-contract): exact round trip, derived columns, and one
+// error per kind of malformed file, each naming the file, the line and the column.
 #include <unistd.h>
 
 #include <cmath>

@@ -1,4 +1,5 @@
-// The safe output folder of DESIGN 7a: what may be replaced, inputs, paths, locks, leftovers.
+// The safe output folder of docs/design.md#output-folders-and-failures: what may be replaced,
+// inputs, paths, locks, leftovers.
 #include "io/output_folder.hpp"
 
 #include <sys/stat.h>

@@ -5,7 +5,7 @@
 # moved tool then optimises a shipped config with its pictures, walks the result on the shipped
 # rigid ground with the robot its summary.json names, and makes the report page with the GIF; the
 # installed Python module imports from the moved prefix and solves RABBIT.
-# Needs root for the mount namespace: exits 77 (ctest's skip) where it cannot make one.
+# Needs root for the mount namespace: skipped (ctest counts it) where it cannot make one.
 # Usage: relocated_install_test.sh <build dir> <repo root> <gaitopt binary>
 set -u
 [[ $# -eq 3 ]] || { echo "usage: $0 <build dir> <repo root> <gaitopt binary>" >&2; exit 1; }
@@ -13,10 +13,8 @@ BUILD=$1
 ROOT=$2
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$ROOT/tests/apps/cli_test_lib.sh" gaitopt "$3" "$ROOT"
-if ! unshare --mount --propagation private true 2>/dev/null; then
-  echo "SKIP: cannot make a mount namespace here (not root?)"
-  exit 77
-fi
+unshare --mount --propagation private true 2>/dev/null ||
+  skip "cannot make a mount namespace here (not root?)"
 cmake --install "$BUILD" --prefix "$TMP/prefix" >"$TMP/install.log" 2>&1 ||
   fail "cmake --install: $(tail -5 "$TMP/install.log")"
 mv "$TMP/prefix" "$TMP/moved"

@@ -3,7 +3,7 @@
 /// bias and tip Jacobians from the library (dynamics/floating_base_dynamics.hpp), assembled from
 /// CoM Jacobians by virtual work, not from Mu's closed forms, so it is an independent check of
 /// them. Contacts at B and E enter through their Jacobians and are solved as KKT systems
-/// (notes/mu2004.md sec. 3.5).
+/// (docs/derivations.md#how-they-were-computed).
 #include <utility>
 
 #include <Eigen/Dense>
