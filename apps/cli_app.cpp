@@ -3,6 +3,7 @@
 #include <string>
 
 #include "apps/compare_command.hpp"
+#include "apps/export_urdf_command.hpp"
 #include "apps/impact_map_command.hpp"
 #include "apps/inspect_command.hpp"
 #include "apps/interpolate_command.hpp"
@@ -32,6 +33,7 @@ void configureCli(CLI::App& app) {
   app.require_subcommand(1);
   app.failure_message(failureMessage);
   registerInspectCommand(app);
+  registerExportUrdfCommand(app);
   registerPolyCommand(app);
   registerOptimizeCommand(app);
   registerImpactMapCommand(app);

@@ -39,7 +39,8 @@ void addScenarioOptions(CLI::App* cmd, sim::ScenarioSettings& o) {
       ->check(CLI::IsMember({"computed_torque", "sliding_mode", "mu_sliding_mode", "hzd"}))
       ->capture_default_str();
   cmd->add_option("--ground", o.ground,
-                  "rigid, impedance, lcp (configs/grounds/NAME.yaml) or a ground YAML")
+                  "rigid, impedance, lcp, dart (the DART engine; configs/grounds/NAME.yaml) or a "
+                  "ground YAML")
       ->capture_default_str();
   cmd->add_option("--steps", o.steps, "Steps to walk")
       ->check(CLI::Range(1, 100000))

@@ -45,3 +45,12 @@ if(GAITOPT_PYTHON)
     set(GAITOPT_PYTHON OFF)
   endif()
 endif()
+if(GAITOPT_DART)
+  # The URDF reader (dart::utils::DartLoader) comes with the utils-urdf component.
+  find_package(DART 6.12 CONFIG COMPONENTS utils-urdf)
+  if(NOT DART_FOUND)
+    message(WARNING "DART not found (apt-get install libdart-dev libdart-utils-urdf-dev): \
+building without it")
+    set(GAITOPT_DART OFF)
+  endif()
+endif()

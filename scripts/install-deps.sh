@@ -18,13 +18,15 @@ packages=(
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   python3 python3-matplotlib python3-numpy python3-pil
 )
-# What the tests, benchmarks, bindings, report test and MPI libraries add (make test, make build).
+# What the tests, benchmarks, bindings, report test, MPI libraries and the DART plant add (make
+# test, make build). libdart-dev pulls assimp, FCL, Bullet and all of Boost: the demo goes without.
 full_packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libboost-dev
   python3-dev pybind11-dev python3-pytest
   chromium
   valgrind
   openmpi-bin libopenmpi-dev
+  libdart-dev libdart-utils-urdf-dev python3-dartpy
 )
 fuzz_packages=(clang libclang-rt-14-dev)
 

@@ -42,14 +42,20 @@ LcpGround lcp(const YamlReader& root) {
   return LcpGround{timeStep(root)};
 }
 
+DartGround dart(const YamlReader& root) {
+  root.allowOnly({"model", "time_step"});
+  return DartGround{timeStep(root)};
+}
+
 }  // namespace
 
 GroundModel loadGround(const std::string& yaml_path) {
   const auto root = YamlReader::fromFile(yaml_path);
-  const std::string model = root.choice("model", {"rigid", "impedance", "lcp"});
+  const std::string model = root.choice("model", {"rigid", "impedance", "lcp", "dart"});
   if (model == "rigid") return rigid(root);
   if (model == "impedance") return impedance(root);
-  return lcp(root);
+  if (model == "lcp") return lcp(root);
+  return dart(root);
 }
 
 }  // namespace gaitopt::sim

@@ -1,7 +1,7 @@
 #pragma once
 /// @file ground_config.hpp
 /// Reads a ground file (configs/grounds/*.yaml) into a GroundModel with the project's strict
-/// reader: `model` is rigid, impedance or lcp, each with its own keys; unknown or missing keys and
+/// reader: `model` is rigid, impedance, lcp or dart, each with its own keys; unknown or missing keys and
 /// out-of-range values are ConfigErrors naming the file, key and line.
 #include <string>
 

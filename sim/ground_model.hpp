@@ -1,10 +1,11 @@
 #pragma once
 /// @file ground_model.hpp
-/// The three interchangeable grounds a walk can run on, so a scene models no more than it needs
+/// The interchangeable grounds a walk can run on, so a scene models no more than it needs
 /// (Addi & Rodic 2010): rigid ground with impact maps and located events
 /// (hybrid_walk.hpp); a compliant Hunt-Crossley ground integrated with a fixed explicit step
 /// (impedance_contact.hpp); and velocity-level time stepping with a Lemke LCP per step
-/// (lcp_contact_step.hpp). Friction always comes from the robot (Model::friction()).
+/// (lcp_contact_step.hpp); and DART, another engine with feet as bodies (dart_walk.hpp).
+/// Friction always comes from the robot (Model::friction()).
 #include <string>
 #include <variant>
 
@@ -30,9 +31,14 @@ struct LcpGround {
   double time_step = 1e-3;  ///< [s]
 };
 
-using GroundModel = std::variant<RigidGround, CompliantGround, LcpGround>;
+/// The DART physics engine as the plant (dart_walk.hpp): its own contact solver and feet.
+struct DartGround {
+  double time_step = 1e-3;  ///< DART's step, and the controller's period [s]
+};
 
-/// "rigid", "impedance" or "lcp".
+using GroundModel = std::variant<RigidGround, CompliantGround, LcpGround, DartGround>;
+
+/// "rigid", "impedance", "lcp" or "dart".
 std::string groundName(const GroundModel& ground);
 
 }  // namespace gaitopt::sim

@@ -10,7 +10,7 @@ namespace gaitopt::sim {
 
 namespace {
 bool isBuiltinGround(const std::string& ground) {
-  return ground == "rigid" || ground == "impedance" || ground == "lcp";
+  return ground == "rigid" || ground == "impedance" || ground == "lcp" || ground == "dart";
 }
 }  // namespace
 

@@ -3,6 +3,7 @@
 #include <type_traits>
 
 #include "sim/compliant_walk.hpp"
+#include "sim/dart_walk.hpp"
 #include "sim/lcp_walk.hpp"
 
 namespace gaitopt::sim {
@@ -13,14 +14,15 @@ std::string groundName(const GroundModel& ground) {
         using G = std::decay_t<decltype(g)>;
         if constexpr (std::is_same_v<G, RigidGround>) return "rigid";
         if constexpr (std::is_same_v<G, CompliantGround>) return "impedance";
-        return "lcp";
+        if constexpr (std::is_same_v<G, LcpGround>) return "lcp";
+        return "dart";
       },
       ground);
 }
 
-WalkResult walk(const dynamics::Model& plant, const Controller& controller,
-                const Reference& ref, const GroundModel& ground, const WalkPlan& plan,
-                const WalkLog& log, const VecD& theta0, const VecD& dtheta0) {
+WalkResult walk(const dynamics::Model& plant, const Controller& controller, const Reference& ref,
+                const GroundModel& ground, const WalkPlan& plan, const WalkLog& log,
+                const VecD& theta0, const VecD& dtheta0) {
   return std::visit(
       [&](const auto& g) {
         using G = std::decay_t<decltype(g)>;
@@ -29,8 +31,10 @@ WalkResult walk(const dynamics::Model& plant, const Controller& controller,
                               dtheta0);
         else if constexpr (std::is_same_v<G, CompliantGround>)
           return walkCompliant(plant, controller, ref, g, plan, log, theta0, dtheta0);
-        else
+        else if constexpr (std::is_same_v<G, LcpGround>)
           return walkLcp(plant, controller, ref, g, plan, log, theta0, dtheta0);
+        else
+          return walkDart(plant, controller, ref, g, plan, log, theta0, dtheta0);
       },
       ground);
 }

@@ -1,8 +1,8 @@
 #pragma once
 /// @file walk.hpp
-/// One entry point for a closed-loop walk on any of the three grounds of ground_model.hpp:
-/// rigid (hybrid_walk.hpp), compliant (compliant_walk.hpp) or time-stepping LCP
-/// (lcp_walk.hpp). All fill the same WalkResult and call the same WalkLog.
+/// One entry point for a closed-loop walk on any ground of ground_model.hpp: rigid
+/// (hybrid_walk.hpp), compliant (compliant_walk.hpp), time-stepping LCP (lcp_walk.hpp) or DART
+/// (dart_walk.hpp). All fill the same WalkResult and call the same WalkLog.
 #include "sim/ground_model.hpp"
 #include "sim/hybrid_walk.hpp"
 
