@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "apps/command_runner.hpp"
+#include "apps/option_checks.hpp"
 #include "config/config_error.hpp"
 #include "gaits/gait_summary.hpp"
 #include "gaits/grid_range.hpp"
@@ -23,6 +24,10 @@
 namespace gaitopt::apps {
 namespace {
 
+/// A point's job and its row kept in memory (map node, key, failure text): a few hundred bytes,
+/// rounded up.
+constexpr double kBytesPerPoint = 512;
+
 struct Sweep {
   const sim::SweepParameter* parameter;
   std::vector<double> values;
@@ -32,6 +37,11 @@ struct Sweep {
 struct Map {
   sim::MapParameter a, b;
   std::unique_ptr<sim::SweepFile> file;
+};
+
+struct Grids {
+  std::vector<Sweep> sweeps;
+  std::vector<Map> maps;
 };
 
 /// The parameter `name` and its range ("" or "=a:b:n"), checked against the scenario
@@ -54,10 +64,9 @@ std::pair<const sim::SweepParameter*, std::vector<double>> parseAxis(const std::
 }
 
 /// NAME or NAME=a:b:n.
-Sweep parseSweep(const std::string& text, const std::string& out_dir, const sim::Scenario& base) {
+Sweep parseSweep(const std::string& text, const sim::Scenario& base) {
   auto [p, values] = parseAxis(text, "--sweep", base);
-  return {p, std::move(values),
-          std::make_unique<sim::SweepFile>(out_dir + "/sweep_" + p->name + ".csv")};
+  return {p, std::move(values), nullptr};
 }
 
 /// The parameter's value at the nominal point (the robot's friction when the scenario keeps it).
@@ -68,8 +77,7 @@ double nominalValue(const sim::Scenario& base, const std::string& name,
 }
 
 /// A[=a:b:n],B[=c:d:m]: two different parameters, each with at least 2 increasing values.
-Map parseMap(const std::string& text, const std::string& out_dir, const sim::Scenario& base,
-             const dynamics::Model& model) {
+Map parseMap(const std::string& text, const sim::Scenario& base, const dynamics::Model& model) {
   const std::size_t comma = text.find(',');
   if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos)
     throw config::ConfigError("--map", text, 0, "expected two parameters, A[=a:b:n],B[=c:d:m]");
@@ -78,18 +86,45 @@ Map parseMap(const std::string& text, const std::string& out_dir, const sim::Sce
     const std::string part = axis == &m.a ? text.substr(0, comma) : text.substr(comma + 1);
     auto [p, values] = parseAxis(part, "--map", base);
     if (values.size() < 2 || values.front() >= values.back())
-      throw config::ConfigError("--map", p->name, 0,
+      throw config::ConfigError("--map", p->name(), 0,
                                 "a map axis needs at least 2 values, increasing (a < b, n >= 2)");
-    *axis = {p, std::move(values), nominalValue(base, p->name, model)};
+    *axis = {p, std::move(values), nominalValue(base, p->name(), model)};
   }
   if (m.a.parameter == m.b.parameter)
-    throw config::ConfigError("--map", m.a.parameter->name, 0,
+    throw config::ConfigError("--map", m.a.parameter->name(), 0,
                               "the same parameter twice; a map varies two different ones");
-  const std::string& a = m.a.parameter->name;
-  const std::string& b = m.b.parameter->name;
-  m.file = std::make_unique<sim::SweepFile>(out_dir + "/map_" + a + "_" + b + ".csv",
-                                            std::vector<std::string>{a, b});
   return m;
+}
+
+/// Every --sweep and --map, checked before the folder exists (bad input leaves none behind). All
+/// their points are planned at once, so the memory budget holds for the sum.
+Grids parseGrids(const StabilityOptions& o, const sim::Scenario& base,
+                 const dynamics::Model& model) {
+  Grids g;
+  double points = 0;
+  for (const auto& text : o.sweeps) {
+    g.sweeps.push_back(parseSweep(text, base));
+    points += static_cast<double>(g.sweeps.back().values.size());
+    requireGridFits(points, kBytesPerPoint, "--sweep " + text);
+  }
+  for (const auto& text : o.maps) {
+    const Map& m = g.maps.emplace_back(parseMap(text, base, model));
+    points += static_cast<double>(m.a.values.size()) * static_cast<double>(m.b.values.size());
+    requireGridFits(points, kBytesPerPoint, "--map " + text);
+  }
+  return g;
+}
+
+/// Opens sweep_NAME.csv and map_A_B.csv in `out_dir` (rows of an earlier run are read back).
+void openFiles(Grids& grids, const std::string& out_dir) {
+  for (auto& s : grids.sweeps)
+    s.file = std::make_unique<sim::SweepFile>(out_dir + "/sweep_" + s.parameter->name() + ".csv");
+  for (auto& m : grids.maps) {
+    const std::string a = m.a.parameter->name();
+    const std::string b = m.b.parameter->name();
+    m.file = std::make_unique<sim::SweepFile>(out_dir + "/map_" + a + "_" + b + ".csv",
+                                              std::vector<std::string>{a, b});
+  }
 }
 
 void printInterval(const std::string& name, const nlohmann::ordered_json& j) {
@@ -129,27 +164,25 @@ void runStability(const StabilityOptions& o) {
   const sim::Reference reference(ref.step, ref.model);
   sim::Scenario base = sim::makeScenario(o.scenario);
   base.poincare = o.poincare;
+  Grids grids = parseGrids(o, base, ref.model);
   const io::ResumableFolder folder(o.out_dir, sim::scenarioInputs(o.scenario));
   const std::string& out_dir = folder.path();
   io::claimSettings(out_dir + "/settings.json", sim::sweepFolderSettings(o.scenario, ref, base));
-  std::vector<Sweep> sweeps;
-  for (const auto& text : o.sweeps) sweeps.push_back(parseSweep(text, out_dir, base));
-  std::vector<Map> maps;
-  for (const auto& text : o.maps) maps.push_back(parseMap(text, out_dir, base, ref.model));
+  openFiles(grids, out_dir);
   // Each job walks one point and appends its row: on disk as soon as it is done.
   std::vector<std::function<void()>> todo;
   std::size_t done_before = 0;
-  for (auto& s : sweeps)
+  for (auto& s : grids.sweeps)
     for (double v : s.values) {
       if (s.file->has(v)) {
         ++done_before;
         continue;
       }
       todo.push_back([&, v] {
-        s.file->append(sim::walkSweepPoint(ref.model, reference, base, s.parameter->name, v));
+        s.file->append(sim::walkSweepPoint(ref.model, reference, base, s.parameter->name(), v));
       });
     }
-  for (auto& m : maps)
+  for (auto& m : grids.maps)
     for (double va : m.a.values)
       for (double vb : m.b.values) {
         if (m.file->has(va, vb)) {
@@ -157,8 +190,8 @@ void runStability(const StabilityOptions& o) {
           continue;
         }
         todo.push_back([&, va, vb] {
-          m.file->append(sim::walkMapPoint(ref.model, reference, base, m.a.parameter->name, va,
-                                           m.b.parameter->name, vb));
+          m.file->append(sim::walkMapPoint(ref.model, reference, base, m.a.parameter->name(), va,
+                                           m.b.parameter->name(), vb));
         });
       }
   // No more workers than points: a sweep of 2 points starts 2 threads, not one per core.
@@ -172,14 +205,14 @@ void runStability(const StabilityOptions& o) {
       parallel::progressBar("stability", o.quiet));
   nlohmann::ordered_json summary{{"robot", ref.model.name()}};
   summary.update(sim::scenarioJson(o.scenario, base));
-  for (const auto& s : sweeps) {
-    const std::string& name = s.parameter->name;
+  for (const auto& s : grids.sweeps) {
+    const std::string name = s.parameter->name();
     summary["sweeps"][name] =
         sim::walkingInterval(*s.parameter, s.file->rows(), nominalValue(base, name, ref.model));
     printInterval(name, summary["sweeps"][name]);
   }
-  for (const auto& m : maps) {
-    const std::string name = m.a.parameter->name + "_" + m.b.parameter->name;
+  for (const auto& m : grids.maps) {
+    const std::string name = m.a.parameter->name() + "_" + m.b.parameter->name();
     summary["maps"][name] = sim::walkingRegion(m.a, m.b, m.file->rows());
     printRegion(name, summary["maps"][name]);
   }
@@ -197,8 +230,8 @@ void registerStabilityCommand(CLI::App& app) {
   addScenarioOptions(cmd, options->scenario);
   std::string names;
   for (const auto& p : sim::sweepParameters())
-    names += fmt::format("\n  {}{}: {} (default {}:{}:{}{})", p.name,
-                         p.unit.empty() ? "" : " [" + p.unit + "]", p.meaning, p.first, p.last,
+    names += fmt::format("\n  {}{}: {} (default {}:{}:{}{})", p.name(),
+                         p.unit().empty() ? "" : " [" + p.unit() + "]", p.meaning, p.first, p.last,
                          p.count, p.geometric ? ", geometric spacing" : "");
   cmd->add_option("--sweep", options->sweeps, "NAME or NAME=a:b:n, repeatable:" + names)
       ->option_text("NAME[=a:b:n]");
