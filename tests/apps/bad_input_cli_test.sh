@@ -136,4 +136,22 @@ echo '{"theta": [1e308, 1e308, 1e308, 1e308, 1e308]}' >"$TMP/turns.json"
 run inspect --robot "$ROBOT" --state "$TMP/turns.json"
 expect "state angle 1e308" 2 "turns.json: key 'theta\[0\]': expected a number in \[-12.5664, 12.5664\] \[rad\], got 1e\+308"
 
+# compare on malformed gait folders: exit 2 and one line naming the file (no traceback, no
+# second line from gaitopt).
+if "$PY" -c "import matplotlib" 2>/dev/null; then
+  for name in binary bad_json no_zmp; do cp -r "$TMP/ref" "$TMP/$name"; done
+  head -c 4096 "$GAITOPT" >"$TMP/binary/trajectory.csv"
+  echo '{"status": ' >"$TMP/bad_json/summary.json"
+  sed -i '1s/,zmp_x,/,zmp_y,/' "$TMP/no_zmp/trajectory.csv"
+  while IFS='|' read -r name pattern; do
+    run compare "$TMP/ref" "$TMP/$name" --out "$TMP/out_dir"
+    expect "compare $name" 2 "^error: $pattern"
+    [[ $(wc -l <"$TMP/err") -eq 1 ]] || fail "compare $name: not one line: $(cat "$TMP/err")"
+  done <<'CASES'
+binary|.*/binary/trajectory.csv: not UTF-8 text \(.*\): a binary file\?$
+bad_json|.*/bad_json/summary.json: not valid JSON
+no_zmp|.*/no_zmp/trajectory.csv: missing column 'zmp_x'$
+CASES
+fi
+
 echo "bad input CLI: all checks passed"
