@@ -24,6 +24,7 @@ int runReportingErrors(const std::function<void()>& body) {
     body();
     return io::kExitOk;
   } catch (const io::CommandError& e) {
+    if (*e.what() == '\0') return e.code();  // reported already
     return report(e.what(), e.code());
   } catch (const config::ConfigError& e) {
     return report(e.what(), io::kExitInputError);

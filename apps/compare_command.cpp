@@ -6,6 +6,7 @@
 
 #include "apps/command_runner.hpp"
 #include "config/config_error.hpp"
+#include "io/exit_code.hpp"
 #include "io/output_folder.hpp"
 #include "report/plot_script.hpp"
 
@@ -28,7 +29,10 @@ void runCompare(const CompareOptions& o) {
   requireResultFolder(o.b_dir);
   // The report is the script's whole job: without matplotlib there is nothing to write.
   out.write([&](const std::string& dir) {
-    if (!report::runPlotScript("compare_gaits.py", {o.a_dir, o.b_dir, dir}))
+    const int status = report::plotScriptStatus("compare_gaits.py", {o.a_dir, o.b_dir, dir});
+    if (status == report::kScriptInputError)  // a malformed folder; the script named the file
+      throw io::CommandError(io::kExitInputError, "");
+    if (status != 0)
       throw std::runtime_error("compare: scripts/plots/compare_gaits.py failed (see above)");
   });
   fmt::print("compare: wrote {}/comparison.md and the overlays\n", out.path());

@@ -134,7 +134,7 @@ void registerLibraryCommand(CLI::App& app) {
       ->default_val(0);
   cmd->add_flag("--retry-failed", o->retry_failed, "Solve again the points that failed before");
   cmd->add_option("--rate", o->rate_hz, "Sample rate of each point's trajectory.csv [Hz]")
-      ->check(CLI::Range(1.0, 1e6))
+      ->check(quantityRange(config::kSampleRate))
       ->default_val(250);
   cmd->add_flag("--plots", o->plots, "Pictures of every point (slow; the chart is always drawn)");
   cmd->add_flag("--quiet", o->quiet, "No line per point");

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -10,11 +11,19 @@
 namespace gaitopt::apps {
 namespace {
 
-/// "" for a finite number (or text that is not a number: CLI11's own conversion reports it).
-std::string finiteOrWhy(const std::string& text) {
+/// The number `text` holds; nullopt for text that is not a number, which CLI11's own conversion
+/// reports.
+std::optional<double> numberIn(const std::string& text) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
-  if (end == text.c_str() || *end != '\0' || std::isfinite(v)) return "";
+  if (end == text.c_str() || *end != '\0') return std::nullopt;
+  return v;
+}
+
+/// "" for a finite number.
+std::string finiteOrWhy(const std::string& text) {
+  const std::optional<double> v = numberIn(text);
+  if (!v || std::isfinite(*v)) return "";
   return fmt::format("'{}' is not a finite number", text);
 }
 
@@ -30,6 +39,17 @@ void addFiniteChecks(CLI::App& app) {
 
 void requireFiniteNumbers(CLI::App& app) {
   addFiniteChecks(app);
+}
+
+CLI::Validator quantityRange(const config::Quantity& quantity) {
+  return CLI::Validator(
+      [quantity](const std::string& text) {
+        // NaN and Inf in the words of every other number option.
+        if (std::string why = finiteOrWhy(text); !why.empty()) return why;
+        const std::optional<double> v = numberIn(text);
+        return v ? config::rangeError(quantity, *v) : std::string();
+      },
+      config::expectation(quantity), std::string(quantity.name));
 }
 
 void requireGridFits(double points, double bytes_per_point, const std::string& source) {

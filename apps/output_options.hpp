@@ -5,6 +5,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "apps/option_checks.hpp"
+
 namespace gaitopt::apps {
 
 struct OutputOptions {
@@ -18,7 +20,7 @@ inline void addOutputOptions(CLI::App* cmd, OutputOptions& o) {
   cmd->add_option("--out", o.out_dir, "Result folder (created)")->required()->option_text("DIR");
   cmd->add_option("--rate", o.rate_hz, "Sample rate of trajectory.csv [Hz]")
       ->check(CLI::Number)
-      ->check(CLI::Range(1.0, 1e6))
+      ->check(quantityRange(config::kSampleRate))
       ->default_val(1000);
   cmd->add_flag("!--no-plots", o.plots, "Skip the pictures");
 }

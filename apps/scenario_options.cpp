@@ -3,6 +3,8 @@
 #include <map>
 #include <string>
 
+#include "apps/option_checks.hpp"
+
 namespace gaitopt::apps {
 namespace {
 
@@ -43,7 +45,7 @@ void addScenarioOptions(CLI::App* cmd, sim::ScenarioSettings& o) {
                   "ground YAML")
       ->capture_default_str();
   cmd->add_option("--steps", o.steps, "Steps to walk")
-      ->check(CLI::Range(1, 100000))
+      ->check(quantityRange(config::kSteps))
       ->capture_default_str();
   cmd->add_option("--uncertainty-case", o.uncertainty_case,
                   "Plant parameters of Mu (2004) sec. 4.3: 1 exact, 2 (+40 % m, I; +10 % l, d), "
@@ -58,19 +60,19 @@ void addScenarioOptions(CLI::App* cmd, sim::ScenarioSettings& o) {
   cmd->add_option("--mass-error", o.mass_error,
                   "Relative error of the masses and inertias (replaces the case's; a sweep's "
                   "mass_error point)")
-      ->check(CLI::Range(-0.5, 2.0));
+      ->check(quantityRange(config::kMassError));
   cmd->add_option("--length-error", o.length_error,
                   "Relative error of the lengths and CoM offsets (replaces the case's)")
-      ->check(CLI::Range(-0.5, 0.5));
+      ->check(quantityRange(config::kLengthError));
   cmd->add_option("--friction", o.friction, "Ground friction coefficient (default: the robot's)")
-      ->check(CLI::Range(0.0, 10.0));
+      ->check(quantityRange(config::kFriction));
   cmd->add_option(
          "--push", o.push,
          "Horizontal impulse on the hip, a 0.1 s pulse from mid single support of step 2 [N s]")
-      ->check(CLI::Range(-1000.0, 1000.0))
+      ->check(quantityRange(config::kPush))
       ->capture_default_str();
   cmd->add_option("--gain-scale", o.gain_scale, "Controller bandwidth factor (kp by s^2, kd by s)")
-      ->check(CLI::Range(1e-3, 1e3))
+      ->check(quantityRange(config::kGainScale))
       ->capture_default_str();
   addContactOptions(cmd, o.rules);
 }

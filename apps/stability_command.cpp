@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "apps/command_runner.hpp"
+#include "apps/option_checks.hpp"
 #include "config/config_error.hpp"
 #include "gaits/gait_summary.hpp"
 #include "gaits/grid_range.hpp"
@@ -23,6 +24,10 @@
 namespace gaitopt::apps {
 namespace {
 
+/// A point's job and its row kept in memory (map node, key, failure text): a few hundred bytes,
+/// rounded up.
+constexpr double kBytesPerPoint = 512;
+
 struct Sweep {
   const sim::SweepParameter* parameter;
   std::vector<double> values;
@@ -32,6 +37,11 @@ struct Sweep {
 struct Map {
   sim::MapParameter a, b;
   std::unique_ptr<sim::SweepFile> file;
+};
+
+struct Grids {
+  std::vector<Sweep> sweeps;
+  std::vector<Map> maps;
 };
 
 /// The parameter `name` and its range ("" or "=a:b:n"), checked against the scenario
@@ -53,7 +63,7 @@ std::pair<const sim::SweepParameter*, std::vector<double>> parseAxis(const std::
   }
 }
 
-/// NAME or NAME=a:b:n (its row file is opened by openRowFiles).
+/// NAME or NAME=a:b:n (its row file is opened by openFiles).
 Sweep parseSweep(const std::string& text, const sim::Scenario& base) {
   auto [p, values] = parseAxis(text, "--sweep", base);
   return {p, std::move(values), nullptr};
@@ -76,23 +86,23 @@ Map parseMap(const std::string& text, const sim::Scenario& base, const dynamics:
     const std::string part = axis == &m.a ? text.substr(0, comma) : text.substr(comma + 1);
     auto [p, values] = parseAxis(part, "--map", base);
     if (values.size() < 2 || values.front() >= values.back())
-      throw config::ConfigError("--map", p->name, 0,
+      throw config::ConfigError("--map", p->name(), 0,
                                 "a map axis needs at least 2 values, increasing (a < b, n >= 2)");
-    *axis = {p, std::move(values), nominalValue(base, p->name, model)};
+    *axis = {p, std::move(values), nominalValue(base, p->name(), model)};
   }
   if (m.a.parameter == m.b.parameter)
-    throw config::ConfigError("--map", m.a.parameter->name, 0,
+    throw config::ConfigError("--map", m.a.parameter->name(), 0,
                               "the same parameter twice; a map varies two different ones");
   return m;
 }
 
 /// The grid the folder's rows belong to: with the scenario, it keys the folder (settings.json).
-nlohmann::ordered_json gridKey(const std::vector<Sweep>& sweeps, const std::vector<Map>& maps) {
+nlohmann::ordered_json gridKey(const Grids& g) {
   nlohmann::ordered_json key = {{"sweeps", nlohmann::ordered_json::array()},
                                 {"maps", nlohmann::ordered_json::array()}};
-  for (const auto& s : sweeps) key["sweeps"].push_back({s.parameter->name, s.values});
-  for (const auto& m : maps)
-    key["maps"].push_back({m.a.parameter->name, m.a.values, m.b.parameter->name, m.b.values});
+  for (const auto& s : g.sweeps) key["sweeps"].push_back({s.parameter->name(), s.values});
+  for (const auto& m : g.maps)
+    key["maps"].push_back({m.a.parameter->name(), m.a.values, m.b.parameter->name(), m.b.values});
   return key;
 }
 
@@ -102,19 +112,39 @@ void requireDistinct(const std::vector<Sweep>& sweeps) {
   for (std::size_t i = 0; i < sweeps.size(); ++i)
     for (std::size_t k = 0; k < i; ++k)
       if (sweeps[i].parameter == sweeps[k].parameter)
-        throw config::ConfigError("--sweep", sweeps[i].parameter->name, 0,
+        throw config::ConfigError("--sweep", sweeps[i].parameter->name(), 0,
                                   "the same parameter twice; give one range per parameter");
 }
 
-/// Opens (creating) each sweep's and map's row file, once the folder's settings are claimed: a
-/// refused run must not touch them (SweepFile cuts a torn last row).
-void openRowFiles(std::vector<Sweep>& sweeps, std::vector<Map>& maps, const std::string& dir) {
-  for (auto& s : sweeps)
-    s.file = std::make_unique<sim::SweepFile>(dir + "/sweep_" + s.parameter->name + ".csv");
-  for (auto& m : maps) {
-    const std::string& a = m.a.parameter->name;
-    const std::string& b = m.b.parameter->name;
-    m.file = std::make_unique<sim::SweepFile>(dir + "/map_" + a + "_" + b + ".csv",
+/// Every --sweep and --map, checked before the folder exists (bad input leaves none behind). All
+/// their points are planned at once, so the memory budget holds for the sum.
+Grids parseGrids(const StabilityOptions& o, const sim::Scenario& base,
+                 const dynamics::Model& model) {
+  Grids g;
+  double points = 0;
+  for (const auto& text : o.sweeps) {
+    g.sweeps.push_back(parseSweep(text, base));
+    points += static_cast<double>(g.sweeps.back().values.size());
+    requireGridFits(points, kBytesPerPoint, "--sweep " + text);
+  }
+  for (const auto& text : o.maps) {
+    const Map& m = g.maps.emplace_back(parseMap(text, base, model));
+    points += static_cast<double>(m.a.values.size()) * static_cast<double>(m.b.values.size());
+    requireGridFits(points, kBytesPerPoint, "--map " + text);
+  }
+  requireDistinct(g.sweeps);
+  return g;
+}
+
+/// Opens sweep_NAME.csv and map_A_B.csv in `out_dir` (rows of an earlier run are read back), once
+/// the folder's settings are claimed: a refused run must not touch them (a torn last row is cut).
+void openFiles(Grids& grids, const std::string& out_dir) {
+  for (auto& s : grids.sweeps)
+    s.file = std::make_unique<sim::SweepFile>(out_dir + "/sweep_" + s.parameter->name() + ".csv");
+  for (auto& m : grids.maps) {
+    const std::string a = m.a.parameter->name();
+    const std::string b = m.b.parameter->name();
+    m.file = std::make_unique<sim::SweepFile>(out_dir + "/map_" + a + "_" + b + ".csv",
                                               std::vector<std::string>{a, b});
   }
 }
@@ -156,31 +186,27 @@ void runStability(const StabilityOptions& o) {
   const sim::Reference reference(ref.step, ref.model);
   sim::Scenario base = sim::makeScenario(o.scenario);
   base.poincare = o.poincare;
-  std::vector<Sweep> sweeps;
-  for (const auto& text : o.sweeps) sweeps.push_back(parseSweep(text, base));
-  requireDistinct(sweeps);
-  std::vector<Map> maps;
-  for (const auto& text : o.maps) maps.push_back(parseMap(text, base, ref.model));
+  Grids grids = parseGrids(o, base, ref.model);
   const io::ResumableFolder folder(o.out_dir, sim::scenarioInputs(o.scenario, ref));
   const std::string& out_dir = folder.path();
   nlohmann::ordered_json key = sim::sweepFolderSettings(o.scenario, ref, base);
-  key.update(gridKey(sweeps, maps));
+  key.update(gridKey(grids));
   io::claimSettings(out_dir + "/settings.json", key);
-  openRowFiles(sweeps, maps, out_dir);
+  openFiles(grids, out_dir);
   // Each job walks one point and appends its row: on disk as soon as it is done.
   std::vector<std::function<void()>> todo;
   std::size_t done_before = 0;
-  for (auto& s : sweeps)
+  for (auto& s : grids.sweeps)
     for (double v : s.values) {
       if (s.file->has(v)) {
         ++done_before;
         continue;
       }
       todo.push_back([&, v] {
-        s.file->append(sim::walkSweepPoint(ref.model, reference, base, s.parameter->name, v));
+        s.file->append(sim::walkSweepPoint(ref.model, reference, base, s.parameter->name(), v));
       });
     }
-  for (auto& m : maps)
+  for (auto& m : grids.maps)
     for (double va : m.a.values)
       for (double vb : m.b.values) {
         if (m.file->has(va, vb)) {
@@ -188,8 +214,8 @@ void runStability(const StabilityOptions& o) {
           continue;
         }
         todo.push_back([&, va, vb] {
-          m.file->append(sim::walkMapPoint(ref.model, reference, base, m.a.parameter->name, va,
-                                           m.b.parameter->name, vb));
+          m.file->append(sim::walkMapPoint(ref.model, reference, base, m.a.parameter->name(), va,
+                                           m.b.parameter->name(), vb));
         });
       }
   // No more workers than points: a sweep of 2 points starts 2 threads, not one per core.
@@ -203,14 +229,14 @@ void runStability(const StabilityOptions& o) {
       parallel::progressBar("stability", o.quiet));
   nlohmann::ordered_json summary{{"robot", ref.model.name()}};
   summary.update(sim::scenarioJson(o.scenario, base));
-  for (const auto& s : sweeps) {
-    const std::string& name = s.parameter->name;
+  for (const auto& s : grids.sweeps) {
+    const std::string name = s.parameter->name();
     summary["sweeps"][name] =
         sim::walkingInterval(*s.parameter, s.file->rows(), nominalValue(base, name, ref.model));
     printInterval(name, summary["sweeps"][name]);
   }
-  for (const auto& m : maps) {
-    const std::string name = m.a.parameter->name + "_" + m.b.parameter->name;
+  for (const auto& m : grids.maps) {
+    const std::string name = m.a.parameter->name() + "_" + m.b.parameter->name();
     summary["maps"][name] = sim::walkingRegion(m.a, m.b, m.file->rows());
     printRegion(name, summary["maps"][name]);
   }
@@ -228,8 +254,8 @@ void registerStabilityCommand(CLI::App& app) {
   addScenarioOptions(cmd, options->scenario);
   std::string names;
   for (const auto& p : sim::sweepParameters())
-    names += fmt::format("\n  {}{}: {} (default {}:{}:{}{})", p.name,
-                         p.unit.empty() ? "" : " [" + p.unit + "]", p.meaning, p.first, p.last,
+    names += fmt::format("\n  {}{}: {} (default {}:{}:{}{})", p.name(),
+                         p.unit().empty() ? "" : " [" + p.unit() + "]", p.meaning, p.first, p.last,
                          p.count, p.geometric ? ", geometric spacing" : "");
   cmd->add_option("--sweep", options->sweeps, "NAME or NAME=a:b:n, repeatable:" + names)
       ->option_text("NAME[=a:b:n]");

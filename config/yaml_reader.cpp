@@ -28,6 +28,10 @@ NumberCheck inRange(double lo, double hi, const std::string& unit) {
   };
 }
 
+NumberCheck inRange(const Quantity& q) {
+  return [q](double v) { return rangeError(q, v).empty() ? std::string() : expectation(q); };
+}
+
 NumberCheck angleInRange(double lo, double hi) {
   return [=](double v) {
     if (v >= lo && v <= hi) return std::string();

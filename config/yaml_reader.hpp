@@ -12,6 +12,7 @@
 
 #include "config/config_error.hpp"
 #include "config/overrides.hpp"
+#include "config/quantities.hpp"
 
 namespace gaitopt::config {
 
@@ -22,6 +23,8 @@ using NumberCheck = std::function<std::string(double)>;
 NumberCheck positive(const std::string& unit);
 NumberCheck nonNegative(const std::string& unit);
 NumberCheck inRange(double lo, double hi, const std::string& unit);
+/// The range of a quantity a user also sets elsewhere (a sweep axis, an option), in its words.
+NumberCheck inRange(const Quantity& q);
 /// An angle in [lo, hi] radians; a value outside that is in range once read as degrees gets
 /// a hint to convert ("30 deg is 0.5236 rad"), the usual slip in a hand-edited file.
 NumberCheck angleInRange(double lo, double hi);

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "config/config_error.hpp"
+#include "config/quantities.hpp"
 #include "io/strict_json.hpp"
 
 namespace gaitopt::gaits {
@@ -23,14 +24,15 @@ using config::ConfigError;
 using nlohmann::json;
 
 struct VectorKey {
-  std::string_view name;
-  std::string_view unit;
+  config::Quantity quantity;  ///< its name is the key
+  std::string_view what;
   bool required;
 };
 
-constexpr std::array<VectorKey, 3> kKeys{{{"theta", "absolute link angles [rad]", true},
-                                          {"dtheta", "absolute link rates [rad/s]", false},
-                                          {"ddtheta", "link accelerations [rad/s^2]", false}}};
+constexpr std::array<VectorKey, 3> kKeys{
+    {{config::kLinkAngle, "absolute link angles [rad]", true},
+     {config::kLinkRate, "absolute link rates [rad/s]", false},
+     {config::kLinkAcceleration, "link accelerations [rad/s^2]", false}}};
 
 /// A short rendering of a JSON value for error messages. Only scalars are dumped: dumping a
 /// container recurses once per nesting level and overflows the stack on a deeply nested file.
@@ -61,7 +63,7 @@ void checkKeys(const std::string& path, const json& doc) {
                                   "ddtheta, got {}",
                                   describe(doc)));
   for (const auto& item : doc.items()) {
-    const auto known = [&](const VectorKey& k) { return k.name == item.key(); };
+    const auto known = [&](const VectorKey& k) { return k.quantity.name == item.key(); };
     if (std::none_of(kKeys.begin(), kKeys.end(), known))
       throw ConfigError(path, item.key(), 0,
                         "unknown key; expected only theta, dtheta and ddtheta");
@@ -69,24 +71,26 @@ void checkKeys(const std::string& path, const json& doc) {
 }
 
 VecD readVector(const std::string& path, const json& doc, const VectorKey& key, int n) {
-  const std::string name(key.name);
+  const std::string name(key.quantity.name);
   if (!doc.contains(name)) {
     if (key.required)
-      throw ConfigError(path, name, 0, fmt::format("missing; expected {} {}", n, key.unit));
+      throw ConfigError(path, name, 0, fmt::format("missing; expected {} {}", n, key.what));
     return VecD::Zero(n);
   }
   const json& value = doc.at(name);
   if (!value.is_array() || value.size() != static_cast<size_t>(n))
     throw ConfigError(path, name, 0,
                       fmt::format("expected an array of {} numbers ({}, one per link), got {}", n,
-                                  key.unit, describe(value)));
+                                  key.what, describe(value)));
   VecD out(n);
   for (int i = 0; i < n; ++i) {
     const json& element = value.at(static_cast<size_t>(i));
     if (!element.is_number() || !std::isfinite(element.get<double>()))
       throw ConfigError(path, fmt::format("{}[{}]", name, i), 0,
                         fmt::format("expected a finite number, got {}", describe(element)));
-    out(i) = element.get<double>();
+    // A finite but huge value (1e308 rad/s) would overflow the energies to inf.
+    out(i) = config::requireInRange(key.quantity, element.get<double>(), path,
+                                    fmt::format("{}[{}]", name, i));
   }
   return out;
 }

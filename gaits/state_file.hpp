@@ -21,7 +21,8 @@ struct ChainState {
 ChainState standingState(const dynamics::Model& model);
 
 /// Reads `{"theta": [...], "dtheta": [...], "ddtheta": [...]}`; theta is required, the others
-/// default to zero. Each must hold `n_links` finite numbers; no other key is allowed.
+/// default to zero. Each must hold `n_links` numbers in the ranges of config/quantities.hpp; no
+/// other key is allowed.
 /// @throws config::ConfigError naming the file, the key and what was expected.
 ChainState loadState(const std::string& path, int n_links);
 

@@ -18,7 +18,8 @@ enum ExitCode : int {
   kExitNotConverged = 4,  ///< the solver stopped without converging (iteration limit, ...)
 };
 
-/// A failure that chooses its own exit code (e.g. a solve that did not converge).
+/// A failure that chooses its own exit code (e.g. a solve that did not converge). An empty
+/// message: the failure has been reported already, by the program that found it.
 class CommandError : public std::runtime_error {
  public:
   CommandError(ExitCode code, const std::string& message)

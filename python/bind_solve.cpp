@@ -4,6 +4,7 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include "config/quantities.hpp"
 #include "ocp/gait_problem.hpp"
 #include "ocp/gait_solve.hpp"
 #include "ocp/initial_guess.hpp"
@@ -16,6 +17,7 @@ namespace gaitopt::python {
 namespace {
 
 py::dict optimize(const std::string& config_path, double rate_hz) {
+  config::requireInRange(config::kSampleRate, rate_hz, "rate_hz");
   ocp::OcpConfig config = ocp::loadOcpConfig(config_path);
   const dynamics::Model model = ocp::problemModel(config);
   ocp::requireReachable(model, config, config_path);

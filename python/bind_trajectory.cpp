@@ -5,6 +5,7 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include "config/quantities.hpp"
 #include "dynamics/model_variation.hpp"
 #include "gaits/gait_export.hpp"
 #include "gaits/gait_params.hpp"
@@ -41,6 +42,7 @@ void addMatrix(py::class_<Trajectory>& c, const char* name, Field field, const c
 
 /// The polynomial gait of a gait YAML for `robot` on the gait's slope (as `gaitopt poly`).
 Trajectory designPoly(const dynamics::Model& robot, const std::string& gait_path, double rate_hz) {
+  config::requireInRange(config::kSampleRate, rate_hz, "rate_hz");
   const gaits::GaitParams params = gaits::loadGait(gait_path);
   const dynamics::Model model = dynamics::withSlope(robot, params.slope);
   const gaits::HipPlanSearch search = gaits::searchHipPlan(model, params);
@@ -50,6 +52,7 @@ Trajectory designPoly(const dynamics::Model& robot, const std::string& gait_path
 /// A gait folder of `traj` (trajectory files and summary.json) in the existing folder `dir`.
 size_t writeFolder(const Trajectory& traj, const dynamics::Model& robot, const std::string& dir,
                    double rate_hz) {
+  config::requireInRange(config::kSampleRate, rate_hz, "rate_hz");
   return gaits::writeGaitExport(dir, traj, robot, rate_hz,
                                 gaits::gaitSummary(traj, robot, {"", "exported"}));
 }
@@ -84,7 +87,12 @@ void bindTrajectory(py::module_& m) {
                                for (const Knot& k : t.knots()) out.emplace_back(toString(k.phase));
                                return out;
                              })
-      .def("resample", &Trajectory::resample, py::arg("rate_hz"))
+      .def(
+          "resample",
+          [](const Trajectory& t, double rate_hz) {
+            return t.resample(config::requireInRange(config::kSampleRate, rate_hz, "rate_hz"));
+          },
+          py::arg("rate_hz"))
       .def("__len__", [](const Trajectory& t) { return t.knots().size(); });
   addMatrix(
       c, "theta", [](const Knot& k) { return k.theta; }, "absolute angles [rad], N x n");

@@ -4,6 +4,9 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include <fmt/format.h>
+
+#include "config/quantities.hpp"
 #include "python/bindings.hpp"
 #include "sim/scenario.hpp"
 
@@ -39,18 +42,35 @@ py::dict samplesDict(const std::vector<sim::WalkSample>& samples, int n) {
   return out;
 }
 
+/// Runs Python's signal handlers (Ctrl-C, signal.alarm) from a walk that released the GIL:
+/// Python runs them only when asked, so a long walk could not be interrupted otherwise.
+void checkInterrupts() {
+  const py::gil_scoped_acquire gil;
+  if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+}
+
+/// Refuses a sample no returned array may hold: a diverged walk is a failure, not NaN arrays.
+void requireFinite(const sim::WalkSample& s) {
+  if (!s.theta.allFinite() || !s.tau.allFinite())
+    throw std::runtime_error(fmt::format(
+        "simulate: the walk diverged (non-finite angles or torques at t = {:.4g} s)", s.t));
+}
+
 py::dict simulate(const dynamics::Model& robot, const gaits::Trajectory& reference, int steps,
                   const std::string& controller, double gain_scale) {
-  if (steps < 1) throw std::invalid_argument("steps: expected at least 1");
   sim::Scenario scenario;
-  scenario.steps = steps;
+  scenario.steps = static_cast<int>(config::requireInRange(config::kSteps, steps, "steps"));
   scenario.controller = controller;
-  scenario.gain_scale = gain_scale;
+  scenario.gain_scale = config::requireInRange(config::kGainScale, gain_scale, "gain_scale");
   std::vector<sim::WalkSample> samples;
   const sim::ScenarioResult result = [&] {
     py::gil_scoped_release release;
     return sim::runScenario(robot, sim::Reference(reference, robot), scenario,
-                            [&](const sim::WalkSample& s) { samples.push_back(s); });
+                            [&](const sim::WalkSample& s) {
+                              checkInterrupts();
+                              requireFinite(s);
+                              samples.push_back(s);
+                            });
   }();
   py::list step_list;
   for (const sim::StepResult& s : result.walk.steps)
@@ -73,9 +93,10 @@ void bindWalk(py::module_& m) {
   m.def("simulate", &simulate, py::arg("robot"), py::arg("reference"), py::arg("steps") = 5,
         py::arg("controller") = "computed_torque", py::arg("gain_scale") = 1.0,
         "Walks `reference` (a Trajectory of `robot`) on rigid ground under a tracking controller "
-        "(computed_torque or sliding_mode), as `gaitopt simulate`. Returns a dict: t, step, "
-        "phase, stance_x, theta, theta_ref, tau (every logged sample), steps (one dict per "
-        "step), steps_completed, fell, failure, max_tracking_error.");
+        "(computed_torque or sliding_mode), as `gaitopt simulate` (steps and gain_scale in its "
+        "ranges; Ctrl-C interrupts). Returns a dict: t, step, phase, stance_x, theta, theta_ref, "
+        "tau (every logged sample), steps (one dict per step), steps_completed, fell, failure, "
+        "max_tracking_error.");
 }
 
 }  // namespace gaitopt::python

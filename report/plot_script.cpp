@@ -22,7 +22,7 @@ std::string scriptDir() {
 
 }  // namespace
 
-bool runPlotScript(const std::string& script, const std::vector<std::string>& args) {
+int plotScriptStatus(const std::string& script, const std::vector<std::string>& args) {
   std::fflush(stdout);  // keep our progress lines before the script's output
   const std::string python = "/usr/bin/python3";
   std::vector<std::string> argv = {python, scriptDir() + "/" + script};
@@ -34,17 +34,20 @@ bool runPlotScript(const std::string& script, const std::vector<std::string>& ar
                  "warning: no pictures: {} with matplotlib is missing "
                  "(apt-get install python3-matplotlib)\n",
                  python);
-      return false;
+      return -1;
     }
-    if (const int status = io::runProgram(argv); status != 0) {
+    const int status = io::runProgram(argv);
+    if (status != 0 && status != kScriptInputError)
       fmt::print(stderr, "warning: plotting failed: {} exited {}\n", script, status);
-      return false;
-    }
+    return status;
   } catch (const std::system_error& e) {  // no process could be started (a process limit)
     fmt::print(stderr, "warning: no pictures: {}\n", e.what());
-    return false;
+    return -1;
   }
-  return true;
+}
+
+bool runPlotScript(const std::string& script, const std::vector<std::string>& args) {
+  return plotScriptStatus(script, args) == 0;
 }
 
 std::function<void(const std::string& dir)> gaitPictures(bool plots) {

@@ -9,8 +9,16 @@
 
 namespace gaitopt::report {
 
-/// Runs `/usr/bin/python3 scripts/plots/<script> <args...>`; prints a warning and returns false
-/// when python3 or matplotlib is missing or the script fails.
+/// The exit status of a script that refused a malformed input file after printing one line
+/// "error: <file>: <what>": EX_DATAERR of sysexits.h, which python3 itself never returns.
+inline constexpr int kScriptInputError = 65;
+
+/// Runs `/usr/bin/python3 scripts/plots/<script> <args...>` and returns its exit status, or -1
+/// when python3 or matplotlib is missing or no process could be started. Prints a warning unless
+/// the status is 0 or kScriptInputError (the script has said what is wrong).
+int plotScriptStatus(const std::string& script, const std::vector<std::string>& args);
+
+/// plotScriptStatus() == 0: the pictures are drawn; a failure is a warning, never a failed run.
 bool runPlotScript(const std::string& script, const std::vector<std::string>& args);
 
 /// The pictures of a gait folder (gait_plots.py DIR); empty when `plots` is false.

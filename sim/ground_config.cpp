@@ -1,5 +1,6 @@
 #include "sim/ground_config.hpp"
 
+#include "config/quantities.hpp"
 #include "config/yaml_reader.hpp"
 
 namespace gaitopt::sim {
@@ -29,7 +30,7 @@ CompliantGround impedance(const YamlReader& root) {
                   "tangential_damping", "time_step"});
   CompliantGround g{{}, timeStep(root)};
   g.contact.exponent = root.number("exponent", inRange(1.0, 3.0, "[-] (1 linear, 1.5 Hertz)"));
-  g.contact.stiffness = root.number("stiffness", positive("[N/m^exponent]"));
+  g.contact.stiffness = root.number("stiffness", inRange(config::kStiffness));  // as its sweep
   g.contact.damping = root.number("damping", nonNegative("[N s/m^(exponent+1)]"));
   g.contact.tangential_stiffness = root.number("tangential_stiffness", positive("[N/m]"));
   g.contact.tangential_damping = root.number("tangential_damping", nonNegative("[N s/m]"));

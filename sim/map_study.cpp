@@ -25,8 +25,8 @@ int nearest(const std::vector<double>& values, double x) {
 }
 
 nlohmann::ordered_json axisJson(const MapParameter& axis) {
-  return {{"name", axis.parameter->name},
-          {"unit", axis.parameter->unit},
+  return {{"name", axis.parameter->name()},
+          {"unit", axis.parameter->unit()},
           {"meaning", axis.parameter->meaning},
           {"values", axis.values.size()},
           {"from", keyed(axis.values.front())},
@@ -101,7 +101,7 @@ nlohmann::ordered_json walkingRegion(const MapParameter& a, const MapParameter& 
                                     it->second.failure};
     }
     const nlohmann::ordered_json interval = walkingInterval(*b.parameter, line, b.nominal);
-    per_row.push_back({{a.parameter->name, keyed(va)},
+    per_row.push_back({{a.parameter->name(), keyed(va)},
                        {"walks_from", interval["walks_from"]},
                        {"walks_to", interval["walks_to"]}});
   }

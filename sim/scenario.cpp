@@ -29,16 +29,16 @@ MuSlidingModeGains scaledGains(MuSlidingModeGains g, double s) {
 }
 
 const std::vector<SweepParameter> kParameters{
-    {"push", "N s",
+    {config::kPush,
      "horizontal impulse on the hip, a 0.1 s pulse from mid single support of step 2", -15, 15, 31},
-    {"mass_error", "", "relative error of the masses and inertias (Mu e_m = e_I)", -0.5, 2.0, 26},
-    {"length_error", "", "relative error of the link lengths and CoM offsets (Mu e_l = e_d)", -0.3,
-     0.5, 17},
-    {"friction", "", "Coulomb coefficient of the ground", 0.05, 1.0, 20},
-    {"stiffness", "N/m^n",
-     "impedance ground stiffness, damping scaled alike (impedance ground only)", 1e4, 1e9, 11,
-     true},
-    {"gain_scale", "", "controller bandwidth factor (kp, K by s^2; kd, lambda by s)", 0.1, 3.0, 30},
+    {config::kMassError, "relative error of the masses and inertias (Mu e_m = e_I)", -0.5, 2.0, 26},
+    {config::kLengthError, "relative error of the link lengths and CoM offsets (Mu e_l = e_d)",
+     -0.3, 0.5, 17},
+    {config::kFriction, "Coulomb coefficient of the ground", 0.05, 1.0, 20},
+    {config::kStiffness, "impedance ground stiffness, damping scaled alike (impedance ground only)",
+     1e4, 1e9, 11, true},
+    {config::kGainScale, "controller bandwidth factor (kp, K by s^2; kd, lambda by s)", 0.1, 3.0,
+     30},
 };
 
 }  // namespace
@@ -113,9 +113,9 @@ const std::vector<SweepParameter>& sweepParameters() {
 
 const SweepParameter& sweepParameter(const std::string& name) {
   for (const auto& p : kParameters)
-    if (p.name == name) return p;
+    if (p.name() == name) return p;
   std::string known;
-  for (const auto& p : kParameters) known += (known.empty() ? "" : ", ") + p.name;
+  for (const auto& p : kParameters) known += (known.empty() ? "" : ", ") + p.name();
   throw std::invalid_argument("unknown sweep parameter '" + name + "' (expected one of " + known +
                               ")");
 }

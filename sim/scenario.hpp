@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "config/quantities.hpp"
 #include "dynamics/model_variation.hpp"
 #include "sim/ground_model.hpp"
 #include "sim/hybrid_walk.hpp"
@@ -65,12 +66,14 @@ ScenarioResult runScenario(const dynamics::Model& nominal, const Reference& ref,
 
 /// A parameter a stability sweep varies.
 struct SweepParameter {
-  std::string name;
-  std::string unit;
+  config::Quantity quantity;  ///< name, unit and the values a sweep may take
   std::string meaning;
   double first, last;      ///< default range
   int count;               ///< default number of values
   bool geometric = false;  ///< values spaced by a constant ratio (over decades), not a step
+
+  std::string name() const { return std::string(quantity.name); }
+  std::string unit() const { return std::string(quantity.unit); }
 };
 
 /// push, mass_error, length_error, friction, stiffness, gain_scale.

@@ -5,11 +5,16 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "config/quantities.hpp"
 #include "io/settings_record.hpp"
 
 namespace gaitopt::sim {
 
 std::vector<double> sweepValues(const SweepParameter& p, const gaits::GridAxis& axis) {
+  // The ends bound every value between them.
+  for (const double end : {axis.first, axis.last})
+    if (std::string why = config::rangeError(p.quantity, end); !why.empty())
+      throw std::invalid_argument(why);
   if (p.geometric && !(axis.first > 0 && axis.last > 0))
     throw std::invalid_argument("a geometric range needs positive ends");
   std::vector<double> values;
@@ -47,7 +52,7 @@ nlohmann::ordered_json walkingInterval(const SweepParameter& parameter,
   const auto walks = [](const SweepRow& r) {
     return !r.fell && r.steps_completed == r.steps_requested;
   };
-  nlohmann::ordered_json j{{"unit", parameter.unit},
+  nlohmann::ordered_json j{{"unit", parameter.unit()},
                            {"meaning", parameter.meaning},
                            {"values", rows.size()},
                            {"nominal", std::isfinite(nominal) ? nlohmann::ordered_json(nominal)

@@ -22,7 +22,8 @@ namespace gaitopt::sim {
 /// axis.count values from axis.first to axis.last: evenly spaced, or by a constant ratio for a
 /// geometric parameter; rounding noise below 1e-12 of the larger end snapped to 0 (so
 /// -0.3:0.5:17 holds 0 rather than 5.6e-17).
-/// @throws std::invalid_argument for a geometric range whose ends are not both positive.
+/// @throws std::invalid_argument for an end outside the parameter's quantity range
+///         (config/quantities.hpp) or a geometric range whose ends are not both positive.
 std::vector<double> sweepValues(const SweepParameter& parameter, const gaits::GridAxis& axis);
 
 /// Walks `scenario` with the parameter `name` set to `value` (model: the reference's robot).

@@ -18,7 +18,8 @@ writes, printing one line per file written:
 The pictures read A_DIR/trajectory.csv and B_DIR/trajectory.csv: A solid, B dashed, one colour
 per quantity; grey vertical lines mark each gait's touchdown (SSP -> DSP; the step end for a
 gait without DSP rows). A missing folder, file, column or key, or a malformed value, ends the
-script with "error: <file>: <what>" and exit code 1.
+script with "error: <file>: <what>" and exit code 65 (EX_DATAERR of sysexits.h, which python
+itself never returns): `gaitopt compare` then exits 2, bad input.
 """
 import math
 import os
@@ -423,4 +424,5 @@ if __name__ == "__main__":
     try:
         main(sys.argv[1:])
     except InputError as e:
-        sys.exit(f"error: {e}")
+        print(f"error: {e}", file=sys.stderr)
+        sys.exit(os.EX_DATAERR)

@@ -23,6 +23,11 @@ class InputError(Exception):
     """A missing or malformed input file; the message names the file and what is wrong."""
 
 
+def not_text(path, error):
+    """The InputError of a file that is not UTF-8 text (a binary file in place of a result)."""
+    return InputError(f"{path}: not UTF-8 text ({error.reason}): a binary file?")
+
+
 # ---------------------------------------------------------------------------------------------
 # CSV
 
@@ -34,6 +39,10 @@ def read_rows(path, what, min_rows=1):
             rows = list(csv.reader(f))
     except OSError as e:
         raise InputError(f"{path}: cannot read the {what} ({e.strerror})") from e
+    except UnicodeDecodeError as e:
+        raise not_text(path, e) from None
+    except csv.Error as e:  # a NUL byte: a binary file that happens to be valid UTF-8
+        raise InputError(f"{path}: not a CSV text file ({e})") from None
     if len(rows) < 1 + min_rows:
         if min_rows == 1:
             raise InputError(f"{path}: no data rows")
@@ -234,6 +243,8 @@ def read_json(path, what="summary"):
             s = json.load(f)
     except OSError as e:
         raise InputError(f"{path}: cannot read the {what} ({e.strerror})") from e
+    except UnicodeDecodeError as e:
+        raise not_text(path, e) from None
     except json.JSONDecodeError as e:
         raise InputError(f"{path}: not valid JSON ({e})") from e
     if not isinstance(s, dict):

@@ -99,10 +99,59 @@ expect "CSV NaN" 2 "nan_csv/trajectory.csv:5: key 'theta1': non-finite value 'na
 poly --robot "$ROBOT" --gait "$GAIT" --bogus
 expect "unknown flag" 2 "The following argument was not expected: --bogus"
 poly --robot "$ROBOT" --gait "$GAIT" --rate 0
-expect "rate 0" 2 "--rate: Value 0 not in range 1.000000 to 1000000.000000"
+expect "rate 0" 2 "--rate: expected a number in \[1, 1e\+06\] \[Hz\], got 0"
 poly --robot "$ROBOT" --gait "$GAIT" --rate fast
 expect "rate word" 2 "--rate: Failed parsing fast as a FLOAT"
 run optimize --config "$TMP/missing.yaml" --out "$TMP/out_dir" --quiet --no-plots
 expect "missing file" 2 "missing.yaml: file not found or not a regular file"
+
+# One validation per quantity (config/quantities.hpp): a sweep or map value is refused as the
+# option of the same quantity is, and all the grids of a run meet the memory budget. Each line:
+# NAME | PATTERN (its stderr) | ARGUMENTS of gaitopt stability. Bounded by `timeout`: before these
+# checks a bad grid walked (or allocated) for hours.
+run poly --robot "$ROBOT" --gait "$GAIT" --out "$TMP/ref" --no-plots
+[[ $RC -eq 0 ]] || fail "stability: the reference poly exited $RC: $(cat "$TMP/err")"
+while IFS='|' read -r name pattern args; do
+  read -ra argv <<<"$args"
+  timeout 120 "$GAITOPT" stability --reference "$TMP/ref" --robot "$ROBOT" --out "$TMP/out_dir" \
+    --steps 1 --quiet --no-plots "${argv[@]}" </dev/null >"$TMP/out" 2>"$TMP/err"
+  RC=$?
+  expect "$name" 2 "$pattern"
+done <<'CASES'
+sweep overflowing push|--sweep: key 'push': expected a number in \[-1000, 1000\] \[N s\], got -1e\+308| --sweep push=-1e308:1e308:3
+sweep mass_error above its option's range|--sweep: key 'mass_error': expected a number in \[-0.5, 2\], got 5| --sweep mass_error=5
+option of the same quantity, same words|--mass-error: expected a number in \[-0.5, 2\], got 5| --mass-error 5 --sweep push
+sweep mass_error below -1|--sweep: key 'mass_error': expected a number in \[-0.5, 2\], got -2| --sweep mass_error=-2
+sweep stiffness on its decades|--sweep: key 'stiffness': expected a number in \[100, 1e\+12\] \[N/m\^n\], got 1| --ground impedance --sweep stiffness=1:1e6:3
+map axis out of range|--map: key 'gain_scale': expected a number in \[0.001, 1000\], got 0| --map friction=0.1:0.5:2,gain_scale=0:2:2
+map of 10^6 x 10^6 points|--map push=-3:3:1000000,mass_error=-0.2:0.2:1000000: a grid of 1e\+12 points needs about .* GB| --map push=-3:3:1000000,mass_error=-0.2:0.2:1000000
+sweeps summed over the budget|--sweep friction=0:1:1000000: a grid of 2e\+06 points needs about .* GB| --sweep push=-3:3:1000000 --sweep friction=0:1:1000000
+CASES
+
+# A state whose rates would overflow the energies to inf (printed as null), and angles of 1e308.
+echo '{"theta": [0, 0, 0, 3, 3], "dtheta": [1e308, 0, 0, 0, 0]}' >"$TMP/fast.json"
+run inspect --robot "$ROBOT" --state "$TMP/fast.json"
+expect "state rate 1e308" 2 "fast.json: key 'dtheta\[0\]': expected a number in \[-1000, 1000\] \[rad/s\], got 1e\+308"
+echo '{"theta": [1e308, 1e308, 1e308, 1e308, 1e308]}' >"$TMP/turns.json"
+run inspect --robot "$ROBOT" --state "$TMP/turns.json"
+expect "state angle 1e308" 2 "turns.json: key 'theta\[0\]': expected a number in \[-12.5664, 12.5664\] \[rad\], got 1e\+308"
+
+# compare on malformed gait folders: exit 2 and one line naming the file (no traceback, no
+# second line from gaitopt).
+if "$PY" -c "import matplotlib" 2>/dev/null; then
+  for name in binary bad_json no_zmp; do cp -r "$TMP/ref" "$TMP/$name"; done
+  head -c 4096 "$GAITOPT" >"$TMP/binary/trajectory.csv"
+  echo '{"status": ' >"$TMP/bad_json/summary.json"
+  sed -i '1s/,zmp_x,/,zmp_y,/' "$TMP/no_zmp/trajectory.csv"
+  while IFS='|' read -r name pattern; do
+    run compare "$TMP/ref" "$TMP/$name" --out "$TMP/out_dir"
+    expect "compare $name" 2 "^error: $pattern"
+    [[ $(wc -l <"$TMP/err") -eq 1 ]] || fail "compare $name: not one line: $(cat "$TMP/err")"
+  done <<'CASES'
+binary|.*/binary/trajectory.csv: not UTF-8 text \(.*\): a binary file\?$
+bad_json|.*/bad_json/summary.json: not valid JSON
+no_zmp|.*/no_zmp/trajectory.csv: missing column 'zmp_x'$
+CASES
+fi
 
 echo "bad input CLI: all checks passed"

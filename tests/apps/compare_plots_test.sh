@@ -2,7 +2,7 @@
 # Checks of scripts/plots/compare_gaits.py on two small made-up gait result folders (five links; A with
 # DSP rows, B without): the markdown table (a known row, B/A left empty for a tiny A and for
 # differing signs), the OUT.md mode, the OUT_DIR mode (the files it prints and writes), and
-# "error: <file>: ..." with exit code 1 for a missing folder, file, column and key.
+# "error: <file>: ..." with exit code 65 (EX_DATAERR) for a missing folder, file, column and key.
 # Needs Debian's python3-matplotlib; skips (ctest: skipped) without it.
 # Usage: compare_plots_test.sh <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
@@ -16,12 +16,12 @@ compare() {
   RC=$?
 }
 
-# expect_error NAME PATTERN ARGS...: exit 1 and one stderr line "error: ..." matching PATTERN.
+# expect_error NAME PATTERN ARGS...: exit 65 and one stderr line "error: ..." matching PATTERN.
 expect_error() {
   local name=$1 pattern=$2
   shift 2
   compare "$@"
-  [[ $RC -eq 1 ]] || fail "$name: exit $RC, expected 1 (stderr: $(cat "$TMP/err"))"
+  [[ $RC -eq 65 ]] || fail "$name: exit $RC, expected 65 (stderr: $(cat "$TMP/err"))"
   [[ $(wc -l <"$TMP/err") -eq 1 ]] || fail "$name: expected one stderr line: $(cat "$TMP/err")"
   grep -Eq "^error: $pattern" "$TMP/err" || fail "$name: stderr '$(cat "$TMP/err")' !~ '$pattern'"
 }

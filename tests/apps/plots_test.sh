@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Checks of scripts/plots/walk_plots.py, stability_plots.py and gait_plots.py on small made-up
 # result folders: the pictures they print, and "error: <file>: ..." with exit code 1 for broken
-# inputs. Also checks that gait_plots.py, compare_gaits.py and impact_map.py report broken inputs
-# through plot_io the same way.
+# inputs. Also checks that gait_plots.py, compare_gaits.py (exit 65, EX_DATAERR) and impact_map.py
+# report broken inputs through plot_io the same way.
 # Needs Debian's python3-matplotlib; skips (ctest: skipped) without it.
 # Usage: plots_test.sh <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
@@ -413,7 +413,7 @@ make_gait "$G"
 edit "$G/trajectory.csv" "lines = text.split('\n'); lines[4] = lines[4].rsplit(',', 1)[0]; text = '\n'.join(lines)"
 expect_error "(h) torn row" gait_plots.py "$G" "$G/trajectory.csv:5: 42 fields, the header has 43"
 "$PY" "$PLOTS/compare_gaits.py" "$TMP/gait" "$G" "$TMP/cmp" >/dev/null 2>"$TMP/err"
-[[ $? -eq 1 ]] && grep -qx "error: $G/trajectory.csv:5: 42 fields, the header has 43" "$TMP/err" ||
+[[ $? -eq 65 ]] && grep -qx "error: $G/trajectory.csv:5: 42 fields, the header has 43" "$TMP/err" ||
   fail "(h) compare_gaits.py torn row: $(cat "$TMP/err")"
 make_gait "$G"
 edit "$G/trajectory.csv" "h, rest = text.split('\n', 1); text = h.replace('tau2', 'x_tau2', 1) + '\n' + rest"

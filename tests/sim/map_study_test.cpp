@@ -13,8 +13,8 @@
 namespace gaitopt::sim {
 namespace {
 
-const SweepParameter kPush{"push", "N s", "hip impulse", -1, 1, 3, false};
-const SweepParameter kMass{"mass_error", "", "mass error", -0.1, 0.1, 3, false};
+const SweepParameter kPush{config::kPush, "hip impulse", -1, 1, 3, false};
+const SweepParameter kMass{config::kMassError, "mass error", -0.1, 0.1, 3, false};
 
 /// '#' walks, '.' falls; rows are values of a, columns values of b.
 std::vector<std::vector<bool>> grid(const std::vector<std::string>& text) {

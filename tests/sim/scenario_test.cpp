@@ -13,8 +13,8 @@ TEST(Scenario, EverySweepParameterReadsBackWhatItSets) {
   s.ground = CompliantGround{{1e7, 4.5e7, 1.5, 5e5, 2e3, 0.6}, 2e-4};
   for (const auto& p : sweepParameters()) {
     const double value = 0.5 * (p.first + p.last);
-    setSweepValue(s, p.name, value);
-    EXPECT_EQ(sweepValue(s, p.name), value) << p.name;
+    setSweepValue(s, p.name(), value);
+    EXPECT_EQ(sweepValue(s, p.name()), value) << p.name();
   }
   EXPECT_EQ(s.parameter_errors.inertia, s.parameter_errors.mass);
   EXPECT_EQ(s.parameter_errors.com, s.parameter_errors.length);

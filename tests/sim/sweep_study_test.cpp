@@ -8,8 +8,8 @@
 namespace gaitopt::sim {
 namespace {
 
-const SweepParameter kLinear{"push", "N s", "hip impulse", -10, 10, 5, false};
-const SweepParameter kGeometric{"stiffness", "N/m", "ground stiffness", 1e4, 1e6, 3, true};
+const SweepParameter kLinear{config::kPush, "hip impulse", -10, 10, 5, false};
+const SweepParameter kGeometric{config::kStiffness, "ground stiffness", 1e4, 1e6, 3, true};
 
 TEST(SweepValues, EvenlySpacedWithZeroExactlyOnTheGrid) {
   const auto v = sweepValues(kLinear, {-0.3, 0.5, 17});  // step 0.05: the 7th value is 0
@@ -32,8 +32,26 @@ TEST(SweepValues, OneValueIsTheFirstEnd) {
 }
 
 TEST(SweepValues, AGeometricRangeNeedsPositiveEnds) {
-  EXPECT_THROW(sweepValues(kGeometric, {0, 1e6, 3}), std::invalid_argument);
+  // Friction may be 0, so only the spacing refuses it here.
+  const SweepParameter geometric_friction{config::kFriction, "friction", 0.1, 1, 3, true};
+  EXPECT_THROW(sweepValues(geometric_friction, {0, 1, 3}), std::invalid_argument);
   EXPECT_NO_THROW(sweepValues(kLinear, {-1, 1, 3}));
+}
+
+TEST(SweepValues, EndsOutsideTheQuantityAreRefusedInItsWords) {
+  try {
+    sweepValues(kLinear, {-1e308, 1e308, 3});  // its middle value was NaN
+    FAIL() << "an overflowing range was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "expected a number in [-1000, 1000] [N s], got -1e+308");
+  }
+  EXPECT_THROW(sweepValues(kLinear, {0, 1001, 3}), std::invalid_argument);
+  EXPECT_THROW(sweepValues(kGeometric, {1e4, 1e13, 3}), std::invalid_argument);
+}
+
+TEST(SweepValues, EveryDefaultRangeIsInsideItsQuantity) {
+  for (const SweepParameter& p : sweepParameters())
+    EXPECT_NO_THROW(sweepValues(p, {p.first, p.last, p.count})) << p.name();
 }
 
 /// Rows keyed as SweepFile keys them; `fell` per value.
