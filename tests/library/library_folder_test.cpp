@@ -20,6 +20,8 @@ class LibraryFolderTest : public io::test::IoTest {
   LibrarySetup setup(const std::array<std::vector<double>, 3>& axes) const {
     LibraryConfig config;
     config.name = "round_trip";
+    config.path = path("round_trip.yaml");  // its bytes key the folder (library.json)
+    put(config.path, "name: round_trip\n");
     config.ocp_path = std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/rabbit_kelly2017.yaml";
     config.base = ocp::loadOcpConfig(config.ocp_path);
     return {config, Grid(axes), path("lib"), {}};
