@@ -18,6 +18,7 @@ status=0
 # Every kind of leak is an error: the run frees all its heap blocks (Ipopt, MUMPS and yaml-cpp
 # included), so anything left is ours.
 valgrind --leak-check=full --errors-for-leak-kinds=all --error-exitcode=1 \
+  --suppressions=scripts/valgrind.supp \
   --log-file="$out/valgrind.log" \
   "$gaitopt" optimize --config configs/ocp/rabbit_kelly2017.yaml --out "$out/result" \
   --no-plots --quiet >"$out/stdout" || status=$?
