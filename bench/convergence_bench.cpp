@@ -9,12 +9,16 @@
 /// Writes one CSV row per solve and prints a markdown table per config.
 /// Usage: convergence_bench OUT.csv [OCP_CONFIG | LIBRARY_CONFIG ...]
 ///        (default: every configs/ocp/*.yaml and configs/library/*.yaml of the source tree)
+///        convergence_bench --table CSV   (the table of an earlier run)
 #include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <optional>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -146,14 +150,35 @@ void printTable(const std::vector<Draw>& draws) {
     }
     converged += static_cast<int>(costs.size());
     const auto [lo, hi] = std::minmax_element(costs.begin(), costs.end());
+    // A library's points are different problems, and a cost near zero (the passive gait) has
+    // no relative spread: both say "-".
+    const bool spread = !costs.empty() && name.rfind("library ", 0) != 0 && std::abs(*lo) > 1e-6;
     fmt::print("| {} | {} of {} | {} | {} | {} | {:.0f} | {:.3f} |\n", name, costs.size(),
                group.size(), costs.empty() ? "-" : fmt::format("{:.6g}", *lo),
                costs.empty() ? "-" : fmt::format("{:.6g}", *hi),
-               costs.empty() ? "-" : fmt::format("{:.2f} %", 100 * (*hi - *lo) / std::abs(*lo)),
+               spread ? fmt::format("{:.2f} %", 100 * (*hi - *lo) / std::abs(*lo)) : "-",
                median(iterations), median(times));
   }
   fmt::print("\n{} of {} solves converged ({:.1f} %).\n", converged, draws.size(),
              100.0 * converged / static_cast<double>(draws.size()));
+}
+
+/// The draws of a CSV this program wrote (csvOf). @throws std::runtime_error when unreadable.
+std::vector<Draw> readCsv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot read it");
+  std::vector<Draw> draws;
+  std::string line;
+  std::getline(in, line);  // the header
+  while (std::getline(in, line)) {
+    std::vector<std::string> cell;
+    std::stringstream row(line);
+    for (std::string c; std::getline(row, c, ',');) cell.push_back(c);
+    if (cell.size() != 8) throw std::runtime_error(path + ": not a row of 8 cells: " + line);
+    draws.push_back({cell[0], cell[2], std::stoi(cell[1]), cell[3], cell[4] == "1",
+                     std::stoi(cell[5]), std::stod(cell[6]), std::stod(cell[7])});
+  }
+  return draws;
 }
 
 std::vector<std::string> shippedConfigs() {
@@ -171,8 +196,14 @@ std::vector<std::string> shippedConfigs() {
 int main(int argc, char** argv) {
   using namespace gaitopt;
   if (argc < 2) {
-    std::fprintf(stderr, "usage: %s OUT.csv [OCP_CONFIG | LIBRARY_CONFIG ...]\n", argv[0]);
+    std::fprintf(stderr,
+                 "usage: %s OUT.csv [OCP_CONFIG | LIBRARY_CONFIG ...]\n       %s --table CSV\n",
+                 argv[0], argv[0]);
     return 2;
+  }
+  if (std::string(argv[1]) == "--table" && argc == 3) {  // the table of an earlier run's CSV
+    bench::printTable(bench::readCsv(argv[2]));
+    return 0;
   }
   std::vector<std::string> paths(argv + 2, argv + argc);
   if (paths.empty()) paths = bench::shippedConfigs();
