@@ -2,18 +2,18 @@
 
 #include <string>
 
-#include "apps/compare_command.hpp"
-#include "apps/export_urdf_command.hpp"
-#include "apps/impact_map_command.hpp"
-#include "apps/inspect_command.hpp"
-#include "apps/interpolate_command.hpp"
-#include "apps/library_command.hpp"
-#include "apps/optimize_command.hpp"
+#include "apps/commands/compare_command.hpp"
+#include "apps/commands/export_urdf_command.hpp"
+#include "apps/commands/impact_map_command.hpp"
+#include "apps/commands/inspect_command.hpp"
+#include "apps/commands/interpolate_command.hpp"
+#include "apps/commands/optimize_command.hpp"
+#include "apps/commands/poly_command.hpp"
 #include "apps/option_checks.hpp"
-#include "apps/poly_command.hpp"
-#include "apps/report_command.hpp"
-#include "apps/simulate_command.hpp"
-#include "apps/stability_command.hpp"
+#include "apps/study_commands/library_command.hpp"
+#include "apps/study_commands/report_command.hpp"
+#include "apps/study_commands/simulate_command.hpp"
+#include "apps/study_commands/stability_command.hpp"
 #include "io/terminal_text.hpp"
 
 namespace gaitopt::apps {

@@ -26,12 +26,12 @@
 
 #include <fmt/format.h>
 
-#include "io/checked_write.hpp"
+#include "io/output/checked_write.hpp"
 #include "library/grid.hpp"
 #include "library/library_config.hpp"
 #include "library/library_point.hpp"
-#include "ocp/gait_solve.hpp"
-#include "ocp/initial_guess.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "ocp/solve/gait_solve.hpp"
 #include "ocp_bench_common.hpp"
 
 namespace gaitopt::bench {

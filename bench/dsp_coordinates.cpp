@@ -1,11 +1,10 @@
 /// @file dsp_coordinates.cpp
 /// The double support collocated in theta against Mu's reduced coordinates
-/// (constraints.dsp_reduced_coordinates, ocp/dsp_chart.hpp), on each five-link problem with a
-/// double support: solve time (median of `repeats` in this process), iterations, cost, and on
-/// the 1 kHz export the DSP tip's drift, foot B's centre of pressure and the friction ratio;
-/// the drift at the collocation points themselves beside it. Meshes: the config's equal
-/// segments, and a DSP mesh finer after the impact.
-/// Usage: dsp_coordinates [repeats]   (prints a markdown table)
+/// (constraints.dsp_reduced_coordinates, ocp/problem/dsp_chart.hpp), on each five-link problem with
+/// a double support: solve time (median of `repeats` in this process), iterations, cost, and on the
+/// 1 kHz export the DSP tip's drift, foot B's centre of pressure and the friction ratio; the drift
+/// at the collocation points themselves beside it. Meshes: the config's equal segments, and a DSP
+/// mesh finer after the impact. Usage: dsp_coordinates [repeats]   (prints a markdown table)
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -13,11 +12,11 @@
 #include <fmt/format.h>
 
 #include "bench/ocp_bench_common.hpp"
-#include "gaits/export_checks.hpp"
-#include "gaits/metrics.hpp"
-#include "ocp/gait_problem.hpp"
-#include "ocp/initial_guess.hpp"
-#include "ocp/ocp_config.hpp"
+#include "gaits/export/export_checks.hpp"
+#include "gaits/export/metrics.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "ocp/problem/gait_problem.hpp"
+#include "ocp/problem/ocp_config.hpp"
 
 namespace {
 

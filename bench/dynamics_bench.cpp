@@ -9,7 +9,7 @@
 #include <benchmark/benchmark.h>
 
 #include "dynamics/dsp_dynamics.hpp"
-#include "dynamics/impact.hpp"
+#include "dynamics/impact/impact.hpp"
 #include "dynamics/model.hpp"
 #include "dynamics/residual_derivatives.hpp"
 #include "dynamics/robot_config.hpp"

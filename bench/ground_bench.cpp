@@ -23,9 +23,9 @@
 
 #include "dynamics/kinematics.hpp"
 #include "dynamics/robot_config.hpp"
-#include "ocp/initial_guess.hpp"
-#include "sim/ground_config.hpp"
-#include "sim/walk.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "sim/contact/ground_config.hpp"
+#include "sim/walk/walk.hpp"
 
 namespace {
 

@@ -5,10 +5,9 @@
 /// segments, double impact) and the RABBIT benchmark of Kelly 2017
 /// (configs/ocp/rabbit_kelly2017.yaml) at 6, 15 and 25 segments, and the straight-leg robots
 /// from their straight-leg guess (configs/ocp/compass_gait_walk.yaml, three_link_walk.yaml and
-/// the passive slope walk compass_gait_passive.yaml, 25 segments each). Each case is solved `repeats`
-/// times; the table gives medians and the ratio of each median wall time to the exact-Hessian
-/// one of the same problem.
-/// Usage: ocp_bench [repeats]
+/// the passive slope walk compass_gait_passive.yaml, 25 segments each). Each case is solved
+/// `repeats` times; the table gives medians and the ratio of each median wall time to the
+/// exact-Hessian one of the same problem. Usage: ocp_bench [repeats]
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -16,9 +15,9 @@
 #include <fmt/format.h>
 
 #include "bench/ocp_bench_common.hpp"
-#include "ocp/gait_problem.hpp"
-#include "ocp/initial_guess.hpp"
-#include "ocp/ipopt_adapter.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "ocp/problem/gait_problem.hpp"
+#include "ocp/solve/ipopt_adapter.hpp"
 
 namespace {
 

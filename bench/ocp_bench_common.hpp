@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "ocp/ipopt_adapter.hpp"
-#include "ocp/nlp.hpp"
+#include "ocp/solve/ipopt_adapter.hpp"
+#include "ocp/transcription/nlp.hpp"
 
 namespace gaitopt::bench {
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "dynamics/model.hpp"
-#include "gaits/trajectory.hpp"
-#include "ocp/ocp_config.hpp"
+#include "gaits/trajectory/trajectory.hpp"
+#include "ocp/problem/ocp_config.hpp"
 
 namespace gaitopt::bench {
 
@@ -33,7 +33,7 @@ ocp::OcpConfig withMesh(ocp::OcpConfig config, int ssp);
 
 /// Both schemes on every mesh at Ipopt tolerance `tolerance`: solve time (median of `repeats`),
 /// iterations, cost, and the re-simulated end-of-SSP and per-segment state errors
-/// (ocp/resimulation.hpp).
+/// (ocp/solve/resimulation.hpp).
 void collocationStudy(const std::vector<StudyCase>& cases, int repeats, double tolerance,
                       std::ostream& csv);
 

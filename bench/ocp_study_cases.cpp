@@ -6,7 +6,7 @@
 
 #include "bench/ocp_study.hpp"
 #include "dynamics/robot_config.hpp"
-#include "ocp/initial_guess.hpp"
+#include "ocp/guess/initial_guess.hpp"
 
 namespace gaitopt::bench {
 

@@ -1,8 +1,8 @@
 /// @file ocp_study_collocation.cpp
 /// Speed against accuracy of trapezoidal and Hermite-Simpson collocation under mesh refinement.
-/// Accuracy is measured independently of the transcription (ocp/resimulation.hpp): the optimal
-/// torques, read along the scheme's own interpolation, are re-simulated by an adaptive RKF 7(8)
-/// at 1e-12, from the solution's first SSP state over the whole SSP (the global error, whose
+/// Accuracy is measured independently of the transcription (ocp/solve/resimulation.hpp): the
+/// optimal torques, read along the scheme's own interpolation, are re-simulated by an adaptive RKF
+/// 7(8) at 1e-12, from the solution's first SSP state over the whole SSP (the global error, whose
 /// order is 2 for trapezoidal and 4 for Hermite-Simpson: Betts 2010, sec. 4.5; Kelly 2017,
 /// sec. 4), and segment by segment from the solution's state at each segment start (the local
 /// error, order 3 and 5, unaffected by the open-loop instability of single support).
@@ -10,8 +10,8 @@
 
 #include "bench/ocp_bench_common.hpp"
 #include "bench/ocp_study.hpp"
-#include "ocp/gait_problem.hpp"
-#include "ocp/resimulation.hpp"
+#include "ocp/problem/gait_problem.hpp"
+#include "ocp/solve/resimulation.hpp"
 
 namespace gaitopt::bench {
 

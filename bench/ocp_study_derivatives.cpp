@@ -8,7 +8,7 @@
 
 #include "bench/ocp_bench_common.hpp"
 #include "bench/ocp_study.hpp"
-#include "ocp/gait_problem.hpp"
+#include "ocp/problem/gait_problem.hpp"
 
 namespace gaitopt::bench {
 

@@ -14,8 +14,8 @@
 #include <fmt/format.h>
 
 #include "bench/ocp_study.hpp"
-#include "ocp/gait_problem.hpp"
-#include "ocp/ipopt_adapter.hpp"
+#include "ocp/problem/gait_problem.hpp"
+#include "ocp/solve/ipopt_adapter.hpp"
 
 namespace gaitopt::bench {
 

@@ -6,7 +6,7 @@
 /// default five-link gait (configs/ocp/mu2004_walk.yaml, SSP 30 + DSP 6 Hermite-Simpson segments),
 /// RABBIT after Kelly 2017 at 25 segments and the five-link cost-of-transport problem, each from
 /// its polynomial guess, each with the config's linear solver (MUMPS) and with gaitopt's
-/// (`ldl`, ocp/kkt/). Every stage is the median of `repeats` runs in this process.
+/// (`ldl`, ocp/solve/kkt/). Every stage is the median of `repeats` runs in this process.
 ///
 /// With `levers`, the same problems are solved under each solver setting of kLevers, the
 /// settings interleaved run by run (so load from other jobs falls on all alike), and each
@@ -32,9 +32,9 @@
 
 #include "bench/mumps_calls.hpp"
 #include "bench/ocp_bench_common.hpp"
-#include "ocp/gait_solve.hpp"
-#include "ocp/initial_guess.hpp"
-#include "ocp/solution_report.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "ocp/solve/gait_solve.hpp"
+#include "ocp/solve/solution_report.hpp"
 
 namespace {
 
@@ -48,7 +48,7 @@ struct Problem {
   std::string linear_solver;  ///< "mumps" or "ldl"
 };
 
-/// Each problem with gaitopt's linear solver (ocp/kkt/, the default) and with MUMPS on every
+/// Each problem with gaitopt's linear solver (ocp/solve/kkt/, the default) and with MUMPS on every
 /// matrix; the first two rows are MUMPS's, on which the levers are measured.
 const std::vector<Problem> kProblems = {
     {"five-link default (30+6), MUMPS", "mu2004_walk.yaml", 0, "mumps"},

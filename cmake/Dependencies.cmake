@@ -2,7 +2,7 @@
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(IPOPT REQUIRED IMPORTED_TARGET ipopt)
 # Sequential MUMPS, which Ipopt itself links (libmumps-seq-dev, a dependency of
-# coinor-libipopt-dev): the KKT solver's fallback on a zero static pivot (ocp/kkt/mumps_factor.hpp).
+# coinor-libipopt-dev): the KKT solver's fallback on a zero static pivot (ocp/solve/kkt/mumps_factor.hpp).
 find_path(MUMPS_INCLUDE_DIR dmumps_c.h REQUIRED)
 find_library(DMUMPS_SEQ_LIBRARY dmumps_seq REQUIRED)
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
@@ -12,7 +12,7 @@ find_package(CLI11 REQUIRED)
 find_package(nlohmann_json 3.11 REQUIRED)
 find_package(fmt REQUIRED)
 if(GAITOPT_BUILD_TESTS OR GAITOPT_BUILD_BENCH)
-  # Odeint, for the independent re-simulations of ocp/chain_simulation.hpp: only the tests and
+  # Odeint, for the independent re-simulations of ocp/transcription/chain_simulation.hpp: only the tests and
   # benchmarks include it, so the CLI (make demo) builds without Boost.
   find_package(Boost 1.74 REQUIRED)
 endif()

@@ -1,6 +1,6 @@
 // Fuzz target: optimal-gait YAML (configs/ocp/*.yaml) through ocp::loadOcpConfig.
 #include "fuzz_input.hpp"
-#include "ocp/ocp_config.hpp"
+#include "ocp/problem/ocp_config.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   return gaitopt::fuzz::runLoader(

@@ -1,6 +1,6 @@
 // Fuzz target: chain-state JSON (configs/states/*.json) through gaits::loadState, five links.
 #include "fuzz_input.hpp"
-#include "gaits/state_file.hpp"
+#include "gaits/trajectory/state_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   return gaitopt::fuzz::runLoader(

@@ -1,7 +1,7 @@
 // Fuzz target: trajectory.csv through gaits::readTrajectoryCsv for the five-link robot.
 #include "dynamics/robot_config.hpp"
 #include "fuzz_input.hpp"
-#include "gaits/trajectory_csv.hpp"
+#include "gaits/trajectory/trajectory_csv.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   static const gaitopt::dynamics::Model model =

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "io/checked_write.hpp"
+#include "io/output/checked_write.hpp"
 
 namespace gaitopt::io {
 

@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "config/config_error.hpp"
-#include "io/checked_write.hpp"
+#include "io/output/checked_write.hpp"
 #include "io/strict_json.hpp"
 #include "io/terminal_text.hpp"
 

@@ -11,7 +11,7 @@
 #include <functional>
 
 #include "dynamics/model.hpp"
-#include "gaits/trajectory.hpp"
+#include "gaits/trajectory/trajectory.hpp"
 #include "library/grid.hpp"
 
 namespace gaitopt::library {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "ocp/ocp_config.hpp"
+#include "ocp/problem/ocp_config.hpp"
 
 namespace gaitopt::library {
 

@@ -4,8 +4,8 @@
 #include <fstream>
 
 #include "config/config_error.hpp"
-#include "gaits/gait_summary.hpp"
-#include "gaits/trajectory_csv.hpp"
+#include "gaits/export/gait_summary.hpp"
+#include "gaits/trajectory/trajectory_csv.hpp"
 #include "io/settings_record.hpp"
 #include "io/strict_json.hpp"
 

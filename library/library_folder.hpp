@@ -16,7 +16,7 @@
 #include "library/library_point.hpp"
 #include "library/library_run.hpp"
 #include "library/schedule.hpp"
-#include "ocp/ocp_config.hpp"
+#include "ocp/problem/ocp_config.hpp"
 
 namespace gaitopt::library {
 

@@ -5,12 +5,12 @@
 #include <filesystem>
 #include <optional>
 
-#include "gaits/metrics.hpp"
-#include "gaits/retime.hpp"
-#include "gaits/trajectory_csv.hpp"
-#include "io/output_folder.hpp"
+#include "gaits/export/metrics.hpp"
+#include "gaits/polynomial/retime.hpp"
+#include "gaits/trajectory/trajectory_csv.hpp"
+#include "io/output/output_folder.hpp"
 #include "library/point_problem.hpp"
-#include "ocp/initial_guess.hpp"
+#include "ocp/guess/initial_guess.hpp"
 
 namespace gaitopt::library {
 namespace {

@@ -8,7 +8,7 @@
 #include "library/library_config.hpp"
 #include "library/library_index.hpp"
 #include "library/schedule.hpp"
-#include "ocp/solution_report.hpp"
+#include "ocp/solve/solution_report.hpp"
 
 namespace gaitopt::library {
 

@@ -7,8 +7,8 @@
 #include <array>
 
 #include "dynamics/model.hpp"
-#include "gaits/gait_params.hpp"
-#include "ocp/ocp_config.hpp"
+#include "gaits/polynomial/gait_params.hpp"
+#include "ocp/problem/ocp_config.hpp"
 
 namespace gaitopt::library {
 

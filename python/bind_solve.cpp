@@ -5,10 +5,10 @@
 #include <pybind11/stl.h>
 
 #include "config/quantities.hpp"
-#include "ocp/gait_problem.hpp"
-#include "ocp/gait_solve.hpp"
-#include "ocp/initial_guess.hpp"
-#include "ocp/ocp_config.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "ocp/problem/gait_problem.hpp"
+#include "ocp/problem/ocp_config.hpp"
+#include "ocp/solve/gait_solve.hpp"
 #include "python/bindings.hpp"
 
 namespace py = pybind11;

@@ -1,18 +1,18 @@
 /// @file bind_trajectory.cpp
-/// gaitopt.Trajectory (gaits/trajectory.hpp) with its knots as numpy arrays, the polynomial gait
-/// of Mu ch. 3 (design_poly) and a gait folder's trajectory.csv (read_trajectory,
+/// gaitopt.Trajectory (gaits/trajectory/trajectory.hpp) with its knots as numpy arrays, the
+/// polynomial gait of Mu ch. 3 (design_poly) and a gait folder's trajectory.csv (read_trajectory,
 /// write_trajectory).
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
 #include "config/quantities.hpp"
 #include "dynamics/model_variation.hpp"
-#include "gaits/gait_export.hpp"
-#include "gaits/gait_params.hpp"
-#include "gaits/gait_summary.hpp"
-#include "gaits/hip_plan_search.hpp"
-#include "gaits/polynomial_gait.hpp"
-#include "gaits/trajectory_csv.hpp"
+#include "gaits/export/gait_export.hpp"
+#include "gaits/export/gait_summary.hpp"
+#include "gaits/polynomial/gait_params.hpp"
+#include "gaits/polynomial/hip_plan_search.hpp"
+#include "gaits/polynomial/polynomial_gait.hpp"
+#include "gaits/trajectory/trajectory_csv.hpp"
 #include "python/bindings.hpp"
 
 namespace py = pybind11;

@@ -1,6 +1,6 @@
 /// @file bind_walk.cpp
-/// gaitopt.simulate: a closed-loop walk of a reference gait (sim/scenario.hpp), every logged
-/// sample as numpy arrays and one entry per step.
+/// gaitopt.simulate: a closed-loop walk of a reference gait (sim/scenario/scenario.hpp), every
+/// logged sample as numpy arrays and one entry per step.
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
@@ -8,7 +8,7 @@
 
 #include "config/quantities.hpp"
 #include "python/bindings.hpp"
-#include "sim/scenario.hpp"
+#include "sim/scenario/scenario.hpp"
 
 namespace py = pybind11;
 

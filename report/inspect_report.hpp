@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dynamics/model.hpp"
-#include "gaits/state_file.hpp"
+#include "gaits/trajectory/state_file.hpp"
 
 namespace gaitopt::report {
 

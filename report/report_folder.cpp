@@ -9,7 +9,7 @@
 #include "config/config_error.hpp"
 #include "dynamics/robot_config.hpp"
 #include "report/report_frames.hpp"
-#include "sim/reference_folder.hpp"
+#include "sim/scenario/reference_folder.hpp"
 
 namespace gaitopt::report {
 namespace {

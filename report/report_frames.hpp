@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dynamics/model.hpp"
-#include "gaits/trajectory.hpp"
+#include "gaits/trajectory/trajectory.hpp"
 
 namespace gaitopt::report {
 
@@ -25,8 +25,8 @@ struct StickFrame {
 std::vector<StickFrame> gaitFrames(const dynamics::Model& model, const gaits::Trajectory& step,
                                    double rate_hz);
 
-/// The frames of a walk's stick.csv (sim/walk_record.hpp). @throws config::ConfigError naming the
-/// file and line for a missing column, a bad number or phase, or a frame with missing links.
+/// The frames of a walk's stick.csv (sim/walk/walk_record.hpp). @throws config::ConfigError naming
+/// the file and line for a missing column, a bad number or phase, or a frame with missing links.
 std::vector<StickFrame> readStickCsv(const std::string& path);
 
 /// Column-wise JSON for the page: {t: [...], step: [...], phase: [...], links: [[[x0,y0,x1,y1],

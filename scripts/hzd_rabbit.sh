@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# RABBIT under HZD (sim/hzd_*.hpp): solves Kelly's torque-squared optimum
+# RABBIT under HZD (sim/controllers/hzd_*.hpp): solves Kelly's torque-squared optimum
 # (configs/ocp/rabbit_kelly2017.yaml), walks it 20 steps on rigid ground with
 # `gaitopt simulate --controller hzd` (the Poincare maps: full and restricted), and draws the
 # zero dynamics (results/walk_rabbit_hzd/hzd.png) from the walk's

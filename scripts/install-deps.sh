@@ -10,7 +10,7 @@ set -euo pipefail
 
 # What `make demo` needs: the compiler, the libraries of the CLI, and matplotlib for its pictures.
 # libmumps-seq-dev (also a dependency of coinor-libipopt-dev): the KKT solver hands MUMPS the
-# matrices its static pivots fail on (ocp/kkt/mumps_factor.hpp), and the solve profile times
+# matrices its static pivots fail on (ocp/solve/kkt/mumps_factor.hpp), and the solve profile times
 # MUMPS's calls, both through its C header (dmumps_c.h).
 packages=(
   build-essential cmake pkg-config ninja-build

@@ -2,7 +2,7 @@
 # Points per second of `gaitopt library` on this machine: the 9-point library of
 # configs/library/throughput.yaml solved from scratch with 1 worker process, with 2, and as 2
 # MPI ranks of 1 worker each (mpirun --oversubscribe -np 2), all with the default linear solver
-# (gaitopt's, ocp/kkt/), and with 1 and 2 worker processes under MUMPS on every matrix (the same
+# (gaitopt's, ocp/solve/kkt/), and with 1 and 2 worker processes under MUMPS on every matrix (the same
 # library whose OCP config says linear_solver: mumps, copied to a temporary folder), REPEATS
 # times each, interleaved so that load from other jobs falls on every mode alike. Prints a
 # markdown table of medians and the ratio to the 1-worker median, and how many points the

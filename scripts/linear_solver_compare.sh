@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Every shipped OCP config (configs/ocp/*.yaml) solved with MUMPS and with gaitopt's KKT solver
-# (solver.linear_solver: ldl, ocp/kkt/): status, iterations, cost and wall time of each, as a
+# (solver.linear_solver: ldl, ocp/solve/kkt/): status, iterations, cost and wall time of each, as a
 # markdown table and, with CSV, a file (results/linear_solver_compare.csv). Each solver's copy of
 # the configs is made by scripts/solver_configs.sh in a temporary folder.
 # Usage: scripts/linear_solver_compare.sh BUILD_DIR [CSV]   (about 1 minute)

@@ -14,8 +14,8 @@
 #include <string>
 
 #include "dynamics/robot_config.hpp"
-#include "gaits/trajectory_csv.hpp"
-#include "sim/scenario.hpp"
+#include "gaits/trajectory/trajectory_csv.hpp"
+#include "sim/scenario/scenario.hpp"
 
 namespace {
 

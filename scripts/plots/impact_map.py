@@ -46,7 +46,7 @@ def read_map(path):
     shape = tuple(len(a) for a in axes)
     if np.prod(shape) != rows:
         raise InputError(f"{path}: {rows} rows do not fill a {shape} grid")
-    # Rows come with alpha fastest and step length slowest (gaits/impact_map.hpp).
+    # Rows come with alpha fastest and step length slowest (gaits/impact/impact_map.hpp).
     return axes, {name: v.reshape(shape) for name, v in cols.items()}
 
 

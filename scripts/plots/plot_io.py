@@ -15,7 +15,7 @@ import numpy as np
 NUMBER_WORDS = {2: "two", 3: "three"}
 
 # A grid sample this close to a stored switch or end state is that instant [s]
-# (gaits/grid_export.cpp).
+# (gaits/trajectory/grid_export.cpp).
 SWITCH_TOLERANCE_S = 1e-9
 
 

@@ -13,9 +13,9 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/option_checks.hpp"
-#include "apps/scenario_options.hpp"
+#include "apps/study_commands/scenario_options.hpp"
 #include "config/config_error.hpp"
-#include "sim/sweep_study.hpp"
+#include "sim/studies/sweep_study.hpp"
 
 namespace gaitopt::apps {
 namespace {

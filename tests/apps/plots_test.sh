@@ -372,7 +372,7 @@ assert abs(g.zmp_margin().min() - g.s["min_zmp_margin"]) < 1e-9, g.zmp_margin().
 PY
 # (h) a gait folder on the fixed-rate grid: the touchdown's two rows and the end row come from
 # summary.json (phase_switches, step_end) and plot_io puts them back in time order, replacing
-# the grid rows at 0.6 s and 0.7 s (docs/design.md#the-export-contract, gaits/switch_states.hpp).
+# the grid rows at 0.6 s and 0.7 s (docs/design.md#the-export-contract, gaits/trajectory/switch_states.hpp).
 make_gait "$TMP/grid"
 (cd "$PLOTS" && "$PY" - "$TMP/grid" <<'PY') || fail "(h) switch rows from summary.json"
 import csv, json, sys

@@ -6,8 +6,8 @@
 #include <Eigen/LU>
 
 #include "dynamics/energy.hpp"
-#include "dynamics/frictional_impact.hpp"
-#include "dynamics/impact.hpp"
+#include "dynamics/impact/frictional_impact.hpp"
+#include "dynamics/impact/impact.hpp"
 #include "dynamics/kinematics.hpp"
 #include "dynamics/model_variation.hpp"
 #include "support/fixtures.hpp"

@@ -4,7 +4,7 @@
 
 #include "dynamics/energy.hpp"
 #include "dynamics/floating_base.hpp"
-#include "dynamics/impact.hpp"
+#include "dynamics/impact/impact.hpp"
 #include "dynamics/kinematics.hpp"
 #include "support/fixtures.hpp"
 #include "support/floating_base.hpp"

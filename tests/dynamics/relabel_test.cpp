@@ -4,9 +4,9 @@
 #include <gtest/gtest.h>
 
 #include "dynamics/energy.hpp"
+#include "dynamics/impact/relabel.hpp"
 #include "dynamics/joint_coordinates.hpp"
 #include "dynamics/kinematics.hpp"
-#include "dynamics/relabel.hpp"
 #include "dynamics/ssp_dynamics.hpp"
 #include "support/fixtures.hpp"
 

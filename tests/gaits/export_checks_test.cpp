@@ -1,4 +1,4 @@
-// Checks on a dense export (gaits/export_checks.hpp) against trajectories whose answers are
+// Checks on a dense export (gaits/export/export_checks.hpp) against trajectories whose answers are
 // known in closed form.
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "dynamics/kinematics.hpp"
-#include "gaits/export_checks.hpp"
+#include "gaits/export/export_checks.hpp"
 #include "support/fixtures.hpp"
 
 namespace gaitopt::test {

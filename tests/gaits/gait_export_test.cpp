@@ -1,4 +1,4 @@
-// A gait folder's export (gaits/gait_export.hpp) of Mu's polynomial gait at 128 Hz, where
+// A gait folder's export (gaits/export/gait_export.hpp) of Mu's polynomial gait at 128 Hz, where
 // neither the touchdown (0.6 s) nor the end (0.7 s) is on the grid: trajectory.csv on
 // t_i = i / 128 with time strictly increasing, the switch states and the end in summary.json,
 // and readTrajectoryCsv giving the step back knot for knot.
@@ -16,13 +16,13 @@
 #include <nlohmann/json.hpp>
 
 #include "config/config_error.hpp"
-#include "gaits/consistency.hpp"
-#include "gaits/export_checks.hpp"
-#include "gaits/gait_export.hpp"
-#include "gaits/gait_summary.hpp"
-#include "gaits/hip_plan_search.hpp"
-#include "gaits/polynomial_gait.hpp"
-#include "gaits/trajectory_csv.hpp"
+#include "gaits/export/consistency.hpp"
+#include "gaits/export/export_checks.hpp"
+#include "gaits/export/gait_export.hpp"
+#include "gaits/export/gait_summary.hpp"
+#include "gaits/polynomial/hip_plan_search.hpp"
+#include "gaits/polynomial/polynomial_gait.hpp"
+#include "gaits/trajectory/trajectory_csv.hpp"
 #include "support/fixtures.hpp"
 
 namespace gaitopt::test {

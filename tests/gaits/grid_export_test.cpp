@@ -1,6 +1,6 @@
-// The fixed-rate export (gaits/grid_export.hpp): samples exactly on t_i = i / rate with time
-// strictly increasing, each in the phase it lies in, and the switch pair and the end kept so the
-// step is rebuilt knot for knot.
+// The fixed-rate export (gaits/trajectory/grid_export.hpp): samples exactly on t_i = i / rate with
+// time strictly increasing, each in the phase it lies in, and the switch pair and the end kept so
+// the step is rebuilt knot for knot.
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gaits/grid_export.hpp"
+#include "gaits/trajectory/grid_export.hpp"
 #include "support/same_knots.hpp"
 
 namespace gaitopt::test {

@@ -1,11 +1,11 @@
-// Ranges "a:b:n" and "a" as the command line writes them (gaits/grid_range.hpp).
+// Ranges "a:b:n" and "a" as the command line writes them (gaits/impact/grid_range.hpp).
 #include <cmath>
 
 #include <gtest/gtest.h>
 
 #include "config/config_error.hpp"
 #include "dynamics/conventions.hpp"
-#include "gaits/grid_range.hpp"
+#include "gaits/impact/grid_range.hpp"
 
 namespace gaitopt::gaits {
 namespace {

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "gaits/impact_map.hpp"
+#include "gaits/impact/impact_map.hpp"
 #include "support/fixtures.hpp"
 
 namespace gaitopt::test {

@@ -8,8 +8,8 @@
 #include <stdexcept>
 
 #include "dynamics/kinematics.hpp"
-#include "gaits/impact_point.hpp"
-#include "gaits/impact_posture.hpp"
+#include "gaits/impact/impact_point.hpp"
+#include "gaits/impact/impact_posture.hpp"
 #include "support/fixtures.hpp"
 #include "support/floating_base.hpp"
 

@@ -11,10 +11,10 @@
 
 #include "dynamics/energy.hpp"
 #include "dynamics/floating_base.hpp"
-#include "dynamics/impact.hpp"
+#include "dynamics/impact/impact.hpp"
 #include "dynamics/joint_coordinates.hpp"
 #include "dynamics/kinematics.hpp"
-#include "gaits/metrics.hpp"
+#include "gaits/export/metrics.hpp"
 #include "support/fixtures.hpp"
 
 namespace gaitopt::test {

@@ -1,12 +1,12 @@
-// Physical joint coordinates (gaits/physical_joints.hpp): postures whose encoder readings are
-// known, and the work they do equal to the work in Mu's coordinates.
+// Physical joint coordinates (gaits/trajectory/physical_joints.hpp): postures whose encoder
+// readings are known, and the work they do equal to the work in Mu's coordinates.
 #include <numbers>
 #include <random>
 
 #include <gtest/gtest.h>
 
 #include "dynamics/joint_coordinates.hpp"
-#include "gaits/physical_joints.hpp"
+#include "gaits/trajectory/physical_joints.hpp"
 #include "support/fixtures.hpp"
 
 namespace gaitopt::test {

@@ -5,10 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include "dynamics/impact/relabel.hpp"
 #include "dynamics/kinematics.hpp"
-#include "dynamics/relabel.hpp"
-#include "gaits/metrics.hpp"
-#include "gaits/polynomial_gait.hpp"
+#include "gaits/export/metrics.hpp"
+#include "gaits/polynomial/polynomial_gait.hpp"
 #include "support/fixtures.hpp"
 
 namespace gaitopt::test {
@@ -141,8 +141,8 @@ TEST_F(PolynomialGaitTest, UnreachableHipHeightIsAClearError) {
   }
 }
 
-// The hip-plan search asks only whether the legs reach (gaits/hip_plan_search.cpp); its cheap
-// answer must be the one the inverse kinematics would give, reachable or not.
+// The hip-plan search asks only whether the legs reach (gaits/polynomial/hip_plan_search.cpp); its
+// cheap answer must be the one the inverse kinematics would give, reachable or not.
 TEST_F(PolynomialGaitTest, ReachCheckAgreesWithInverseKinematics) {
   int unreachable = 0;
   for (const double hip_height : {0.40, 0.55, 0.62, 0.63, 0.70}) {

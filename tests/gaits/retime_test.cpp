@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gaits/retime.hpp"
+#include "gaits/polynomial/retime.hpp"
 
 namespace gaitopt::test {
 namespace {

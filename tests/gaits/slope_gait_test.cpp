@@ -15,9 +15,9 @@
 #include "dynamics/energy.hpp"
 #include "dynamics/joint_coordinates.hpp"
 #include "dynamics/model_variation.hpp"
-#include "gaits/consistency.hpp"
-#include "gaits/hip_plan_search.hpp"
-#include "gaits/metrics.hpp"
+#include "gaits/export/consistency.hpp"
+#include "gaits/export/metrics.hpp"
+#include "gaits/polynomial/hip_plan_search.hpp"
 #include "support/fixtures.hpp"
 
 namespace gaitopt::test {

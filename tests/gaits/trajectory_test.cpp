@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gaits/trajectory.hpp"
+#include "gaits/trajectory/trajectory.hpp"
 #include "support/same_knots.hpp"
 
 namespace gaitopt::test {

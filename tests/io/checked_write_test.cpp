@@ -1,5 +1,5 @@
 // Checked writes: the errno text reaches the message; a failed write leaves no partial file.
-#include "io/checked_write.hpp"
+#include "io/output/checked_write.hpp"
 
 #include "io_test_dir.hpp"
 

@@ -1,13 +1,13 @@
 // The safe output folder of docs/design.md#output-folders-and-failures: what may be replaced,
 // inputs, paths, locks, leftovers.
-#include "io/output_folder.hpp"
+#include "io/output/output_folder.hpp"
 
 #include <sys/stat.h>
 
 #include <stdexcept>
 
 #include "config/config_error.hpp"
-#include "io/checked_write.hpp"
+#include "io/output/checked_write.hpp"
 #include "io_test_dir.hpp"
 
 namespace gaitopt::io::test {

@@ -5,12 +5,12 @@
 #include <cmath>
 
 #include "dynamics/kinematics.hpp"
-#include "gaits/consistency.hpp"
-#include "gaits/retime.hpp"
+#include "gaits/export/consistency.hpp"
+#include "gaits/polynomial/retime.hpp"
 #include "library/interpolation.hpp"
 #include "library/point_problem.hpp"
-#include "ocp/gait_solve.hpp"
-#include "ocp/initial_guess.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "ocp/solve/gait_solve.hpp"
 
 namespace gaitopt::library {
 namespace {

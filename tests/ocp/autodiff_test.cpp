@@ -1,6 +1,7 @@
-// The autodiff link constraints (ocp/autodiff.hpp) keep their derivative vectors on the stack,
-// bounded by kMaxAdInputs variables and kMaxLinks nonlinear ones: at the bounds the derivatives
-// are exact, and a constraint past them is refused when built rather than overrunning memory.
+// The autodiff link constraints (ocp/transcription/autodiff.hpp) keep their derivative vectors on
+// the stack, bounded by kMaxAdInputs variables and kMaxLinks nonlinear ones: at the bounds the
+// derivatives are exact, and a constraint past them is refused when built rather than overrunning
+// memory.
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -9,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "ocp/autodiff_constraint.hpp"
+#include "ocp/transcription/autodiff_constraint.hpp"
 
 namespace gaitopt::ocp {
 namespace {

@@ -8,9 +8,9 @@
 #include <fmt/format.h>
 
 #include "dynamics/robot_config.hpp"
-#include "ocp/gait_problem.hpp"
-#include "ocp/initial_guess.hpp"
-#include "ocp/ipopt_adapter.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "ocp/problem/gait_problem.hpp"
+#include "ocp/solve/ipopt_adapter.hpp"
 
 namespace gaitopt::ocp {
 namespace {

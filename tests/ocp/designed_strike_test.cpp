@@ -10,11 +10,11 @@
 
 #include "dynamics/energy.hpp"
 #include "dynamics/floating_base.hpp"
-#include "dynamics/impact.hpp"
+#include "dynamics/impact/impact.hpp"
 #include "dynamics/kinematics.hpp"
-#include "gaits/metrics.hpp"
-#include "ocp/gait_problem.hpp"
-#include "ocp/resimulation.hpp"
+#include "gaits/export/metrics.hpp"
+#include "ocp/problem/gait_problem.hpp"
+#include "ocp/solve/resimulation.hpp"
 #include "support/edited_config.hpp"
 #include "support/solved_config.hpp"
 

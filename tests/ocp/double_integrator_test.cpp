@@ -6,11 +6,11 @@
 
 #include <cmath>
 
-#include "ocp/collocation.hpp"
-#include "ocp/collocation_interpolation.hpp"
-#include "ocp/ipopt_adapter.hpp"
-#include "ocp/mesh_refinement.hpp"
-#include "ocp/point_function.hpp"
+#include "ocp/solve/ipopt_adapter.hpp"
+#include "ocp/transcription/collocation.hpp"
+#include "ocp/transcription/collocation_interpolation.hpp"
+#include "ocp/transcription/mesh_refinement.hpp"
+#include "ocp/transcription/point_function.hpp"
 #include "support/nlp_derivatives.hpp"
 
 namespace gaitopt::ocp {

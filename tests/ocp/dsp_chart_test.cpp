@@ -1,4 +1,4 @@
-// The double support in Mu's reduced coordinates (ocp/dsp_chart.hpp, 2.19-2.21): exact
+// The double support in Mu's reduced coordinates (ocp/problem/dsp_chart.hpp, 2.19-2.21): exact
 // derivatives of the whole NLP with fixed and free durations, the NLP's size unchanged, the
 // export's projection onto the pinned chain, and the default problem's dense export holding E
 // on the ground at the points and between them (gaits::maxDspTipDrift), where collocating theta
@@ -12,14 +12,14 @@
 
 #include "dynamics/dsp_dynamics.hpp"
 #include "dynamics/robot_config.hpp"
-#include "gaits/consistency.hpp"
-#include "gaits/export_checks.hpp"
-#include "ocp/dsp_chart.hpp"
-#include "ocp/dsp_chart_export.hpp"
-#include "ocp/gait_problem.hpp"
-#include "ocp/gait_solve.hpp"
-#include "ocp/initial_guess.hpp"
-#include "ocp/ipopt_adapter.hpp"
+#include "gaits/export/consistency.hpp"
+#include "gaits/export/export_checks.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "ocp/problem/dsp_chart.hpp"
+#include "ocp/problem/gait_problem.hpp"
+#include "ocp/solve/dsp_chart_export.hpp"
+#include "ocp/solve/gait_solve.hpp"
+#include "ocp/solve/ipopt_adapter.hpp"
 #include "support/edited_config.hpp"
 #include "support/fixtures.hpp"
 #include "support/nlp_derivatives.hpp"

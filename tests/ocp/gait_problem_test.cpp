@@ -6,16 +6,16 @@
 
 #include <fmt/format.h>
 
-#include "dynamics/impact.hpp"
-#include "dynamics/relabel.hpp"
+#include "dynamics/impact/impact.hpp"
+#include "dynamics/impact/relabel.hpp"
 #include "dynamics/robot_config.hpp"
 #include "dynamics/ssp_dynamics.hpp"
-#include "gaits/consistency.hpp"
-#include "gaits/metrics.hpp"
-#include "ocp/collocation_interpolation.hpp"
-#include "ocp/gait_problem.hpp"
-#include "ocp/initial_guess.hpp"
-#include "ocp/ipopt_adapter.hpp"
+#include "gaits/export/consistency.hpp"
+#include "gaits/export/metrics.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "ocp/problem/gait_problem.hpp"
+#include "ocp/solve/ipopt_adapter.hpp"
+#include "ocp/transcription/collocation_interpolation.hpp"
 #include "support/chain_simulation.hpp"
 #include "support/nlp_derivatives.hpp"
 
@@ -77,7 +77,7 @@ TEST_F(RabbitSolution, ConvergesFromThePolynomialGuess) {
 }
 
 TEST_F(RabbitSolution, GaitoptsKktSolverFollowsMumpsToTheSameOptimum) {
-  // The block LDL^T of ocp/kkt/ (the default) against MUMPS on every matrix: Ipopt must take
+  // The block LDL^T of ocp/solve/kkt/ (the default) against MUMPS on every matrix: Ipopt must take
   // the same steps (same inertia, accurate solves), so the iterations and the optimum agree.
   ASSERT_EQ(config_->solver.linear_solver, "ldl");
   SolverOptions options = config_->solver;

@@ -1,5 +1,5 @@
-// The jerk bound (ocp/jerk_limit.hpp): the solved points' accelerations change no faster than
-// the bound, and the dense export's angles are then smooth enough that central differences of
+// The jerk bound (ocp/problem/jerk_limit.hpp): the solved points' accelerations change no faster
+// than the bound, and the dense export's angles are then smooth enough that central differences of
 // its 1 kHz samples meet its rates to h^2/6 max|theta'''| <= h^2 J / 3 (Hermite-Simpson's
 // quadratic accelerations have end slopes at most twice the bound on their half-segments),
 // which the unbounded default optimum misses.
@@ -9,9 +9,9 @@
 #include <gtest/gtest.h>
 
 #include "dynamics/robot_config.hpp"
-#include "ocp/gait_problem.hpp"
-#include "ocp/initial_guess.hpp"
-#include "ocp/ipopt_adapter.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "ocp/problem/gait_problem.hpp"
+#include "ocp/solve/ipopt_adapter.hpp"
 
 namespace gaitopt::ocp {
 namespace {

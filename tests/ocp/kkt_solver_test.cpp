@@ -1,4 +1,4 @@
-// gaitopt's KKT solver (ocp/kkt/): block LDL^T with 2x2 pivots on matched constraint rows,
+// gaitopt's KKT solver (ocp/solve/kkt/): block LDL^T with 2x2 pivots on matched constraint rows,
 // against dense linear algebra on matrices built like Ipopt's augmented system, the matching's
 // guarantees, and Pardiso's calling protocol as Ipopt's loader uses it.
 #include <gtest/gtest.h>
@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "ocp/kkt/block_ldl.hpp"
-#include "ocp/kkt/kkt_pairs.hpp"
-#include "ocp/kkt/kkt_solver.hpp"
+#include "ocp/solve/kkt/block_ldl.hpp"
+#include "ocp/solve/kkt/kkt_pairs.hpp"
+#include "ocp/solve/kkt/kkt_solver.hpp"
 
 extern "C" {
 void pardisoinit(void* pt, const int* mtype, const int* solver, int* iparm, double* dparm,

@@ -5,8 +5,8 @@
 #include <fmt/format.h>
 
 #include "dynamics/robot_config.hpp"
-#include "ocp/gait_solve.hpp"
-#include "ocp/initial_guess.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "ocp/solve/gait_solve.hpp"
 
 namespace gaitopt::ocp {
 namespace {

@@ -12,9 +12,9 @@
 
 #include <fmt/format.h>
 
-#include "dynamics/impact.hpp"
+#include "dynamics/impact/impact.hpp"
 #include "dynamics/robot_config.hpp"
-#include "ocp/gait_problem.hpp"
+#include "ocp/problem/gait_problem.hpp"
 #include "support/solved_config.hpp"
 
 namespace gaitopt::ocp {

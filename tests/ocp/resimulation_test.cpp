@@ -1,4 +1,4 @@
-// The independent accuracy measure of a collocated gait (ocp/resimulation.hpp) on RABBIT
+// The independent accuracy measure of a collocated gait (ocp/solve/resimulation.hpp) on RABBIT
 // (configs/ocp/rabbit_kelly2017.yaml): the optimal torques re-simulated by RKF 7(8) must
 // reproduce the solution's strike state with the error order of each scheme (Betts 2010,
 // sec. 4.5; Kelly 2017, sec. 4): Hermite-Simpson globally O(h^4) and per segment O(h^5),
@@ -10,10 +10,10 @@
 #include <fmt/format.h>
 
 #include "dynamics/robot_config.hpp"
-#include "ocp/gait_problem.hpp"
-#include "ocp/initial_guess.hpp"
-#include "ocp/ipopt_adapter.hpp"
-#include "ocp/resimulation.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "ocp/problem/gait_problem.hpp"
+#include "ocp/solve/ipopt_adapter.hpp"
+#include "ocp/solve/resimulation.hpp"
 
 namespace gaitopt::ocp {
 namespace {

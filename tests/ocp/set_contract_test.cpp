@@ -17,8 +17,8 @@
 #include <gtest/gtest.h>
 
 #include "dynamics/model.hpp"
-#include "ocp/gait_problem.hpp"
-#include "ocp/initial_guess.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "ocp/problem/gait_problem.hpp"
 #include "support/set_contract.hpp"
 
 namespace gaitopt::ocp {

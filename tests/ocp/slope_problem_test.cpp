@@ -14,12 +14,12 @@
 
 #include "config/config_error.hpp"
 #include "dynamics/energy.hpp"
-#include "dynamics/impact.hpp"
+#include "dynamics/impact/impact.hpp"
 #include "dynamics/joint_coordinates.hpp"
-#include "ocp/gait_problem.hpp"
-#include "ocp/initial_guess.hpp"
-#include "ocp/ipopt_adapter.hpp"
-#include "ocp/ocp_config.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "ocp/problem/gait_problem.hpp"
+#include "ocp/problem/ocp_config.hpp"
+#include "ocp/solve/ipopt_adapter.hpp"
 
 namespace gaitopt::ocp {
 namespace {

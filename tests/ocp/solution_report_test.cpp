@@ -1,18 +1,18 @@
-// The summary and folders of a gait solution (ocp/solution_report.hpp): the impact's energy loss
-// against the kinetic energy the closed-form impact map takes, the between-node metrics of a
+// The summary and folders of a gait solution (ocp/solve/solution_report.hpp): the impact's energy
+// loss against the kinetic energy the closed-form impact map takes, the between-node metrics of a
 // trajectory with known forces, and the folder of a failed solve.
 #include <filesystem>
 
 #include <gtest/gtest.h>
 
-#include "dynamics/impact.hpp"
-#include "dynamics/relabel.hpp"
+#include "dynamics/impact/impact.hpp"
+#include "dynamics/impact/relabel.hpp"
 #include "dynamics/robot_config.hpp"
 #include "dynamics/ssp_dynamics.hpp"
 #include "io/io_test_dir.hpp"
 #include "io/strict_json.hpp"
-#include "ocp/initial_guess.hpp"
-#include "ocp/solution_report.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "ocp/solve/solution_report.hpp"
 
 namespace gaitopt::ocp {
 namespace {

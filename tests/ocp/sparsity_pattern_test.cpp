@@ -2,7 +2,7 @@
 // Ipopt and MUMPS see, on which the iterates depend), and values are summed per slot.
 #include <gtest/gtest.h>
 
-#include "ocp/nlp.hpp"
+#include "ocp/transcription/nlp.hpp"
 
 namespace gaitopt::ocp {
 namespace {

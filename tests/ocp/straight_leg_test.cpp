@@ -1,10 +1,11 @@
 // Gait optimisation for the robots with straight legs (issue 20): the straight-leg initial
-// guess (ocp/straight_leg_guess.hpp) meets its boundary conditions, and the shipped configs of
-// the compass gait and the three-link walker solve to periodic gaits that an independent
-// re-simulation (RKF 7(8), ocp/resimulation.hpp) and the closed-form impact map (Mu 2.32-2.36)
-// reproduce. configs/ocp/compass_gait_passive.yaml is the known answer: on a slope the compass
-// gait walks with no torque at all (McGeer 1990; Goswami et al. 1998), so the torque-squared
-// optimum must be zero, and the zero-torque motion from its start state must repeat itself.
+// guess (ocp/guess/straight_leg_guess.hpp) meets its boundary conditions, and the shipped configs
+// of the compass gait and the three-link walker solve to periodic gaits that an independent
+// re-simulation (RKF 7(8), ocp/solve/resimulation.hpp) and the closed-form impact map
+// (Mu 2.32-2.36) reproduce. configs/ocp/compass_gait_passive.yaml is the known answer: on a slope
+// the compass gait walks with no torque at all (McGeer 1990; Goswami et al. 1998), so the
+// torque-squared optimum must be zero, and the zero-torque motion from its start state must repeat
+// itself.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,14 +13,14 @@
 
 #include <fmt/format.h>
 
-#include "dynamics/impact.hpp"
+#include "dynamics/impact/impact.hpp"
+#include "dynamics/impact/relabel.hpp"
 #include "dynamics/kinematics.hpp"
-#include "dynamics/relabel.hpp"
 #include "dynamics/robot_config.hpp"
-#include "ocp/gait_solve.hpp"
-#include "ocp/initial_guess.hpp"
-#include "ocp/resimulation.hpp"
-#include "ocp/straight_leg_guess.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "ocp/guess/straight_leg_guess.hpp"
+#include "ocp/solve/gait_solve.hpp"
+#include "ocp/solve/resimulation.hpp"
 
 namespace gaitopt::ocp {
 namespace {

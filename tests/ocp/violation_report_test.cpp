@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "dynamics/robot_config.hpp"
-#include "ocp/gait_problem.hpp"
-#include "ocp/initial_guess.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "ocp/problem/gait_problem.hpp"
 
 namespace gaitopt::ocp {
 namespace {

@@ -9,8 +9,8 @@
 
 #include <fmt/format.h>
 
-#include "gaits/metrics.hpp"
-#include "ocp/gait_problem.hpp"
+#include "gaits/export/metrics.hpp"
+#include "ocp/problem/gait_problem.hpp"
 #include "support/edited_config.hpp"
 #include "support/solved_config.hpp"
 

@@ -19,8 +19,8 @@ command -v ninja >/dev/null && GEN=(-G Ninja)
 cmake --install "$BUILD" --prefix "$TMP/prefix" >"$TMP/install.log" 2>&1 ||
   fail "cmake --install: $(tail -5 "$TMP/install.log")"
 for f in lib/cmake/gaitopt/gaitoptConfig.cmake lib/cmake/gaitopt/gaitoptConfigVersion.cmake \
-         lib/cmake/gaitopt/gaitoptTargets.cmake include/gaitopt/sim/scenario.hpp \
-         include/gaitopt/gaits/trajectory_csv.hpp lib/libgaitopt_sim.a bin/gaitopt; do
+         lib/cmake/gaitopt/gaitoptTargets.cmake include/gaitopt/sim/scenario/scenario.hpp \
+         include/gaitopt/gaits/trajectory/trajectory_csv.hpp lib/libgaitopt_sim.a bin/gaitopt; do
   [[ -e "$TMP/prefix/$f" ]] || fail "not installed: $f"
 done
 

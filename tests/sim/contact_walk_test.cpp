@@ -10,9 +10,9 @@
 #include "dynamics/model_variation.hpp"
 #include "dynamics/ssp_dynamics.hpp"
 #include "five_link_gait.hpp"
-#include "sim/contact_dynamics.hpp"
-#include "sim/hybrid_walk.hpp"
-#include "sim/rigid_contact_loop.hpp"
+#include "sim/contact/contact_dynamics.hpp"
+#include "sim/walk/hybrid_walk.hpp"
+#include "sim/walk/rigid_contact_loop.hpp"
 
 namespace gaitopt::sim {
 namespace {

@@ -1,5 +1,5 @@
-// The polynomial gait of Mu (2004) under computed torque in DART (sim/dart_walk.hpp): the robot
-// exported as a URDF, its box feet on DART's floor, the loop closed at 1 kHz. Single support
+// The polynomial gait of Mu (2004) under computed torque in DART (sim/contact/dart_walk.hpp): the
+// robot exported as a URDF, its box feet on DART's floor, the loop closed at 1 kHz. Single support
 // tracks the gait on DART's state; the first touchdown does not yet hold (a slip, docs).
 #include <gtest/gtest.h>
 
@@ -8,8 +8,8 @@
 #include <string>
 
 #include "five_link_gait.hpp"
-#include "sim/ground_config.hpp"
-#include "sim/walk.hpp"
+#include "sim/contact/ground_config.hpp"
+#include "sim/walk/walk.hpp"
 
 namespace gaitopt::sim {
 namespace {

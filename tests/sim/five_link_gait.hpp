@@ -5,10 +5,10 @@
 
 #include "dynamics/model_variation.hpp"
 #include "dynamics/robot_config.hpp"
-#include "gaits/gait_params.hpp"
-#include "gaits/hip_plan_search.hpp"
-#include "gaits/polynomial_gait.hpp"
-#include "sim/tracking_controller.hpp"
+#include "gaits/polynomial/gait_params.hpp"
+#include "gaits/polynomial/hip_plan_search.hpp"
+#include "gaits/polynomial/polynomial_gait.hpp"
+#include "sim/controllers/tracking_controller.hpp"
 
 namespace gaitopt::sim::test {
 
@@ -19,7 +19,7 @@ inline const dynamics::Model& fiveLinkRobot() {
 }
 
 /// The robot with a heel long enough for the polynomial gait: its ZMP lies up to 0.197 m behind
-/// the stance tip (gaits/metrics.cpp), far beyond the shipped 0.05 m heel (a foot rotation,
+/// the stance tip (gaits/export/metrics.cpp), far beyond the shipped 0.05 m heel (a foot rotation,
 /// contact_rules.hpp). On a 0.30 m heel the CoP its walk asks for keeps 2.3 mm from the toe
 /// (measured on rigid ground); the walks that use this gait as a reference for other properties
 /// walk this plant.

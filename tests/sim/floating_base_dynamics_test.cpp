@@ -11,7 +11,7 @@
 #include "dynamics/floating_base_dynamics.hpp"
 #include "dynamics/model_variation.hpp"
 #include "five_link_gait.hpp"
-#include "sim/event_integrator.hpp"
+#include "sim/walk/event_integrator.hpp"
 
 namespace gaitopt::sim {
 namespace {

@@ -1,4 +1,4 @@
-// The gait sensitivity norm (sim/gait_sensitivity.hpp; Hobbelen and Wisse 2007) against its
+// The gait sensitivity norm (sim/studies/gait_sensitivity.hpp; Hobbelen and Wisse 2007) against its
 // definition, the sum over steps of the indicators' squared response to a unit disturbance,
 // and a scalar map whose sum is a geometric series.
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 #include <Eigen/Dense>
 
-#include "sim/gait_sensitivity.hpp"
+#include "sim/studies/gait_sensitivity.hpp"
 
 namespace gaitopt::sim {
 namespace {

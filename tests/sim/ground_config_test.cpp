@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "config/config_error.hpp"
-#include "sim/ground_config.hpp"
+#include "sim/contact/ground_config.hpp"
 
 namespace gaitopt::sim {
 namespace {

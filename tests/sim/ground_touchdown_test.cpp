@@ -1,8 +1,8 @@
 // "The three ground models agree on a slow, soft touchdown": the five-link robot at the
 // touchdown posture of the polynomial gait, standing on B, brings its swing tip E down at
-// 0.05 m/s. Rigid ground: Mu's double impact map (dynamics/impact.hpp), then the pinned double
-// support (2.11). Compliant and LCP grounds: the free-base steppers of the walks. All under the
-// same double-support controller; after a settling time the link rates must agree.
+// 0.05 m/s. Rigid ground: Mu's double impact map (dynamics/impact/impact.hpp), then the pinned
+// double support (2.11). Compliant and LCP grounds: the free-base steppers of the walks. All under
+// the same double-support controller; after a settling time the link rates must agree.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,13 +13,13 @@
 #include "dynamics/dsp_dynamics.hpp"
 #include "dynamics/floating_base_dynamics.hpp"
 #include "dynamics/ground.hpp"
-#include "dynamics/impact.hpp"
+#include "dynamics/impact/impact.hpp"
 #include "dynamics/kinematics.hpp"
 #include "dynamics/ssp_dynamics.hpp"
 #include "five_link_gait.hpp"
-#include "sim/compliant_walk.hpp"
-#include "sim/ground_config.hpp"
-#include "sim/lcp_walk.hpp"
+#include "sim/contact/compliant_walk.hpp"
+#include "sim/contact/ground_config.hpp"
+#include "sim/contact/lcp_walk.hpp"
 
 namespace gaitopt::sim {
 namespace {

@@ -12,8 +12,8 @@
 
 #include "dynamics/kinematics.hpp"
 #include "five_link_gait.hpp"
-#include "sim/ground_config.hpp"
-#include "sim/walk.hpp"
+#include "sim/contact/ground_config.hpp"
+#include "sim/walk/walk.hpp"
 
 namespace gaitopt::sim {
 namespace {

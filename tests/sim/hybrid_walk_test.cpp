@@ -7,10 +7,10 @@
 
 #include "dynamics/model_variation.hpp"
 #include "dynamics/robot_config.hpp"
-#include "ocp/gait_solve.hpp"
-#include "ocp/initial_guess.hpp"
-#include "sim/hybrid_walk.hpp"
-#include "sim/poincare.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "ocp/solve/gait_solve.hpp"
+#include "sim/studies/poincare.hpp"
+#include "sim/walk/hybrid_walk.hpp"
 
 namespace gaitopt::sim {
 namespace {
@@ -80,11 +80,11 @@ TEST_F(FiveLinkWalk, BothGaitsWalkTwentyStepsOnAStableCycle) {
   // Both walk a 0.30 m heel. The polynomial gait's ZMP lies up to 0.197 m behind the stance tip:
   // on the shipped 0.05 m heel its ankle saturates and it falls (contact_walk_test.cpp). The
   // optimum keeps its CoP 5 cm inside the foot at every integrator step (--cop-limit fail walks),
-  // but between its 1 kHz samples the quintic interpolation (gaits/trajectory.cpp) of the export
-  // overshoots: at t = 0.58275 s it gives ddtheta1 = 23.8 rad/s^2 between samples of 3.2 and 2.7,
-  // so computed torque asks the ankle for +13 N m (-10 N m at the samples) at the RK4 midpoints.
-  // Clipped at the 5 cm heel, the swing tip stays 40 um up at the planned touchdown and the
-  // stance tip slides 1 cm (measured; issue 14 item 4, open: a reference matter).
+  // but between its 1 kHz samples the quintic interpolation (gaits/trajectory/trajectory.cpp) of
+  // the export overshoots: at t = 0.58275 s it gives ddtheta1 = 23.8 rad/s^2 between samples of 3.2
+  // and 2.7, so computed torque asks the ankle for +13 N m (-10 N m at the samples) at the RK4
+  // midpoints. Clipped at the 5 cm heel, the swing tip stays 40 um up at the planned touchdown and
+  // the stance tip slides 1 cm (measured; issue 14 item 4, open: a reference matter).
   const dynamics::Model plant = dynamics::withFoot(*model_, {0.30, model_->foot().toe});
   for (const auto& [name, step] : gaits) {
     const Reference ref(*step);

@@ -1,4 +1,4 @@
-// HZD on RABBIT (sim/hzd_*.hpp) walking Kelly's torque-squared optimum
+// HZD on RABBIT (sim/controllers/hzd_*.hpp) walking Kelly's torque-squared optimum
 // (configs/ocp/rabbit_kelly2017.yaml, solved once here in about 0.1 s): the Bezier fit of the
 // actuated joints, the impact invariance of the zero dynamics manifold, the exact output decay
 // of the feedback-linearised loop, and the restricted Poincare map measured on the closed loop
@@ -9,14 +9,14 @@
 
 #include "dynamics/kinematics.hpp"
 #include "dynamics/robot_config.hpp"
-#include "ocp/gait_problem.hpp"
-#include "ocp/initial_guess.hpp"
-#include "ocp/ipopt_adapter.hpp"
-#include "sim/hybrid_walk.hpp"
-#include "sim/hzd_controller.hpp"
-#include "sim/hzd_poincare.hpp"
-#include "sim/poincare.hpp"
-#include "sim/scenario.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "ocp/problem/gait_problem.hpp"
+#include "ocp/solve/ipopt_adapter.hpp"
+#include "sim/controllers/hzd_controller.hpp"
+#include "sim/scenario/scenario.hpp"
+#include "sim/studies/hzd_poincare.hpp"
+#include "sim/studies/poincare.hpp"
+#include "sim/walk/hybrid_walk.hpp"
 
 namespace gaitopt::sim {
 namespace {

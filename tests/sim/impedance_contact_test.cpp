@@ -10,7 +10,7 @@
 
 #include <Eigen/Core>
 
-#include "sim/impedance_contact.hpp"
+#include "sim/contact/impedance_contact.hpp"
 
 namespace gaitopt::test {
 namespace {

@@ -7,7 +7,7 @@
 #include <random>
 #include <stdexcept>
 
-#include "sim/lcp_contact_step.hpp"
+#include "sim/contact/lcp_contact_step.hpp"
 
 namespace gaitopt::test {
 namespace {

@@ -6,7 +6,7 @@
 #include <random>
 #include <stdexcept>
 
-#include "sim/lemke.hpp"
+#include "sim/contact/lemke.hpp"
 
 namespace gaitopt::test {
 namespace {

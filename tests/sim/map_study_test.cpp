@@ -1,6 +1,6 @@
-// A 2-D stability map (sim/map_study.hpp) on made-up rows: the largest all-walking rectangle,
-// the walking region's counts and per-row intervals, and the map file's rows keyed by both
-// values across a reopen (a resumed run skips exactly the finished points).
+// A 2-D stability map (sim/studies/map_study.hpp) on made-up rows: the largest all-walking
+// rectangle, the walking region's counts and per-row intervals, and the map file's rows keyed by
+// both values across a reopen (a resumed run skips exactly the finished points).
 #include <filesystem>
 #include <fstream>
 
@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "sim/map_study.hpp"
+#include "sim/studies/map_study.hpp"
 
 namespace gaitopt::sim {
 namespace {

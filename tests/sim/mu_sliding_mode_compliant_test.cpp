@@ -9,9 +9,9 @@
 #include <algorithm>
 
 #include "five_link_gait.hpp"
-#include "sim/ground_config.hpp"
-#include "sim/mu_sliding_mode.hpp"
-#include "sim/walk.hpp"
+#include "sim/contact/ground_config.hpp"
+#include "sim/controllers/mu_sliding_mode.hpp"
+#include "sim/walk/walk.hpp"
 
 namespace gaitopt::sim {
 namespace {

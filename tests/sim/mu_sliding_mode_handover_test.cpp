@@ -9,10 +9,10 @@
 #include "dynamics/model_variation.hpp"
 #include "dynamics/robot_config.hpp"
 #include "five_link_gait.hpp"
-#include "ocp/gait_solve.hpp"
-#include "ocp/initial_guess.hpp"
-#include "sim/hybrid_walk.hpp"
-#include "sim/mu_sliding_mode.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "ocp/solve/gait_solve.hpp"
+#include "sim/controllers/mu_sliding_mode.hpp"
+#include "sim/walk/hybrid_walk.hpp"
 
 namespace gaitopt::sim {
 namespace {

@@ -10,9 +10,9 @@
 #include "dynamics/joint_coordinates.hpp"
 #include "dynamics/ssp_dynamics.hpp"
 #include "five_link_gait.hpp"
-#include "sim/hybrid_walk.hpp"
-#include "sim/mu_sliding_mode.hpp"
-#include "sim/poincare.hpp"
+#include "sim/controllers/mu_sliding_mode.hpp"
+#include "sim/studies/poincare.hpp"
+#include "sim/walk/hybrid_walk.hpp"
 
 namespace gaitopt::sim {
 namespace {

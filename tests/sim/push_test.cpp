@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "dynamics/energy.hpp"
-#include "sim/push.hpp"
-#include "sim/walk.hpp"
+#include "sim/walk/push.hpp"
+#include "sim/walk/walk.hpp"
 #include "tests/sim/five_link_gait.hpp"
 
 namespace gaitopt::sim {

@@ -1,4 +1,4 @@
-// A gait folder exported on the fixed-rate grid (gaits/gait_export.hpp) as the simulator's
+// A gait folder exported on the fixed-rate grid (gaits/export/gait_export.hpp) as the simulator's
 // reference: loadReferenceFolder puts the switch states of summary.json back, so the SSP part
 // ends at the touchdown with the pre-impact state, the DSP part starts there with the
 // post-impact state and ends at the period, and away from the switch the reference is the one
@@ -15,10 +15,10 @@
 #include <nlohmann/json.hpp>
 
 #include "five_link_gait.hpp"
-#include "gaits/gait_export.hpp"
-#include "gaits/gait_summary.hpp"
-#include "sim/reference.hpp"
-#include "sim/reference_folder.hpp"
+#include "gaits/export/gait_export.hpp"
+#include "gaits/export/gait_summary.hpp"
+#include "sim/controllers/reference.hpp"
+#include "sim/scenario/reference_folder.hpp"
 
 namespace gaitopt::sim {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "dynamics/kinematics.hpp"
 #include "five_link_gait.hpp"
-#include "sim/reference.hpp"
+#include "sim/controllers/reference.hpp"
 
 namespace gaitopt::sim {
 namespace {

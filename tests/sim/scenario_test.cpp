@@ -2,7 +2,7 @@
 // the plant or on the controller's model as asked; a stiffness sweep needs the impedance ground.
 #include <gtest/gtest.h>
 
-#include "sim/scenario.hpp"
+#include "sim/scenario/scenario.hpp"
 #include "tests/sim/five_link_gait.hpp"
 
 namespace gaitopt::sim {

@@ -1,9 +1,10 @@
-// A stability sweep's values and its walking interval (sim/sweep_study.hpp), on made-up rows.
+// A stability sweep's values and its walking interval (sim/studies/sweep_study.hpp), on made-up
+// rows.
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "sim/sweep_study.hpp"
+#include "sim/studies/sweep_study.hpp"
 
 namespace gaitopt::sim {
 namespace {

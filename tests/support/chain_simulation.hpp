@@ -1,9 +1,10 @@
 #pragma once
 /// Forward simulation of the chain for the tests: the integrator itself lives in
-/// ocp/chain_simulation.hpp (shared with bench/ocp_study), re-exported here under gaitopt::test.
+/// ocp/transcription/chain_simulation.hpp (shared with bench/ocp_study), re-exported here under
+/// gaitopt::test.
 #include <vector>
 
-#include "ocp/chain_simulation.hpp"
+#include "ocp/transcription/chain_simulation.hpp"
 
 namespace gaitopt::test {
 

@@ -12,7 +12,7 @@
 #include <unistd.h>
 
 #include "config/config_error.hpp"
-#include "ocp/ocp_config.hpp"
+#include "ocp/problem/ocp_config.hpp"
 
 namespace gaitopt::test {
 

@@ -4,7 +4,7 @@
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 
-#include "ocp/nlp.hpp"
+#include "ocp/transcription/nlp.hpp"
 
 namespace gaitopt::test {
 

@@ -6,7 +6,7 @@
 
 #include <cstddef>
 
-#include "gaits/trajectory.hpp"
+#include "gaits/trajectory/trajectory.hpp"
 
 namespace gaitopt::test {
 

@@ -19,7 +19,7 @@
 #include <fmt/format.h>
 #include <Eigen/Dense>
 
-#include "ocp/nlp.hpp"
+#include "ocp/transcription/nlp.hpp"
 
 namespace gaitopt::test {
 

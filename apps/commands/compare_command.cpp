@@ -1,0 +1,56 @@
+#include "apps/commands/compare_command.hpp"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "apps/command_runner.hpp"
+#include "config/config_error.hpp"
+#include "io/exit_code.hpp"
+#include "io/output/output_folder.hpp"
+#include "report/plot_script.hpp"
+
+namespace gaitopt::apps {
+namespace {
+
+void requireResultFolder(const std::string& dir) {
+  for (const char* file : {"summary.json", "trajectory.csv"})
+    if (!std::filesystem::is_regular_file(dir + "/" + file))
+      throw config::ConfigError(
+          dir + "/" + file, "", 0,
+          "missing: expected a gait result folder (gaitopt poly or optimize)");
+}
+
+}  // namespace
+
+void runCompare(const CompareOptions& o) {
+  const io::OutputFolder out(o.out_dir, {o.a_dir, o.b_dir});
+  requireResultFolder(o.a_dir);
+  requireResultFolder(o.b_dir);
+  // The report is the script's whole job: without matplotlib there is nothing to write.
+  out.write([&](const std::string& dir) {
+    const int status = report::plotScriptStatus("compare_gaits.py", {o.a_dir, o.b_dir, dir});
+    if (status == report::kScriptInputError)  // a malformed folder; the script named the file
+      throw io::CommandError(io::kExitInputError, "");
+    if (status != 0)
+      throw std::runtime_error("compare: scripts/plots/compare_gaits.py failed (see above)");
+  });
+  fmt::print("compare: wrote {}/comparison.md and the overlays\n", out.path());
+}
+
+void registerCompareCommand(CLI::App& app) {
+  auto options = std::make_shared<CompareOptions>();
+  CLI::App* cmd =
+      app.add_subcommand("compare", "Compare two gait result folders: table and overlaid plots");
+  cmd->add_option("A", options->a_dir, "First result folder (e.g. results/poly_mu2004)")
+      ->required();
+  cmd->add_option("B", options->b_dir, "Second result folder (e.g. results/opt_mu2004)")
+      ->required();
+  cmd->add_option("--out", options->out_dir, "Output folder (created)")
+      ->required()
+      ->option_text("DIR");
+  cmd->footer("Exit codes: 0 ok, 2 a folder is not a gait result, 1 the report failed.");
+  cmd->callback([options] { runSubcommand([&] { runCompare(*options); }); });
+}
+
+}  // namespace gaitopt::apps

@@ -1,0 +1,149 @@
+#include "apps/study_commands/library_command.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "apps/command_runner.hpp"
+#include "apps/option_checks.hpp"
+#include "config/config_error.hpp"
+#include "gaits/export/gait_summary.hpp"
+#include "io/exit_code.hpp"
+#include "io/output/output_folder.hpp"
+#include "io/settings_record.hpp"
+#include "library/library_folder.hpp"
+#include "library/library_run.hpp"
+#include "parallel/mpi_executor.hpp"
+#include "parallel/parallel_for.hpp"
+#include "parallel/process_executor.hpp"
+#include "report/plot_script.hpp"
+
+namespace gaitopt::apps {
+namespace {
+
+std::string describeRow(const library::IndexRow& r) {
+  if (!r.converged) return fmt::format("FAILED {} ({}) {}", r.status, r.start, r.message);
+  return fmt::format("{} it, {:.2f} s, cost {:.5g}, CoT {:.4f} (poly {:.4f}), from {}",
+                     r.iterations, r.solve_time_s, r.cost, r.cost_of_transport,
+                     r.poly_cost_of_transport, r.start);
+}
+
+library::RunStats solveAll(const LibraryOptions& o, const library::LibrarySetup& setup,
+                           library::LibraryIndex& index, parallel::Executor& executor) {
+  library::ScheduleState state = library::previousState(setup, index, o.retry_failed);
+  const auto todo = std::count(state.finished.begin(), state.finished.end(), false);
+  if (!o.quiet)
+    fmt::print("library: {} of {} points to solve on {} workers\n", todo, setup.grid.size(),
+               executor.slots());
+  return library::solveLibrary(setup, state, index, executor,
+                               [&](const library::IndexRow& row, bool second_chance, int points) {
+                                 if (!o.quiet)
+                                   fmt::print("library: [{}/{}] {}{}: {}\n", points, todo,
+                                              second_chance ? "second chance for " : "", row.point,
+                                              describeRow(row));
+                               });
+}
+
+void runScheduler(const LibraryOptions& o, const library::LibrarySetup& setup,
+                  std::unique_ptr<parallel::Executor> executor) {
+  std::vector<std::string> inputs = ocp::ocpInputs(setup.config.base);
+  inputs.insert(inputs.end(), {o.config_path, setup.config.ocp_path});
+  const io::ResumableFolder folder(setup.out_dir, inputs);
+  std::filesystem::create_directories(setup.out_dir + "/points");
+  library::claimLibraryFolder(setup);
+  library::LibraryIndex index(setup.out_dir);
+  const library::RunStats stats = solveAll(o, setup, index, *executor);
+  executor.reset();  // stops the MPI ranks
+  library::writeIndexJson(setup, index, stats);
+  report::runPlotScript("library_plots.py", {setup.out_dir});
+  fmt::print(
+      "library: {} points solved, {} failed in {:.1f} s ({:.3f} points/s on {} workers); "
+      "index in {}/index.csv\n",
+      stats.points - stats.failed, stats.failed, stats.wall_time_s,
+      stats.wall_time_s > 0 ? stats.points / stats.wall_time_s : 0.0, stats.workers, setup.out_dir);
+  // A solver that did not converge is an outcome a library records; a point that could not be
+  // set up or written (a full disk) is a failure of the run.
+  if (stats.errors > 0)
+    throw io::CommandError(io::kExitFailure,
+                           fmt::format("{} point(s) ended in an error, not a solver outcome; the "
+                                       "first: {}",
+                                       stats.errors, stats.first_error));
+}
+
+/// @throws config::ConfigError when two points of the grid would share a name.
+library::Grid makeGrid(const library::LibraryConfig& config, const std::string& path) {
+  double points = 1;
+  for (const auto& axis : config.axes) points *= static_cast<double>(axis.size());
+  // A point's grid entry, index row and schedule state: a few hundred bytes, rounded up.
+  requireGridFits(points, 512, path + ": grid");
+  try {
+    return library::Grid(config.axes);
+  } catch (const std::invalid_argument& e) {
+    throw config::ConfigError(path, "grid", 0, e.what());
+  }
+}
+
+}  // namespace
+
+void runLibrary(const LibraryOptions& o) {
+  library::LibraryConfig config = library::loadLibraryConfig(o.config_path);
+  library::Grid grid = makeGrid(config, o.config_path);
+  const library::LibrarySetup setup{std::move(config),
+                                    std::move(grid),
+                                    io::normaliseOutPath(o.out_dir, "--out"),
+                                    {o.config_path, o.rate_hz, report::gaitPictures(o.plots), {}}};
+  const bool under_mpi = parallel::launchedByMpi();
+  // No more worker processes than points.
+  const int jobs =
+      std::min(o.jobs > 0 ? o.jobs : (under_mpi ? 1 : parallel::resolveJobs(0)), setup.grid.size());
+  // The workers are forked first, so they hold neither MPI's state nor its threads.
+  auto local = std::make_unique<parallel::ProcessExecutor>(
+      jobs,
+      [&setup](const parallel::Job& job) {
+        return library::toJson(library::solveLibraryPoint(setup, library::decodeJob(job.payload)))
+            .dump();
+      },
+      [&setup](const parallel::Job& job, const std::string& why) {
+        return library::toJson(
+                   library::crashedPointRow(setup, library::decodeJob(job.payload), why))
+            .dump();
+      });
+  if (!under_mpi) return runScheduler(o, setup, std::move(local));
+  const parallel::MpiSession mpi;
+  if (mpi.rank() > 0) return parallel::serveMpiJobs(mpi, *local);
+  runScheduler(o, setup, parallel::makeMpiExecutor(mpi, std::move(local)));
+}
+
+void registerLibraryCommand(CLI::App& app) {
+  auto o = std::make_shared<LibraryOptions>();
+  CLI::App* cmd =
+      app.add_subcommand("library", "Solve a gait library: a grid of speed x step length x slope");
+  cmd->add_option("--config", o->config_path, "Library YAML (configs/library/*.yaml)")
+      ->required()
+      ->option_text("FILE");
+  cmd->add_option("--out", o->out_dir, "Library folder (created; a rerun resumes it)")
+      ->required()
+      ->option_text("DIR");
+  cmd->add_option("--jobs", o->jobs, "Worker threads (per MPI rank); 0: all cores (1 under MPI)")
+      ->check(CLI::Range(0, 1024))
+      ->default_val(0);
+  cmd->add_flag("--retry-failed", o->retry_failed, "Solve again the points that failed before");
+  cmd->add_option("--rate", o->rate_hz, "Sample rate of each point's trajectory.csv [Hz]")
+      ->check(quantityRange(config::kSampleRate))
+      ->default_val(250);
+  cmd->add_flag("--plots", o->plots, "Pictures of every point (slow; the chart is always drawn)");
+  cmd->add_flag("--quiet", o->quiet, "No line per point");
+  cmd->footer(
+      "Under MPI (mpirun -np N gaitopt library ...), rank 0 schedules and every rank solves; "
+      "the folder must be on a file system all ranks share. A failed point is listed in "
+      "index.csv with its status and does not stop the library. Exit codes: 0 done (failed "
+      "points included), 2 bad input, 1 other failure.");
+  cmd->callback([o] { runSubcommand([&] { runLibrary(*o); }); });
+}
+
+}  // namespace gaitopt::apps

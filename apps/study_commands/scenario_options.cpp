@@ -1,0 +1,80 @@
+#include "apps/study_commands/scenario_options.hpp"
+
+#include <map>
+#include <string>
+
+#include "apps/option_checks.hpp"
+
+namespace gaitopt::apps {
+namespace {
+
+/// The failure rule of every ground (sim/contact/contact_rules.hpp).
+void addContactOptions(CLI::App* cmd, sim::ContactRules& rules) {
+  cmd->add_option("--max-slip", rules.max_slip,
+                  "A walk fails when a tip on the ground slides further than this in one step [m]")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  const std::map<std::string, sim::CopLimit> limits{{"saturate", sim::CopLimit::kSaturate},
+                                                    {"fail", sim::CopLimit::kFail}};
+  cmd->add_option("--cop-limit", rules.cop_limit,
+                  "When the stance foot's CoP would leave [-heel, toe]: saturate the ankle torque, "
+                  "or fail as a foot rotation")
+      ->transform(CLI::CheckedTransformer(limits))
+      ->default_str("saturate");
+  cmd->add_option("--restitution", rules.restitution,
+                  "Newton restitution e_n of rigid-ground impacts (0: plastic)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+}
+
+}  // namespace
+
+void addScenarioOptions(CLI::App* cmd, sim::ScenarioSettings& o) {
+  cmd->add_option("--reference", o.reference_dir,
+                  "Gait result folder to track (trajectory.csv, summary.json)")
+      ->required()
+      ->option_text("DIR");
+  cmd->add_option("--robot", o.robot_path,
+                  "Robot YAML (default: configs/robots/<summary robot>.yaml)")
+      ->option_text("FILE");
+  cmd->add_option("--controller", o.controller, "Tracking controller")
+      ->check(CLI::IsMember({"computed_torque", "sliding_mode", "mu_sliding_mode", "hzd"}))
+      ->capture_default_str();
+  cmd->add_option("--ground", o.ground,
+                  "rigid, impedance, lcp, dart (the DART engine; configs/grounds/NAME.yaml) or a "
+                  "ground YAML")
+      ->capture_default_str();
+  cmd->add_option("--steps", o.steps, "Steps to walk")
+      ->check(quantityRange(config::kSteps))
+      ->capture_default_str();
+  cmd->add_option("--uncertainty-case", o.uncertainty_case,
+                  "Plant parameters of Mu (2004) sec. 4.3: 1 exact, 2 (+40 % m, I; +10 % l, d), "
+                  "3 (+100 %, +40 %)")
+      ->check(CLI::Range(1, 3))
+      ->capture_default_str();
+  cmd->add_option("--uncertainty-on", o.uncertainty_on,
+                  "Which model the errors change: the simulated plant, or the controller's model "
+                  "(Mu's setting: the gait then still fits the plant)")
+      ->check(CLI::IsMember({"plant", "controller"}))
+      ->capture_default_str();
+  cmd->add_option("--mass-error", o.mass_error,
+                  "Relative error of the masses and inertias (replaces the case's; a sweep's "
+                  "mass_error point)")
+      ->check(quantityRange(config::kMassError));
+  cmd->add_option("--length-error", o.length_error,
+                  "Relative error of the lengths and CoM offsets (replaces the case's)")
+      ->check(quantityRange(config::kLengthError));
+  cmd->add_option("--friction", o.friction, "Ground friction coefficient (default: the robot's)")
+      ->check(quantityRange(config::kFriction));
+  cmd->add_option(
+         "--push", o.push,
+         "Horizontal impulse on the hip, a 0.1 s pulse from mid single support of step 2 [N s]")
+      ->check(quantityRange(config::kPush))
+      ->capture_default_str();
+  cmd->add_option("--gain-scale", o.gain_scale, "Controller bandwidth factor (kp by s^2, kd by s)")
+      ->check(quantityRange(config::kGainScale))
+      ->capture_default_str();
+  addContactOptions(cmd, o.rules);
+}
+
+}  // namespace gaitopt::apps

@@ -1,0 +1,97 @@
+#include "apps/study_commands/simulate_command.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "apps/command_runner.hpp"
+#include "gaits/export/gait_summary.hpp"
+#include "io/output/output_folder.hpp"
+#include "report/plot_script.hpp"
+#include "sim/controllers/hzd_controller.hpp"
+#include "sim/scenario/reference_folder.hpp"
+#include "sim/scenario/walk_summary.hpp"
+#include "sim/walk/walk_record.hpp"
+
+namespace gaitopt::apps {
+namespace {
+
+constexpr double kStickFrameInterval = 0.05;  // [s]
+
+/// The gait HZD needs (no DSP, every joint but the ankle actuated, a growing phase variable) is
+/// an input requirement: exit 2 naming the option and the folder.
+void checkHzdReference(const sim::ReferenceFolder& ref, const sim::Reference& reference) {
+  try {
+    sim::makeHzdController(ref.model, reference, nullptr);
+  } catch (const std::invalid_argument& e) {
+    throw io::CommandError(io::kExitInputError,
+                           fmt::format("--controller hzd: {}: {}", ref.dir, e.what()));
+  }
+}
+
+void printOutcome(const sim::ScenarioResult& r, int steps) {
+  fmt::print("simulate: {} of {} steps{}, max tracking error {:.3g} rad, {:.2f} s\n",
+             r.walk.steps_completed, steps,
+             r.walk.fell ? fmt::format(" then fell ({})", r.walk.failure) : "",
+             r.walk.max_tracking_error, r.wall_time_s);
+  if (r.poincare && r.poincare->ok)
+    fmt::print(
+        "simulate: Poincare map at step clock {:.3g} s: largest multiplier {:.4g} ({}), gait "
+        "sensitivity norm of a push {:.4g}\n",
+        r.poincare->section_clock, r.poincare->max_multiplier,
+        r.poincare->max_multiplier < 1 ? "stable" : "unstable", r.poincare->gait_sensitivity_norm);
+  else if (r.poincare)
+    fmt::print("simulate: Poincare map failed: {}\n", r.poincare->failure);
+  if (r.hzd_map)
+    fmt::print("simulate: HZD restricted multiplier {:.4g} analytic{}\n", r.hzd_map->multiplier,
+               r.hzd_measured && r.hzd_measured->ok
+                   ? fmt::format(", {:.4g} measured", r.hzd_measured->multiplier)
+                   : "");
+}
+
+}  // namespace
+
+void runSimulate(const SimulateOptions& o) {
+  const sim::ReferenceFolder ref =
+      sim::loadReferenceFolder(o.scenario.reference_dir, o.scenario.robot_path);
+  const io::OutputFolder out(o.output.out_dir, sim::scenarioInputs(o.scenario, ref));
+  sim::requireControllerFits(o.scenario, ref.model);
+  sim::Scenario scenario = sim::makeScenario(o.scenario);
+  scenario.poincare = o.poincare && !scenario.push;  // a pushed walk has no periodic cycle
+  const dynamics::Model plant = sim::scenarioPlant(ref.model, scenario);
+  if (!o.quiet)
+    fmt::print("simulate: {} steps of {} with {} on {} ground\n", scenario.steps, ref.dir,
+               scenario.controller, sim::groundName(scenario.ground));
+  const sim::Reference reference(ref.step, ref.model);
+  if (scenario.controller == "hzd") checkHzdReference(ref, reference);
+  sim::WalkRecorder recorder(plant, o.output.rate_hz);
+  const sim::ScenarioResult r = sim::runScenario(ref.model, reference, scenario, recorder.log());
+  recorder.finish();
+  printOutcome(r, scenario.steps);
+  out.write([&](const std::string& dir) {
+    recorder.writeWalkCsv(dir + "/walk.csv");
+    recorder.writeStickCsv(dir + "/stick.csv", kStickFrameInterval);
+    sim::writeStepsCsv(r.walk, dir + "/steps.csv");
+    gaits::writeJsonFile(sim::walkSummary(o.scenario, ref, scenario, plant, r),
+                         dir + "/summary.json");
+  });
+  if (o.output.plots) report::runPlotScript("walk_plots.py", {out.path()});
+  fmt::print("simulate: wrote {}/walk.csv, steps.csv, stick.csv, summary.json\n", out.path());
+}
+
+void registerSimulateCommand(CLI::App& app) {
+  auto options = std::make_shared<SimulateOptions>();
+  CLI::App* cmd =
+      app.add_subcommand("simulate", "Walk an exported gait in closed loop and measure it");
+  addScenarioOptions(cmd, options->scenario);
+  addOutputOptions(cmd, options->output);
+  cmd->add_flag("!--no-poincare", options->poincare, "Skip the Poincare map of the cycle");
+  cmd->add_flag("--quiet", options->quiet, "Less output");
+  cmd->footer(
+      "A fall is a result, not an error: exit 0 with \"fell\": true in summary.json.\n"
+      "Exit codes: 0 ok, 2 bad input, 3 infeasible input, 1 other failure.");
+  cmd->callback([options] { runSubcommand([&] { runSimulate(*options); }); });
+}
+
+}  // namespace gaitopt::apps

@@ -1,0 +1,62 @@
+#include "gaits/export/export_checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "dynamics/kinematics.hpp"
+
+namespace gaitopt::gaits {
+namespace {
+
+/// d f / dt at the middle of three samples (t0 < t1 < t2), exact for quadratics.
+Eigen::VectorXd threePointDerivative(const Knot& a, const Knot& b, const Knot& c) {
+  const double h1 = b.t - a.t, h2 = c.t - b.t;
+  return (h1 * h1 * c.theta - h2 * h2 * a.theta + (h2 * h2 - h1 * h1) * b.theta) /
+         (h1 * h2 * (h1 + h2));
+}
+
+}  // namespace
+
+double minSwingClearance(const Trajectory& traj, const dynamics::Model& model) {
+  double lowest = kInfinity;
+  for (const Knot& k : traj.knots())
+    if (k.phase == Phase::kSsp)
+      lowest = std::min(lowest, dynamics::swingTip(model, VecD(k.theta)).y());
+  return lowest;
+}
+
+double minFootCopMargin(const Trajectory& traj, const dynamics::Model& model) {
+  const dynamics::Foot& foot = model.foot();
+  double lowest = kInfinity;
+  for (const Knot& k : traj.knots()) {
+    const double normal = k.force_stance.y();
+    if (!(normal > 0)) return -kInfinity;
+    const double cop = -k.tau(0) / normal;  // the ground moment on the robot at B is -tau0
+    lowest = std::min({lowest, cop + foot.heel, foot.toe - cop});
+  }
+  return lowest;
+}
+
+double maxDspTipDrift(const Trajectory& traj, const dynamics::Model& model) {
+  double worst = 0;
+  const Vec2d pinned(traj.stepLength(), 0.0);
+  for (const Knot& k : traj.knots())
+    if (k.phase == Phase::kDsp)
+      worst = std::max(worst, (dynamics::swingTip(model, VecD(k.theta)) - pinned).norm());
+  return worst;
+}
+
+double maxRateMismatch(const Trajectory& traj) {
+  const auto& knots = traj.knots();
+  double worst = 0, scale = 0;
+  for (const Knot& k : knots) scale = std::max(scale, k.dtheta.cwiseAbs().maxCoeff());
+  for (size_t i = 1; i + 1 < knots.size(); ++i) {
+    const Knot &a = knots[i - 1], &b = knots[i], &c = knots[i + 1];
+    if (a.phase != b.phase || c.phase != b.phase || !(a.t < b.t && b.t < c.t)) continue;
+    worst = std::max(worst, (threePointDerivative(a, b, c) - b.dtheta).cwiseAbs().maxCoeff());
+  }
+  return scale > 0 ? worst / scale : worst;
+}
+
+}  // namespace gaitopt::gaits

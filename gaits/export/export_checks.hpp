@@ -1,0 +1,32 @@
+#pragma once
+/// @file export_checks.hpp
+/// What a controller relies on in a dense export (trajectory.csv), checked on its samples
+/// rather than at the solver's nodes (docs/design.md#the-optimal-control-problem): the swing tip
+/// above the ground, each loaded foot's own centre of pressure on that foot, the double-support tip
+/// where it was pinned, and rates that are the derivatives of the angles.
+#include "dynamics/model.hpp"
+#include "gaits/trajectory/trajectory.hpp"
+
+namespace gaitopt::gaits {
+
+/// Lowest swing-tip height over the SSP knots, in the ground frame [m] (0 at lift-off and at a
+/// touchdown; negative when the tip passes below the ground).
+double minSwingClearance(const Trajectory& traj, const dynamics::Model& model);
+
+/// Smallest signed distance of the stance (trailing) foot's own centre of pressure
+/// x_B = -tau0 / F_By to the ends of [-heel, toe] [m], over every knot: the ankle torque is
+/// carried by foot B alone in both phases (the tip E carries no moment), so this bounds tau0
+/// where the support-hull ZMP of minZmpMargin does not. Negative outside; -inf when F_By <= 0.
+double minFootCopMargin(const Trajectory& traj, const dynamics::Model& model);
+
+/// Largest distance of the swing tip E from its pinned place (step_length, 0) over the DSP
+/// knots, Mu (2.9) [m]; 0 for a step without a DSP.
+double maxDspTipDrift(const Trajectory& traj, const dynamics::Model& model);
+
+/// max_k |d theta/dt (finite differences of the angles) - dtheta_k|_inf / max_k |dtheta_k|_inf
+/// over the knots with a neighbour on each side in the same phase: second-order three-point
+/// differences on possibly uneven spacing [-]. Near 0 when the rates are the derivatives of
+/// the angles; a few per cent when rates and angles come from different interpolants.
+double maxRateMismatch(const Trajectory& traj);
+
+}  // namespace gaitopt::gaits

@@ -1,0 +1,38 @@
+#pragma once
+/// @file gait_params.hpp
+/// Parameters of the polynomial gait of Mu (2004) ch. 3, in gaitopt's conventions
+/// (configs/gaits/*.yaml). Mu's S_L is 2 * step_length (docs/design.md#conventions).
+#include <optional>
+#include <string>
+
+#include "gaits/polynomial/leg_ik.hpp"
+
+namespace gaitopt::gaits {
+
+struct GaitParams {
+  std::string name;
+  double step_length = 0;   ///< tip distance at touchdown [m] (Mu S_L / 2)
+  double ssp_duration = 0;  ///< T_S [s]
+  double dsp_duration = 0;  ///< T_D [s]
+  double apex_x = 0;        ///< S_m: swing-tip x at maximum clearance, from the stance tip [m]
+  double apex_height = 0;   ///< H_m: maximum clearance [m]
+  double hip_height = 0;    ///< H_h [m]
+  double hip_bob = 0;       ///< amplitude of y_h = H_h + bob cos(2 pi t / T) [m] (0: constant)
+  double hip_start = 0;     ///< S_S0: hip behind the stance tip at SSP start [m] (3.16)
+  std::optional<double> hip_dsp_start;           ///< S_D0 (3.20); empty: optimised
+  std::optional<double> hip_velocity_start;      ///< V_h1 (3.18); empty: optimised
+  std::optional<double> hip_velocity_touchdown;  ///< V_h2 (3.22); empty: optimised
+  double torso_angle = 0;                        ///< constant theta of the torso [rad]
+  /// Ground inclination gamma [rad], > 0 uphill (dynamics/model.hpp: the gait is designed in the
+  /// ground frame; only gravity rotates). `gaitopt poly` applies it with dynamics::withSlope.
+  double slope = 0;
+  KneeDirection knee = KneeDirection::kForward;
+
+  double duration() const { return ssp_duration + dsp_duration; }
+  double speed() const { return step_length / duration(); }
+};
+
+/// Loads and validates configs/gaits/*.yaml. @throws config::ConfigError.
+GaitParams loadGait(const std::string& path);
+
+}  // namespace gaitopt::gaits

@@ -1,0 +1,206 @@
+#include "io/output/output_folder.hpp"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <filesystem>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "config/config_error.hpp"
+#include "io/output/checked_write.hpp"
+
+namespace gaitopt::io {
+namespace fs = std::filesystem;
+namespace {
+
+/// The real path of `p` (its existing part resolved, links included).
+fs::path realPath(const std::string& p) {
+  std::error_code ec;
+  const fs::path r = fs::weakly_canonical(fs::absolute(p), ec);
+  return ec ? fs::absolute(p).lexically_normal() : r;
+}
+
+/// Whether `outer` is `inner` or one of its ancestors.
+bool contains(const fs::path& outer, const fs::path& inner) {
+  auto o = outer.begin(), i = inner.begin();
+  for (; o != outer.end(); ++o, ++i)
+    if (i == inner.end() || *o != *i) return false;
+  return true;
+}
+
+/// The pid of a leftover NAME.tmp-PID / NAME.old-PID of `base`, or nothing.
+std::optional<long> leftoverPid(const std::string& entry, const std::string& base,
+                                const char* kind) {
+  const std::string prefix = base + kind;
+  if (entry.size() <= prefix.size() || entry.compare(0, prefix.size(), prefix) != 0)
+    return std::nullopt;
+  const std::string digits = entry.substr(prefix.size());
+  if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9)
+    return std::nullopt;
+  return std::stol(digits);
+}
+
+bool alive(long pid) {
+  return pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
+}
+
+/// Whether `dir` is a folder gaitopt may remove: a real folder (no link) that holds the marker,
+/// or an empty one.
+bool removable(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(fs::symlink_status(dir, ec))) return false;
+  return fs::is_empty(dir, ec) || fs::is_regular_file(fs::symlink_status(dir / kMarker, ec));
+}
+
+std::string stagingName(const std::string& out, const char* kind) {
+  return out + kind + std::to_string(::getpid());
+}
+
+std::string checkedPath(const std::string& out, const std::vector<std::string>& inputs,
+                        const std::string& option) {
+  std::string path = normaliseOutPath(out, option);
+  refuseInputs(path, inputs, option);
+  return path;
+}
+
+/// Creates the staging folder `staging` afresh, marked as gaitopt's.
+void makeStaging(const fs::path& staging) {
+  // A run of an earlier process with our pid (reused) left it: ours only if removable.
+  if (fs::exists(fs::symlink_status(staging))) {
+    if (!removable(staging))
+      throw config::ConfigError(
+          staging.string(), "", 0,
+          "is in the way of this run's staging folder and was not made by gaitopt: remove it");
+    fs::remove_all(staging);
+  }
+  // create_directory fails on anything that is there, a link included; the marker goes in first
+  // so that a run killed while filling it leaves a leftover the next run knows as gaitopt's.
+  if (!fs::create_directory(staging))
+    throw WriteError(fmt::format("{}: cannot create: it appeared meanwhile", staging.string()));
+  try {
+    writeMarker(staging.string());
+  } catch (const WriteError&) {  // a full disk: nothing may be left behind
+    std::error_code ignored;
+    fs::remove_all(staging, ignored);
+    throw;
+  }
+}
+
+}  // namespace
+
+std::string normaliseOutPath(const std::string& text, const std::string& option) {
+  std::string trimmed = text;
+  while (trimmed.size() > 1 && trimmed.back() == '/') trimmed.pop_back();
+  const fs::path p = fs::path(trimmed).lexically_normal();
+  const std::string name = p.filename().string();
+  if (trimmed.empty() || name.empty() || name == "." || name == "..")
+    throw config::ConfigError(
+        option, "", 0,
+        fmt::format("'{}' names no folder of its own (not '', '.', '..' or '/'): give a new "
+                    "folder such as results/run1",
+                    text));
+  return p.string();
+}
+
+void refuseInputs(const std::string& out, const std::vector<std::string>& inputs,
+                  const std::string& option) {
+  const fs::path o = realPath(out);
+  for (const std::string& input : inputs) {
+    if (input.empty()) continue;
+    const fs::path i = realPath(input);
+    if (contains(o, i) || contains(i, o))
+      throw config::ConfigError(option, "", 0,
+                                fmt::format("'{}' is, holds or is inside the input '{}' of this "
+                                            "command: writing there would destroy it or mix "
+                                            "results into it; choose another {}",
+                                            out, input, option));
+  }
+}
+
+void requireOurs(const std::string& dir, const std::string& option) {
+  const fs::file_status s = fs::symlink_status(dir);
+  if (!fs::exists(s)) return;
+  const auto refuse = [&](const std::string& what) {
+    throw config::ConfigError(option, "", 0,
+                              fmt::format("'{}' {}; gaitopt replaces only folders it wrote "
+                                          "(they hold {}): choose another {} or remove it yourself",
+                                          dir, what, kMarker, option));
+  };
+  if (fs::is_symlink(s)) refuse("is a symbolic link");
+  if (!fs::is_directory(s)) refuse("is a file, not a folder");
+  if (!fs::is_empty(dir) && !fs::exists(fs::path(dir) / kMarker))
+    refuse("holds files that gaitopt did not write");
+}
+
+void writeMarker(const std::string& dir) {
+  writeFile((fs::path(dir) / kMarker).string(),
+            "This folder was written by gaitopt; the next gaitopt run writing here replaces it.\n");
+}
+
+void removeIfOurs(const std::string& dir) {
+  if (removable(dir)) fs::remove_all(dir);
+}
+
+void cleanLeftovers(const std::string& out) {
+  const fs::path target(out);
+  const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  const std::string base = target.filename().string();
+  std::error_code ec;
+  std::optional<fs::path> newest_old;
+  std::vector<fs::path> stale;
+  for (const auto& entry : fs::directory_iterator(parent, ec)) {
+    const std::string name = entry.path().filename().string();
+    for (const char* kind : {".tmp-", ".old-"}) {
+      const auto pid = leftoverPid(name, base, kind);
+      // A leftover is removed or restored only when gaitopt made it (removable): a user's file,
+      // link or folder that happens to carry such a name is left alone.
+      if (!pid || alive(*pid) || !removable(entry.path())) continue;
+      stale.push_back(entry.path());
+      if (std::string(kind) == ".old-" && (!newest_old || fs::last_write_time(entry.path(), ec) >
+                                                              fs::last_write_time(*newest_old, ec)))
+        newest_old = entry.path();
+    }
+  }
+  // A kill between the two renames of write() left the previous result only as OUT.old-PID.
+  if (newest_old && !fs::exists(fs::symlink_status(target))) fs::rename(*newest_old, target);
+  for (const auto& p : stale)
+    if (fs::exists(fs::symlink_status(p))) fs::remove_all(p);
+}
+
+OutputFolder::OutputFolder(const std::string& out, const std::vector<std::string>& inputs,
+                           const std::string& option)
+    : path_(checkedPath(out, inputs, option)), lock_(path_) {
+  cleanLeftovers(path_);
+  requireOurs(path_, option);
+}
+
+void OutputFolder::write(const std::function<void(const std::string&)>& fill) const {
+  const fs::path target(path_);
+  const fs::path staging = stagingName(path_, ".tmp-"), old = stagingName(path_, ".old-");
+  if (target.has_parent_path()) fs::create_directories(target.parent_path());
+  makeStaging(staging);
+  try {
+    fill(staging.string());
+  } catch (...) {
+    std::error_code ignored;
+    fs::remove_all(staging, ignored);
+    throw;
+  }
+  // Two renames: the old result stays whole until the new one is in place.
+  if (fs::exists(fs::symlink_status(target))) fs::rename(target, old);
+  fs::rename(staging, target);
+  fs::remove_all(old);
+}
+
+ResumableFolder::ResumableFolder(const std::string& dir, const std::vector<std::string>& inputs,
+                                 const std::string& option)
+    : path_(checkedPath(dir, inputs, option)), lock_(path_) {
+  requireOurs(path_, option);
+  fs::create_directories(path_);
+  if (!fs::exists(fs::path(path_) / kMarker)) writeMarker(path_);
+}
+
+}  // namespace gaitopt::io

@@ -1,0 +1,86 @@
+#pragma once
+/// @file ipopt_adapter.hpp
+/// Solves an Nlp with Ipopt (Debian's coinor-libipopt, MUMPS). The adapter only translates:
+/// bounds, the fixed sparsity patterns recorded at the initial guess, values, and the final
+/// status. Every option comes from SolverOptions (no silent defaults).
+#include <string>
+
+#include <Eigen/Core>
+
+#include "ocp/transcription/nlp.hpp"
+
+namespace gaitopt::ocp {
+
+struct SolverOptions {
+  double tolerance = 1e-6;  ///< Ipopt tol: the scaled optimality error (dual, complementarity)
+  /// Ipopt constr_viol_tol: the largest unscaled constraint violation a solution may keep. Its
+  /// own check beside `tolerance`, so a loose optimality tolerance leaves feasibility tight.
+  double constraint_tolerance = 1e-4;
+  int max_iterations = 500;       ///< Ipopt max_iter
+  std::string hessian = "exact";  ///< "exact" or "limited-memory"
+  /// "exact", or "finite-difference-values": Ipopt differences the constraints itself on our
+  /// sparsity pattern (for comparison only)
+  std::string jacobian = "exact";
+  /// "ldl": gaitopt's block LDL^T with 2x2 pivots on matched constraint rows (ocp/solve/kkt/),
+  /// which Ipopt loads as its Pardiso, and which hands a matrix its static pivots fail on to MUMPS;
+  /// or "mumps" (Debian's Ipopt ships it) for every matrix. ldl: the five-link default and
+  /// RABBIT in about 0.6 of MUMPS's time, same iterations and optimum; on path-sensitive
+  /// problems it converges about as often (results/solve_profile.md, solver_robustness.csv)
+  std::string linear_solver = "ldl";
+  std::string mu_strategy = "adaptive";  ///< barrier update: "monotone" or "adaptive"
+  double mu_init = 0.1;                  ///< initial barrier parameter
+  double bound_push = 0.01;              ///< how far Ipopt moves the start inside the bounds
+  double bound_frac = 0.01;              ///< the same, relative to the bound interval
+  /// Initial bound multipliers: "constant" (all 1) or "mu-based" (mu_init / slack, so the
+  /// start is on the central path of mu_init)
+  std::string bound_mult_init_method = "constant";
+  /// MUMPS fill-reducing ordering (ICNTL(7)): 0 AMD, 2 AMF, 3 SCOTCH, 4 PORD, 5 METIS, 6 QAMD,
+  /// 7 MUMPS chooses. AMD: 0.77 of the CPU time of a whole five-link solve against MUMPS's own
+  /// choice, 0.91 on RABBIT, same iterations (results/solve_profile.md). With "mumps" only: the
+  /// matrices "ldl" hands MUMPS are ordered by AMD (ocp/solve/kkt/mumps_factor.cpp), since Ipopt's
+  /// Pardiso door carries no MUMPS option
+  int mumps_pivot_order = 0;
+  std::string nlp_scaling_method = "gradient-based";  ///< or "none"
+  int print_level = 0;                                ///< 0 silent ... 5 Ipopt's iteration table
+  bool progress = false;                              ///< one line per iteration on stdout (ours)
+};
+
+/// Where a solve's time went and how large its linear systems were (bench/solve_profile.cpp).
+struct SolveProfile {
+  int factorizations = 0;           ///< numerical factorizations of the KKT matrix
+  double sparsity_time_s = 0;       ///< recording the Jacobian and Hessian patterns
+  double linear_solver_time_s = 0;  ///< factorizations and back-solves of the KKT system (wall)
+  /// The augmented system Ipopt factorises: variables, constraint rows and one slack per
+  /// inequality row (fixed variables included; Ipopt removes them)
+  int kkt_dimension = 0;
+  int kkt_nonzeros = 0;  ///< lower triangle: Hessian, Jacobian and the slacks' diagonal
+};
+
+struct SolveResult {
+  std::string status;  ///< Ipopt's SolverReturn name, e.g. "Solve_Succeeded"
+  bool success = false;
+  int iterations = 0;
+  double cost = 0;
+  double max_violation = 0;  ///< worst constraint or bound violation at x
+  /// The last iterate; after a failure, the evaluated point of least violation when it is
+  /// less violated than the last iterate (see `point`).
+  Eigen::VectorXd x;
+  /// Which point x is: "last iterate" or "least-violated point evaluated".
+  std::string point = "last iterate";
+  double wall_time_s = 0;
+  double callback_time_s = 0;  ///< time spent evaluating the Nlp (ours, not Ipopt's)
+  SolveProfile profile;
+};
+
+/// `options` for a start next to an optimum: a small barrier, bound multipliers on its central
+/// path (mu-based) and pushes of 1e-6 off the bounds, else the interior-point method first walks
+/// away from it. Measured on the five-link problem from its own 1 kHz export: 12 iterations
+/// against 15 from the polynomial guess; with constant multipliers 21 (pushes 1e-4), and the
+/// refinement rounds of tests/ocp/mesh_refinement_test.cpp lose their monotone error decrease
+/// with mu-based multipliers at pushes of 1e-4.
+SolverOptions warmStarted(SolverOptions options);
+
+/// @throws std::runtime_error if Ipopt cannot be initialised (bad option).
+SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options);
+
+}  // namespace gaitopt::ocp

@@ -1,0 +1,256 @@
+#include "ocp/solve/solution_report.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "gaits/export/consistency.hpp"
+#include "gaits/export/export_checks.hpp"
+#include "gaits/export/gait_export.hpp"
+#include "gaits/export/gait_summary.hpp"
+#include "gaits/export/metrics.hpp"
+#include "io/output/checked_write.hpp"
+#include "io/output/output_folder.hpp"
+
+namespace gaitopt::ocp {
+namespace {
+
+/// The worst friction ratio, or why there is none (a tip pulling on the ground).
+nlohmann::ordered_json frictionRatioJson(const gaits::Trajectory& traj) {
+  const double ratio = gaits::maxFrictionRatio(traj);
+  if (std::isfinite(ratio) && gaits::minNormalForce(traj) > 0) return ratio;
+  return "unbounded: a normal force <= 0";
+}
+
+nlohmann::ordered_json meshHistory(const std::vector<MeshRound>& history) {
+  auto rounds = nlohmann::ordered_json::array();
+  for (const auto& m : history)
+    rounds.push_back({{"segments", m.segments},
+                      {"status", m.status},
+                      {"iterations", m.iterations},
+                      {"cost", m.cost},
+                      {"max_segment_error_Nms", m.max_segment_error},
+                      {"wall_time_s", m.wall_time_s}});
+  return rounds;
+}
+
+nlohmann::ordered_json solverJson(const SolverOptions& s) {
+  return {{"tolerance", s.tolerance},
+          {"constraint_tolerance", s.constraint_tolerance},
+          {"max_iterations", s.max_iterations},
+          {"hessian", s.hessian},
+          {"jacobian", s.jacobian},
+          {"linear_solver", s.linear_solver},
+          {"mu_strategy", s.mu_strategy},
+          {"mu_init", s.mu_init},
+          {"bound_push", s.bound_push},
+          {"bound_frac", s.bound_frac},
+          {"bound_mult_init_method", s.bound_mult_init_method},
+          {"mumps_pivot_order", s.mumps_pivot_order},
+          {"nlp_scaling_method", s.nlp_scaling_method},
+          {"print_level", s.print_level}};
+}
+
+/// Every solver setting the solution came from: the config's (defaults filled in), those of
+/// the warm-started refinement rounds, and the refinement's resample rate.
+nlohmann::ordered_json solverSettings(const OcpConfig& config) {
+  auto json = solverJson(config.solver);
+  json["refinement_rounds"] = solverJson(warmStarted(config.solver));
+  json["refinement_resample_hz"] = kRefinementResampleHz;
+  return json;
+}
+
+/// The location of a violation for summary.json; `name_key` says what the name names.
+nlohmann::ordered_json violationJson(const Violation& v, const std::string& name_key) {
+  if (v.name.empty()) return nullptr;
+  using Json = nlohmann::ordered_json;
+  const bool on_grid = v.node.index >= 0;
+  return {{name_key, v.name},
+          {"phase", v.phase},
+          {"node_kind", on_grid ? Json(v.node.kind) : Json()},
+          {"node", on_grid ? Json(v.node.index) : Json()},
+          {v.part, on_grid ? v.node.entry : v.index},
+          {"value", v.value},
+          {"lower", v.lower},
+          {"upper", v.upper},
+          {"violation", v.amount}};
+}
+
+/// Peak torques below this are a passive gait's, whose residual has no torque scale [N m].
+constexpr double kPassiveTorque = 1e-3;
+
+/// A strike slower than this lands at rest (solver tolerance), and no impact type applies [m/s].
+constexpr double kAtRest = 1e-6;
+
+/// The swing tip's strike: velocity, Mu's strike angle, the impact type the state admits
+/// (Mu sec. 5.3) beside the one the config models.
+nlohmann::ordered_json strikeJson(const StrikeReport& s, const OcpConfig& config) {
+  const char* modelled = config.impact == ImpactModel::kDouble   ? "double"
+                         : config.impact == ImpactModel::kSingle ? "single"
+                                                                 : "impactless";
+  return {{"tip_velocity", {s.tip_velocity.x(), s.tip_velocity.y()}},
+          {"normal_velocity", s.normal_velocity},
+          {"angle_rad", s.angle},
+          {"impact_modelled", modelled},
+          {"impulse_leading", {s.impulse_leading.x(), s.impulse_leading.y()}},
+          {"impulse_trailing", {s.impulse_trailing.x(), s.impulse_trailing.y()}},
+          {"impact_admitted", s.normal_velocity > kAtRest ? dynamics::toString(s.admitted)
+                                                          : "none: the tip lands at rest"}};
+}
+
+/// The objective term by term (the solver's quadrature), and the share of the torque-squared
+/// regulariser in it when another term is the primary one (issue 15: a "small" regulariser was
+/// 78 % of the least-cost-of-transport objective).
+nlohmann::ordered_json costTermsJson(const Nlp& nlp, const Eigen::VectorXd& x,
+                                     const CostWeights& weights) {
+  nlohmann::ordered_json terms = nlohmann::ordered_json::object();
+  double regulariser = 0, total = 0;
+  for (const auto& term : nlp.costTerms()) {
+    const double value = term->value(x);
+    terms[term->name()] = value;
+    total += value;
+    if (term->name().ends_with("_torque_squared")) regulariser += value;
+  }
+  nlohmann::ordered_json out = {{"terms", terms}};
+  if (weights.primary() != "torque_squared" && weights.torque_squared > 0)
+    out["regulariser_share"] = total != 0 ? regulariser / total : 0.0;
+  return out;
+}
+
+/// Why a solve failed and where: the error line (also in FAILED.txt) and summary.json's keys.
+struct FailureReport {
+  std::string message;
+  nlohmann::ordered_json summary;
+};
+
+FailureReport failureReport(const GaitSolution& solution, const std::string& dir) {
+  const SolveResult& r = solution.result;
+  const Violation row = solution.problem.nlp.worstConstraint(r.x);
+  const Violation bound = solution.problem.nlp.worstBound(r.x);
+  const std::string message = fmt::format(
+      "solver status {} after {} iterations; worst violated constraint: {}; worst variable "
+      "bound: {}; {} (max violation {:.3g}) written to {}",
+      r.status, r.iterations, describe(row), describe(bound), r.point, r.max_violation, dir);
+  return {message,
+          {{"point", r.point},
+           {"worst_violation", violationJson(row, "constraint")},
+           {"worst_bound_violation", violationJson(bound, "variable")}}};
+}
+
+}  // namespace
+
+size_t writeGaitFiles(const std::string& dir, const gaits::Trajectory& traj,
+                      const dynamics::Model& model, double rate_hz,
+                      const nlohmann::ordered_json& summary, const FolderPictures& pictures) {
+  const size_t samples = gaits::writeGaitExport(dir, traj, model, rate_hz, summary);
+  if (pictures) pictures(dir);
+  return samples;
+}
+
+nlohmann::ordered_json betweenNodeMetrics(const gaits::Trajectory& dense,
+                                          const dynamics::Model& model, double rate_hz) {
+  const double defect = gaits::maxDynamicsResidual(dense, model);
+  const double peak = gaits::peakTorque(dense).maxCoeff();
+  using Json = nlohmann::ordered_json;
+  return {{"max_dynamics_defect", defect},
+          // undefined for a passive gait (no torque to compare with)
+          {"dynamics_defect_per_peak_torque", peak > kPassiveTorque ? Json(defect / peak) : Json()},
+          {"max_tip_acceleration", gaits::maxTipAcceleration(dense, model)},
+          {"min_normal_force", gaits::minNormalForce(dense)},
+          {"max_friction_ratio", frictionRatioJson(dense)},
+          {"min_zmp_margin", gaits::minZmpMargin(dense, model)},
+          {"min_foot_cop_margin", gaits::minFootCopMargin(dense, model)},
+          {"min_swing_clearance", gaits::minSwingClearance(dense, model)},
+          {"max_dsp_tip_drift", gaits::maxDspTipDrift(dense, model)},
+          {"max_rate_mismatch", gaits::maxRateMismatch(dense)},
+          {"rate_hz", rate_hz}};
+}
+
+nlohmann::ordered_json solutionSummary(const GaitResultOptions& o, const dynamics::Model& model,
+                                       const OcpConfig& config, const GaitSolution& solution,
+                                       const nlohmann::ordered_json& failure,
+                                       const gaits::Trajectory& dense) {
+  const GaitProblem& problem = solution.problem;
+  const SolveResult& r = solution.result;
+  const gaits::Trajectory traj = reconstruct(problem, model, r.x);
+  auto summary = gaits::gaitSummary(traj, model,
+                                    {o.config_path, r.status, r.iterations, r.wall_time_s,
+                                     r.callback_time_s, config.cost.primary()});
+  summary["converged"] = r.success;
+  if (!o.config_overrides.empty()) summary["config_overrides"] = o.config_overrides;
+  summary["cost"] = r.cost;  // the solver's objective (the scheme's own quadrature)
+  summary["cost_terms"] = costTermsJson(problem.nlp, r.x, config.cost);
+  summary["cost_quadrature"] = fmt::format(
+      "the solver's objective: {} quadrature on the "
+      "collocation points",
+      toString(problem.ssp.layout.scheme));
+  // The integrals over what a controller receives (trajectory.csv); the collocation points'
+  // own trapezoid values under at_nodes.
+  summary["at_nodes"] = {{"energy_J", summary["energy_J"]},
+                         {"torque_squared", summary["torque_squared"]},
+                         {"cost_of_transport", summary["cost_of_transport"]},
+                         {"quadrature", "trapezoid on the collocation points"}};
+  summary["energy_J"] = gaits::absoluteWork(dense);
+  summary["torque_squared"] = gaits::torqueSquaredIntegral(dense);
+  summary["cost_of_transport"] = gaits::costOfTransport(dense, model);
+  summary["integral_quadrature"] = fmt::format("trapezoid on trajectory.csv ({:g} Hz)", o.rate_hz);
+  if (const auto loss = problem.touchdown.energyLoss(model, r.x))
+    summary["impact_energy_loss_J"] = *loss;
+  summary["strike"] = strikeJson(problem.touchdown.strike(model, r.x), config);
+  summary["max_violation"] = r.max_violation;
+  if (!failure.is_null()) summary.update(failure);
+  // The constraints hold at the collocation points; the dense export shows how far they are
+  // missed between them.
+  summary["between_nodes"] = betweenNodeMetrics(dense, model, o.rate_hz);
+  summary["nlp"] = {
+      {"variables", problem.nlp.variables()},
+      {"constraints", problem.nlp.constraints()},
+      {"segments", solution.history.back().segments},
+      {"scheme", toString(problem.ssp.layout.scheme)},
+      {"dsp_pin", problem.dsp && problem.dsp->reduced_coordinates ? "position (reduced coordinates)"
+                                                                  : "acceleration"}};
+  summary["mesh_history"] = meshHistory(solution.history);
+  summary["solver"] = solverSettings(config);
+  return summary;
+}
+
+nlohmann::ordered_json writeGaitResult(const GaitResultOptions& o, const dynamics::Model& model,
+                                       const OcpConfig& config, const GaitSolution& solution,
+                                       const nlohmann::ordered_json& failure,
+                                       const std::string& dir) {
+  // Between the points the export follows the scheme's own polynomials.
+  const gaits::Trajectory dense =
+      reconstructDense(solution.problem, model, solution.result.x, o.rate_hz);
+  const auto summary = solutionSummary(o, model, config, solution, failure, dense);
+  writeGaitFiles(dir, dense, model, o.rate_hz, summary, o.pictures);
+  return summary;
+}
+
+namespace {
+
+/// FAILED.txt, so that a person browsing the folders cannot mistake it for a gait. The folder
+/// is renamed into place only when complete, so a plain write suffices.
+void writeFailedNote(const std::string& path, const std::string& message) {
+  io::writeFile(path,
+                "This folder holds a failed solve, not a gait: do not use it as a "
+                "reference.\n" +
+                    message + '\n');
+}
+
+}  // namespace
+
+std::string writeFailedResult(const GaitResultOptions& o, const dynamics::Model& model,
+                              const OcpConfig& config, const GaitSolution& solution,
+                              const std::string& failed_dir) {
+  const FailureReport report = failureReport(solution, failed_dir);
+  std::vector<std::string> inputs = ocpInputs(config);
+  inputs.push_back(o.config_path);
+  io::OutputFolder(failed_dir, inputs).write([&](const std::string& dir) {
+    writeGaitResult(o, model, config, solution, report.summary, dir);
+    writeFailedNote(dir + "/FAILED.txt", report.message);
+  });
+  return report.message;
+}
+
+}  // namespace gaitopt::ocp

@@ -1,0 +1,33 @@
+#pragma once
+/// @file collocation_interpolation.hpp
+/// The polynomials a collocation scheme implies between its points (Kelly, SIAM Review 2017,
+/// trapezoidal and Hermite-Simpson interpolation), so that a solution is read between the
+/// nodes exactly as the transcription assumed it:
+///   trapezoidal:     xdot, u, z linear on a segment, x its integral (quadratic);
+///   Hermite-Simpson: xdot, u, z quadratic through node, midpoint and node, x cubic.
+/// In the second-order form x = (q, v) the derivative of q is the interpolated v of the points
+/// and that of v the interpolated acceleration.
+#include <Eigen/Core>
+
+#include "ocp/transcription/collocation.hpp"
+
+namespace gaitopt::ocp {
+
+/// The segment holding phase time t (clamped to the phase), for duration `total`.
+int segmentAt(const PhaseLayout& layout, double t, double total);
+
+/// The point variables [x, xdot, u, z] at phase time t of the solution `decision`.
+Eigen::VectorXd interpolatePoint(const PhaseLayout& layout, const Eigen::VectorXd& decision,
+                                 double t);
+
+/// As interpolatePoint, but in the second-order form q is the double integral of the
+/// interpolated acceleration from the segment's first point (q_k + v_k tau + double integral
+/// of a), so that q, v and a of the export are derivatives of one another, as a controller and
+/// the simulator's quintic reference between samples take them. interpolatePoint's q integrates
+/// the interpolated v instead, which differs from the integral of a by a cubic vanishing at the
+/// three points: rates up to 2 % off the angles' derivatives. Both meet the points' q at the
+/// segment ends (Simpson's rule integrates that cubic exactly); this one misses the midpoint's
+/// q by O(h^4).
+Eigen::VectorXd exportPoint(const PhaseLayout& layout, const Eigen::VectorXd& decision, double t);
+
+}  // namespace gaitopt::ocp

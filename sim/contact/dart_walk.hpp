@@ -1,0 +1,32 @@
+#pragma once
+/// @file dart_walk.hpp
+/// Walking in the DART physics engine (DART 6.12, dartsim.github.io): the robot of
+/// dynamics/urdf_export.hpp, its feet bodies that tip when the centre of pressure leaves them, on
+/// a floor box, advanced by DART's time stepping (semi-implicit Euler with its boxed LCP contact
+/// solver and Coulomb friction from the robot file, restitution 0). The root link is a
+/// PlanarJoint in the ZX plane, so the walk stays in the x-z plane.
+///
+/// The toolkit closes the loop on DART's state once per time step (1 kHz with the shipped
+/// configs/grounds/dart.yaml): the free-base state of free_base_walk.hpp is read from DART's
+/// bodies (absolute link angles, the stance ankle as B), relabelled as the legs swap (Mu 2.38),
+/// and the controller's joint torques go to the DART joints that are the model's joints in the
+/// current labelling. The phases, relabelling, pushes and failure rule are free_base_walk.hpp's,
+/// the same as on the toolkit's own grounds. The floor's top lies the sole depth below the tip
+/// (FootBody), so a flat foot's tip is at the model's ground height y = 0.
+///
+/// The swing foot, which the model does not have, is held level by its ankle: a critically
+/// damped PD on the foot's angle of bandwidth 0.1 / h (resolved by the time step), while the
+/// foot carries no load; loaded, the ankle is a free hinge, as the model's leading tip in double
+/// support (conventions.hpp).
+#include "sim/contact/ground_model.hpp"
+#include "sim/walk/free_base_walk.hpp"
+
+namespace gaitopt::sim {
+
+/// The walk of free_base_walk.hpp in DART (impact = "dart").
+/// @throws std::invalid_argument when this build has no DART (cmake -DGAITOPT_DART=ON).
+WalkResult walkDart(const dynamics::Model& plant, const Controller& controller,
+                    const Reference& ref, const DartGround& ground, const WalkPlan& plan,
+                    const WalkLog& log = {}, const VecD& theta0 = {}, const VecD& dtheta0 = {});
+
+}  // namespace gaitopt::sim

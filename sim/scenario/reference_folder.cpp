@@ -1,0 +1,92 @@
+#include "sim/scenario/reference_folder.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "config/config_error.hpp"
+#include "dynamics/model_variation.hpp"
+#include "dynamics/robot_config.hpp"
+#include "gaits/trajectory/trajectory_csv.hpp"
+#include "io/data_dir.hpp"
+#include "io/strict_json.hpp"
+#include "io/terminal_text.hpp"
+
+namespace gaitopt::sim {
+namespace {
+
+/// The robot file named by the folder's summary.json, by the configs/robots convention: under the
+/// working directory (a user's own robots), else the shipped one (io/data_dir.hpp).
+std::string robotOfFolder(const std::string& dir) {
+  const std::string summary = dir + "/summary.json";
+  if (!std::filesystem::is_regular_file(summary))
+    throw config::ConfigError(summary, "", 0,
+                              "cannot read it: is this a gait result folder? (or pass --robot)");
+  const auto json = io::readStrictJson(summary);
+  if (!json.is_object() || !json.contains("robot") || !json["robot"].is_string())
+    throw config::ConfigError(summary, "robot", 0, "expected the robot's name (or pass --robot)");
+  const std::string path = "configs/robots/" + json["robot"].get<std::string>() + ".yaml";
+  if (std::filesystem::exists(path)) return path;
+  if (const std::string shipped = io::dataFile(path); std::filesystem::exists(shipped))
+    return shipped;
+  throw config::ConfigError(
+      summary, "robot", 0,
+      fmt::format("no {} under the working directory nor among the shipped robots ({}); pass "
+                  "--robot FILE",
+                  path, io::dataDir()));
+}
+
+/// The ground slope the gait was designed for: summary.json's "slope_rad", 0 when the folder
+/// has no summary or the key (results written before slopes existed) [rad].
+double slopeOfFolder(const std::string& dir) {
+  const std::string summary = dir + "/summary.json";
+  if (!std::filesystem::is_regular_file(summary)) return 0.0;
+  const auto json = io::readStrictJson(summary);
+  if (!json.is_object() || !json.contains("slope_rad")) return 0.0;
+  const auto& slope = json["slope_rad"];
+  if (!slope.is_number() || !(std::abs(slope.get<double>()) <= dynamics::kMaxConfigSlope))
+    throw config::ConfigError(summary, "slope_rad", 0,
+                              fmt::format("expected a slope in [-{0}, {0}] rad, got {1}",
+                                          dynamics::kMaxConfigSlope, slope.dump()));
+  return slope.get<double>();
+}
+
+}  // namespace
+
+void requireGaitOf(const std::string& dir, const dynamics::Model& model) {
+  if (std::filesystem::exists(dir + "/FAILED.txt"))
+    throw config::ConfigError(dir, "", 0,
+                              "holds a failed solve (FAILED.txt), not a gait: use a converged "
+                              "result");
+  const std::string summary = dir + "/summary.json";
+  if (!std::filesystem::is_regular_file(summary)) return;  // a bare trajectory.csv: no record
+  const auto json = io::readStrictJson(summary);
+  if (!json.is_object()) throw config::ConfigError(summary, "", 0, "expected a JSON object");
+  if (json.contains("converged") && json["converged"] == false)
+    throw config::ConfigError(summary, "converged", 0,
+                              "the solve did not converge: this is not a gait to use");
+  if (json.contains("robot") && json["robot"].is_string() && json["robot"] != model.name())
+    throw config::ConfigError(
+        summary, "robot", 0,
+        fmt::format("the gait is of robot '{}', not of robot '{}' used here",
+                    io::printable(json["robot"].get<std::string>()), model.name()));
+}
+
+ReferenceFolder loadReferenceFolder(const std::string& dir, const std::string& robot_path) {
+  if (!std::filesystem::is_directory(dir))
+    throw config::ConfigError(dir, "", 0, "not a folder (expected a gait result folder)");
+  const std::string robot = robot_path.empty() ? robotOfFolder(dir) : robot_path;
+  // The plant and the controller's model walk on the slope the reference was designed for.
+  dynamics::Model model = dynamics::withSlope(dynamics::loadRobot(robot), slopeOfFolder(dir));
+  requireGaitOf(dir, model);
+  gaits::Trajectory step = gaits::readTrajectoryCsv(dir + "/trajectory.csv", model);
+  if (step.knots().size() < 2)
+    throw config::ConfigError(
+        dir + "/trajectory.csv", "", 0,
+        fmt::format("{} sample(s): a step needs at least 2", step.knots().size()));
+  return {dir, robot, std::move(model), std::move(step)};
+}
+
+}  // namespace gaitopt::sim

@@ -1,0 +1,32 @@
+#pragma once
+/// @file reference_folder.hpp
+/// A gait result folder (from `gaitopt poly` or `gaitopt optimize`) as the input of the
+/// closed-loop commands: its robot and its one-step trajectory.csv.
+#include <string>
+
+#include "dynamics/model.hpp"
+#include "gaits/trajectory/trajectory.hpp"
+
+namespace gaitopt::sim {
+
+struct ReferenceFolder {
+  std::string dir;
+  std::string robot_path;
+  dynamics::Model model;
+  gaits::Trajectory step;
+};
+
+/// @throws config::ConfigError unless the result folder `dir` holds a usable gait of `model`:
+/// no FAILED.txt, not "converged": false, and summary.json's robot (when recorded) is model's.
+void requireGaitOf(const std::string& dir, const dynamics::Model& model);
+
+/// Reads DIR/trajectory.csv (with the switch states of DIR/summary.json put back, so the step's
+/// SSP ends at the touchdown in the pre-impact state and its DSP ends at the period:
+/// gaits/trajectory/trajectory_csv.hpp) for the robot `robot_path`, or, when that is empty, for
+/// configs/robots/<summary.json's "robot">.yaml under the working directory. The model carries
+/// summary.json's "slope_rad" (0 when absent), so a simulation walks the reference's slope.
+/// @throws config::ConfigError naming the file and what is wrong (missing folder, unknown robot,
+///         a trajectory that does not fit the robot).
+ReferenceFolder loadReferenceFolder(const std::string& dir, const std::string& robot_path);
+
+}  // namespace gaitopt::sim

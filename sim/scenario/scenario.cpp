@@ -1,0 +1,159 @@
+#include "sim/scenario/scenario.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "sim/controllers/hzd_controller.hpp"
+#include "sim/walk/walk.hpp"
+
+namespace gaitopt::sim {
+namespace {
+
+TrackingGains scaledGains(TrackingGains g, double s) {
+  if (!(std::isfinite(s) && s > 0))
+    throw std::invalid_argument("gain_scale must be a positive number");
+  g.kp *= s * s;
+  g.kd *= s;
+  g.lambda *= s;
+  g.switching *= s * s;
+  return g;
+}
+
+/// Mu's constants at bandwidth factor s: Lambda by s, the tanh slopes unchanged.
+MuSlidingModeGains scaledGains(MuSlidingModeGains g, double s) {
+  g.ssp_lambda *= s;
+  g.dsp_lambda *= s;
+  return g;
+}
+
+const std::vector<SweepParameter> kParameters{
+    {config::kPush,
+     "horizontal impulse on the hip, a 0.1 s pulse from mid single support of step 2", -15, 15, 31},
+    {config::kMassError, "relative error of the masses and inertias (Mu e_m = e_I)", -0.5, 2.0, 26},
+    {config::kLengthError, "relative error of the link lengths and CoM offsets (Mu e_l = e_d)",
+     -0.3, 0.5, 17},
+    {config::kFriction, "Coulomb coefficient of the ground", 0.05, 1.0, 20},
+    {config::kStiffness, "impedance ground stiffness, damping scaled alike (impedance ground only)",
+     1e4, 1e9, 11, true},
+    {config::kGainScale, "controller bandwidth factor (kp, K by s^2; kd, lambda by s)", 0.1, 3.0,
+     30},
+};
+
+}  // namespace
+
+dynamics::Model scenarioPlant(const dynamics::Model& nominal, const Scenario& s) {
+  const dynamics::Model plant =
+      s.errors_on_controller ? nominal : dynamics::perturbedModel(nominal, s.parameter_errors);
+  return s.friction ? dynamics::withFriction(plant, *s.friction) : plant;
+}
+
+dynamics::Model scenarioControllerModel(const dynamics::Model& nominal, const Scenario& s) {
+  return s.errors_on_controller ? dynamics::perturbedModel(nominal, s.parameter_errors) : nominal;
+}
+
+namespace {
+
+/// HZD's restricted map on the controller's constraints: analytic, and measured on the plant.
+void analyseHzd(const dynamics::Model& plant, const dynamics::Model& model,
+                const HzdController& hzd, const Reference& ref, const Scenario& s,
+                ScenarioResult& r) {
+  r.hzd_map = restrictedMap(model, hzd.constraints());
+  const auto* rigid = std::get_if<RigidGround>(&s.ground);
+  if (s.poincare && rigid && r.hzd_map->zeta_minus > 0)
+    r.hzd_measured =
+        measureRestrictedMap(plant, hzd, ref, hzd.constraints(),
+                             r.hzd_map->multiplier * r.hzd_map->zeta_minus, rigid->integrator);
+}
+
+}  // namespace
+
+BoundSide muBoundSide(const Scenario& s) {
+  const auto& e = s.parameter_errors;
+  const bool overestimates = e.mass >= 0 && e.inertia >= 0 && e.length >= 0 && e.com >= 0;
+  return s.errors_on_controller && overestimates ? BoundSide::kOverestimated
+                                                 : BoundSide::kEitherWay;
+}
+
+ScenarioResult runScenario(const dynamics::Model& nominal, const Reference& ref, const Scenario& s,
+                           const WalkLog& log) {
+  const auto start = std::chrono::steady_clock::now();
+  const dynamics::Model plant = scenarioPlant(nominal, s);
+  const dynamics::Model model = scenarioControllerModel(nominal, s);
+  const TrackingGains gains = scaledGains(s.gains, s.gain_scale);
+  ScenarioResult r;
+  std::unique_ptr<Controller> controller;
+  if (s.controller == "hzd") {
+    auto hzd = makeHzdController(model, ref, makeTrackingLaw("computed_torque", gains));
+    analyseHzd(plant, model, *hzd, ref, s, r);
+    controller = std::move(hzd);
+  } else if (s.controller == "mu_sliding_mode") {
+    controller = std::make_unique<MuSlidingModeController>(
+        model, scaledGains(s.mu_gains, s.gain_scale), s.uncertainty_bound, muBoundSide(s));
+  } else {
+    controller = std::make_unique<TrackingController>(model, makeTrackingLaw(s.controller, gains));
+  }
+  r.walk = walk(plant, *controller, ref, s.ground, WalkPlan{s.steps, s.push, s.rules}, log);
+  if (s.poincare) {
+    if (const auto* rigid = std::get_if<RigidGround>(&s.ground)) {
+      PoincareOptions options;
+      options.integrator = rigid->integrator;
+      options.rules = s.rules;
+      r.poincare = analysePoincare(plant, *controller, ref, options);
+    }
+  }
+  r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+const std::vector<SweepParameter>& sweepParameters() {
+  return kParameters;
+}
+
+const SweepParameter& sweepParameter(const std::string& name) {
+  for (const auto& p : kParameters)
+    if (p.name() == name) return p;
+  std::string known;
+  for (const auto& p : kParameters) known += (known.empty() ? "" : ", ") + p.name();
+  throw std::invalid_argument("unknown sweep parameter '" + name + "' (expected one of " + known +
+                              ")");
+}
+
+double sweepValue(const Scenario& s, const std::string& name) {
+  sweepParameter(name);
+  if (name == "push") return s.push ? s.push->impulse(0) : 0.0;
+  if (name == "mass_error") return s.parameter_errors.mass;
+  if (name == "length_error") return s.parameter_errors.length;
+  if (name == "gain_scale") return s.gain_scale;
+  if (name == "friction") return s.friction.value_or(std::numeric_limits<double>::quiet_NaN());
+  const auto* compliant = std::get_if<CompliantGround>(&s.ground);
+  return compliant ? compliant->contact.stiffness : std::numeric_limits<double>::quiet_NaN();
+}
+
+void setSweepValue(Scenario& s, const std::string& name, double value) {
+  sweepParameter(name);
+  if (name == "push") {
+    Push push = s.push.value_or(Push{});
+    push.impulse = Vec2d(value, 0);
+    s.push = push;
+  } else if (name == "mass_error") {
+    s.parameter_errors.mass = s.parameter_errors.inertia = value;
+  } else if (name == "length_error") {
+    s.parameter_errors.length = s.parameter_errors.com = value;
+  } else if (name == "gain_scale") {
+    s.gain_scale = value;
+  } else if (name == "friction") {
+    s.friction = value;
+  } else if (auto* compliant = std::get_if<CompliantGround>(&s.ground)) {
+    // Damping with the stiffness, so alpha = 2c / (3k) and the restitution stay the same.
+    compliant->contact.damping *= value / compliant->contact.stiffness;
+    compliant->contact.stiffness = value;
+  } else {
+    throw std::invalid_argument(
+        "stiffness is swept on the impedance ground only (--ground "
+        "impedance)");
+  }
+}
+
+}  // namespace gaitopt::sim

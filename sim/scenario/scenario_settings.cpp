@@ -1,0 +1,94 @@
+#include "sim/scenario/scenario_settings.hpp"
+
+#include <fmt/format.h>
+
+#include "config/config_error.hpp"
+#include "io/data_dir.hpp"
+#include "sim/contact/ground_config.hpp"
+
+namespace gaitopt::sim {
+
+namespace {
+bool isBuiltinGround(const std::string& ground) {
+  return ground == "rigid" || ground == "impedance" || ground == "lcp" || ground == "dart";
+}
+}  // namespace
+
+std::string groundPath(const std::string& ground) {
+  if (isBuiltinGround(ground)) return io::dataFile(groundRecord(ground));
+  return ground;
+}
+
+std::string groundRecord(const std::string& ground) {
+  return isBuiltinGround(ground) ? "configs/grounds/" + ground + ".yaml" : ground;
+}
+
+Scenario makeScenario(const ScenarioSettings& o) {
+  Scenario s;
+  s.controller = o.controller;
+  s.steps = o.steps;
+  s.ground = loadGround(groundPath(o.ground));
+  s.parameter_errors = dynamics::muUncertaintyCase(o.uncertainty_case);
+  s.errors_on_controller = o.uncertainty_on == "controller";
+  s.mu_gains = muTable42(o.uncertainty_case);
+  // Mu's setting: the controller knows how far its model may be off (sec. 4.3).
+  if (s.errors_on_controller) s.uncertainty_bound = s.parameter_errors;
+  if (o.friction >= 0) s.friction = o.friction;
+  if (o.push != 0) setSweepValue(s, "push", o.push);
+  if (o.mass_error) setSweepValue(s, "mass_error", *o.mass_error);
+  if (o.length_error) setSweepValue(s, "length_error", *o.length_error);
+  s.gain_scale = o.gain_scale;
+  s.rules = o.rules;
+  return s;
+}
+
+std::vector<std::string> scenarioInputs(const ScenarioSettings& o, const ReferenceFolder& ref) {
+  return {ref.dir, ref.robot_path, groundPath(o.ground)};
+}
+
+void requireControllerFits(const ScenarioSettings& o, const dynamics::Model& model) {
+  // HZD (hzd_controller.hpp) leaves the unactuated stance ankle to the zero dynamics.
+  if (o.controller == "hzd" || model.joints().front().actuated) return;
+  throw config::ConfigError(
+      "--controller", o.controller, 0,
+      fmt::format("the {} controller imposes all {} joint accelerations through the joint "
+                  "torques, so it needs an actuated stance ankle; robot '{}' has a passive one "
+                  "(walk it with --controller hzd)",
+                  o.controller, model.nLinks(), model.name()));
+}
+
+nlohmann::ordered_json scenarioJson(const ScenarioSettings& o, const Scenario& s) {
+  return {{"reference", o.reference_dir},
+          {"controller", s.controller},
+          {"gain_scale", s.gain_scale},
+          {"ground", groundName(s.ground)},
+          {"ground_file", groundRecord(o.ground)},
+          {"uncertainty_case", o.uncertainty_case},
+          {"uncertainty_on", o.uncertainty_on},
+          {"parameter_errors",
+           {{"mass", s.parameter_errors.mass},
+            {"inertia", s.parameter_errors.inertia},
+            {"length", s.parameter_errors.length},
+            {"com", s.parameter_errors.com}}},
+          {"push_impulse_Ns", o.push},
+          {"mu_sliding_mode",
+           {{"gains_table_4_2",
+             {{"ssp_lambda", s.mu_gains.ssp_lambda},
+              {"ssp_gamma", s.mu_gains.ssp_gamma},
+              {"ssp_sigma", s.mu_gains.ssp_sigma},
+              {"dsp_lambda", s.mu_gains.dsp_lambda},
+              {"dsp_alpha", s.mu_gains.dsp_alpha},
+              {"dsp_sigma", s.mu_gains.dsp_sigma}}},
+            {"uncertainty_bound",
+             {{"mass", s.uncertainty_bound.mass},
+              {"inertia", s.uncertainty_bound.inertia},
+              {"length", s.uncertainty_bound.length},
+              {"com", s.uncertainty_bound.com}}},
+            {"uncertainty_side", muBoundSide(s) == BoundSide::kOverestimated
+                                     ? "model overestimates (Mu sec. 4.2)"
+                                     : "either way"}}},
+          {"steps_requested", s.steps},
+          {"contact_rules", contactRulesJson(s.rules)}};
+}
+
+}  // namespace gaitopt::sim

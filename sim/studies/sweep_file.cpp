@@ -1,0 +1,75 @@
+#include "sim/studies/sweep_file.hpp"
+
+#include <optional>
+
+#include <fmt/format.h>
+
+namespace gaitopt::sim {
+namespace {
+
+const io::Row kOutcome = {"steps_completed",    "steps_requested", "fell",         "failure",
+                          "max_tracking_error", "max_multiplier",  "mean_advance", "wall_time_s"};
+
+std::string number(double v) {
+  return fmt::format("{:.12g}", v);
+}
+
+io::Row header(std::vector<std::string> coordinates) {
+  coordinates.insert(coordinates.end(), kOutcome.begin(), kOutcome.end());
+  return coordinates;
+}
+
+/// A row back from its fields (`m` leading coordinates), or nothing for a foreign one.
+std::optional<SweepRow> parseRow(const io::Row& f, std::size_t m) {
+  try {
+    SweepRow r{std::stod(f[0]),
+               std::stoi(f[m]),
+               std::stoi(f[m + 1]),
+               f[m + 2] == "1",
+               f[m + 3],
+               std::stod(f[m + 4]),
+               f[m + 5].empty() ? -1 : std::stod(f[m + 5]),
+               std::stod(f[m + 6]),
+               std::stod(f[m + 7])};
+    if (m == 2) r.value_b = std::stod(f[1]);
+    return r;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+std::string SweepFile::key(double value) {
+  return fmt::format("{:.10g}", value);
+}
+
+std::string SweepFile::key(double a, double b) {
+  return key(a) + ',' + key(b);
+}
+
+std::string SweepFile::keyOf(const SweepRow& row) const {
+  return map_ ? key(row.value, row.value_b) : key(row.value);
+}
+
+SweepFile::SweepFile(std::string path, std::vector<std::string> coordinates)
+    : map_(coordinates.size() == 2),
+      log_(std::move(path), header(coordinates), coordinates.size()) {
+  for (const auto& [text, fields] : log_.rows())
+    if (const auto row = parseRow(fields, coordinates.size())) rows_[keyOf(*row)] = *row;
+}
+
+void SweepFile::append(const SweepRow& row) {
+  io::Row fields{key(row.value)};
+  if (map_) fields.push_back(key(row.value_b));
+  fields.insert(fields.end(),
+                {std::to_string(row.steps_completed), std::to_string(row.steps_requested),
+                 row.fell ? "1" : "0", row.failure, number(row.max_tracking_error),
+                 row.max_multiplier < 0 ? std::string() : number(row.max_multiplier),
+                 number(row.mean_advance), number(row.wall_time_s)});
+  log_.append(fields);
+  const std::lock_guard lock(mutex_);  // counted only once it is on disk
+  rows_[keyOf(row)] = row;
+}
+
+}  // namespace gaitopt::sim

@@ -1,0 +1,97 @@
+#include "sim/studies/sweep_study.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+#include "config/quantities.hpp"
+#include "io/settings_record.hpp"
+
+namespace gaitopt::sim {
+
+std::vector<double> sweepValues(const SweepParameter& p, const gaits::GridAxis& axis) {
+  // The ends bound every value between them.
+  for (const double end : {axis.first, axis.last})
+    if (std::string why = config::rangeError(p.quantity, end); !why.empty())
+      throw std::invalid_argument(why);
+  if (p.geometric && !(axis.first > 0 && axis.last > 0))
+    throw std::invalid_argument("a geometric range needs positive ends");
+  std::vector<double> values;
+  for (int k = 0; k < axis.count; ++k) {
+    const double v = !p.geometric || axis.count == 1
+                         ? axis.value(k)
+                         : axis.first * std::pow(axis.last / axis.first,
+                                                 static_cast<double>(k) / (axis.count - 1));
+    const double scale = std::max(std::abs(axis.first), std::abs(axis.last));
+    values.push_back(std::abs(v) < 1e-12 * scale ? 0.0 : v);
+  }
+  return values;
+}
+
+SweepRow walkSweepPoint(const dynamics::Model& model, const Reference& reference, Scenario scenario,
+                        const std::string& name, double value) {
+  setSweepValue(scenario, name, value);
+  const ScenarioResult r = runScenario(model, reference, scenario);
+  SweepRow row{value,       r.walk.steps_completed, scenario.steps,
+               r.walk.fell, r.walk.failure,         r.walk.max_tracking_error};
+  if (r.poincare && r.poincare->ok) row.max_multiplier = r.poincare->max_multiplier;
+  if (r.walk.steps_completed > 0)
+    row.mean_advance = completedTotals(r.walk).distance / r.walk.steps_completed;
+  row.wall_time_s = r.wall_time_s;
+  return row;
+}
+
+nlohmann::ordered_json walkingInterval(const SweepParameter& parameter,
+                                       const std::map<std::string, SweepRow>& by_key,
+                                       double nominal) {
+  std::vector<SweepRow> rows;
+  for (const auto& [k, row] : by_key) rows.push_back(row);
+  std::sort(rows.begin(), rows.end(),
+            [](const SweepRow& a, const SweepRow& b) { return a.value < b.value; });
+  const auto walks = [](const SweepRow& r) {
+    return !r.fell && r.steps_completed == r.steps_requested;
+  };
+  nlohmann::ordered_json j{{"unit", parameter.unit()},
+                           {"meaning", parameter.meaning},
+                           {"values", rows.size()},
+                           {"nominal", std::isfinite(nominal) ? nlohmann::ordered_json(nominal)
+                                                              : nlohmann::ordered_json()},
+                           {"walks_from", nullptr},
+                           {"walks_to", nullptr}};
+  if (rows.empty() || !std::isfinite(nominal)) return j;
+  std::size_t c = 0;  // the point nearest the nominal value
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    if (std::abs(rows[i].value - nominal) < std::abs(rows[c].value - nominal)) c = i;
+  if (!walks(rows[c])) return j;
+  std::size_t lo = c, hi = c;
+  while (lo > 0 && walks(rows[lo - 1])) --lo;
+  while (hi + 1 < rows.size() && walks(rows[hi + 1])) ++hi;
+  j["walks_from"] = rows[lo].value;
+  j["walks_to"] = rows[hi].value;
+  if (lo > 0) j["fails_below"] = {{"value", rows[lo - 1].value}, {"failure", rows[lo - 1].failure}};
+  if (hi + 1 < rows.size())
+    j["fails_above"] = {{"value", rows[hi + 1].value}, {"failure", rows[hi + 1].failure}};
+  return j;
+}
+
+nlohmann::ordered_json sweepFolderSettings(const ScenarioSettings& s, const ReferenceFolder& ref,
+                                           const Scenario& base) {
+  nlohmann::ordered_json j = scenarioJson(s, base);
+  // Paths differ between machines and say nothing of what they held: the bytes are keyed.
+  j.erase("reference");
+  j.erase("ground_file");
+  j["robot"] = ref.model.name();
+  j["robot_file_fnv1a"] = io::fileFingerprint(ref.robot_path);
+  j["reference_trajectory_fnv1a"] = io::fileFingerprint(ref.dir + "/trajectory.csv");
+  // summary.json carries the switch states and the slope the reference is walked with.
+  const std::string summary = ref.dir + "/summary.json";
+  j["reference_summary_fnv1a"] =
+      std::filesystem::exists(summary) ? io::fileFingerprint(summary) : "(absent)";
+  j["ground_file_fnv1a"] = io::fileFingerprint(groundPath(s.ground));
+  j["friction"] = s.friction;
+  j["poincare"] = base.poincare;
+  return j;
+}
+
+}  // namespace gaitopt::sim

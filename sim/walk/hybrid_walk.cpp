@@ -1,0 +1,55 @@
+#include "sim/walk/hybrid_walk.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+namespace gaitopt::sim {
+
+bool appendStep(WalkResult& walk, const StepResult& step) {
+  walk.max_tracking_error = std::max(walk.max_tracking_error, step.max_tracking_error);
+  walk.max_slip = std::max(walk.max_slip, step.slip);
+  walk.min_cop_margin = std::min(walk.min_cop_margin, step.min_cop_margin);
+  walk.cop_saturated_time += step.cop_saturated_time;
+  walk.steps.push_back(step);
+  if (!step.ok) {
+    walk.fell = true;
+    walk.failure = fmt::format("step {}: {}", walk.steps.size(), step.failure);
+    return false;
+  }
+  ++walk.steps_completed;
+  return true;
+}
+
+WalkTotals completedTotals(const WalkResult& walk) {
+  WalkTotals totals;
+  for (int k = 0; k < walk.steps_completed; ++k) {
+    const StepResult& s = walk.steps[static_cast<std::size_t>(k)];
+    totals.distance += s.advance;
+    totals.duration += s.ssp_duration + s.dsp_duration;
+  }
+  return totals;
+}
+
+WalkResult simulateWalk(const dynamics::Model& plant, const Controller& controller,
+                        const Reference& ref, const WalkOptions& options, const WalkLog& log,
+                        const VecD& theta0, const VecD& dtheta0) {
+  WalkResult w;
+  VecD theta = theta0.size() ? theta0 : VecD(ref.start().theta);
+  VecD dtheta = dtheta0.size() ? dtheta0 : VecD(ref.start().dtheta);
+  double t = 0, stance_x = 0, stance_velocity = 0;
+  for (int k = 0; k < options.steps; ++k) {
+    const StepResult s =
+        simulateStep(plant, controller, ref, theta, dtheta, options.integrator, log, t, k, stance_x,
+                     options.push, options.rules, stance_velocity);
+    if (!appendStep(w, s)) break;
+    t += s.ssp_duration + s.dsp_duration;
+    stance_x += s.advance;
+    stance_velocity = s.stance_velocity;
+    theta = s.theta;
+    dtheta = s.dtheta;
+  }
+  return w;
+}
+
+}  // namespace gaitopt::sim
