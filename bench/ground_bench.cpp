@@ -90,14 +90,9 @@ Run walkOn(const dynamics::Model& model, const sim::TrackingController& controll
 }
 
 sim::GroundModel withStep(sim::GroundModel g, double h) {
-  std::visit(
-      [h](auto& ground) {
-        if constexpr (std::is_same_v<std::decay_t<decltype(ground)>, sim::RigidGround>)
-          ground.integrator.step = h;
-        else
-          ground.time_step = h;
-      },
-      g);
+  if (auto* rigid = g.getIf<sim::RigidGround>()) rigid->integrator.step = h;
+  if (auto* compliant = g.getIf<sim::CompliantGround>()) compliant->time_step = h;
+  if (auto* lcp = g.getIf<sim::LcpGround>()) lcp->time_step = h;
   return g;
 }
 
@@ -109,8 +104,8 @@ int main(int argc, char** argv) {
   const auto config = ocp::loadOcpConfig(root + "/configs/ocp/mu2004_walk.yaml");
   const auto model = dynamics::loadRobot(root + "/tests/apps/mu2004_five_link_long_heel.yaml");
   const sim::Reference ref(ocp::polynomialGuess(model, config), model);
-  const sim::TrackingController controller(
-      model, sim::makeTrackingLaw("computed_torque", sim::TrackingGains{}));
+  const sim::TrackingController controller(model,
+                                           std::make_unique<sim::PdLaw>(sim::TrackingGains{}));
 
   sim::RigidGround tight;
   tight.integrator = {5e-5, 1e-12};
@@ -120,7 +115,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   const auto impedance = sim::loadGround(root + "/configs/grounds/impedance.yaml");
-  auto stiff = std::get<sim::CompliantGround>(impedance);
+  auto stiff = *impedance.getIf<sim::CompliantGround>();
   stiff.contact.stiffness *= 10;
   stiff.contact.damping *= 10;
   struct Case {

@@ -1,6 +1,8 @@
 /// @file bind_walk.cpp
 /// gaitopt.simulate: a closed-loop walk of a reference gait (sim/scenario/scenario.hpp), every
-/// logged sample as numpy arrays and one entry per step.
+/// logged sample as numpy arrays and one entry per step; gaitopt.controllers and gaitopt.grounds:
+/// the names it accepts, from the registries (sim/controllers/controller_registry.hpp,
+/// sim/walk/ground_registry.hpp).
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
@@ -8,7 +10,10 @@
 
 #include "config/quantities.hpp"
 #include "python/bindings.hpp"
+#include "sim/contact/ground_config.hpp"
 #include "sim/scenario/scenario.hpp"
+#include "sim/scenario/scenario_settings.hpp"
+#include "sim/walk/ground_registry.hpp"
 
 namespace py = pybind11;
 
@@ -56,11 +61,20 @@ void requireFinite(const sim::WalkSample& s) {
         "simulate: the walk diverged (non-finite angles or torques at t = {:.4g} s)", s.t));
 }
 
+/// Name -> description of each registered entry, in registration order.
+template <class Entry>
+py::dict entryDict(const std::vector<Entry>& entries) {
+  py::dict out;
+  for (const Entry& e : entries) out[py::str(e.name)] = e.description;
+  return out;
+}
+
 py::dict simulate(const dynamics::Model& robot, const gaits::Trajectory& reference, int steps,
-                  const std::string& controller, double gain_scale) {
+                  const std::string& controller, double gain_scale, const std::string& ground) {
   sim::Scenario scenario;
   scenario.steps = static_cast<int>(config::requireInRange(config::kSteps, steps, "steps"));
   scenario.controller = controller;
+  scenario.ground = sim::loadGround(sim::groundPath(ground));
   scenario.gain_scale = config::requireInRange(config::kGainScale, gain_scale, "gain_scale");
   std::vector<sim::WalkSample> samples;
   const sim::ScenarioResult result = [&] {
@@ -91,12 +105,21 @@ py::dict simulate(const dynamics::Model& robot, const gaits::Trajectory& referen
 
 void bindWalk(py::module_& m) {
   m.def("simulate", &simulate, py::arg("robot"), py::arg("reference"), py::arg("steps") = 5,
-        py::arg("controller") = "computed_torque", py::arg("gain_scale") = 1.0,
-        "Walks `reference` (a Trajectory of `robot`) on rigid ground under a tracking controller "
-        "(computed_torque or sliding_mode), as `gaitopt simulate` (steps and gain_scale in its "
-        "ranges; Ctrl-C interrupts). Returns a dict: t, step, phase, stance_x, theta, theta_ref, "
-        "tau (every logged sample), steps (one dict per step), steps_completed, fell, failure, "
-        "max_tracking_error.");
+        py::arg("controller") = sim::Scenario{}.controller, py::arg("gain_scale") = 1.0,
+        py::arg("ground") = sim::ScenarioSettings{}.ground,
+        "Walks `reference` (a Trajectory of `robot`) under `controller` (a name of controllers()) "
+        "on `ground` (a name of grounds() or a ground YAML), as `gaitopt simulate` (steps and "
+        "gain_scale in its ranges; Ctrl-C interrupts). Returns a dict: t, step, phase, stance_x, "
+        "theta, theta_ref, tau (every logged sample), steps (one dict per step), "
+        "steps_completed, fell, failure, max_tracking_error.");
+  m.def(
+      "controllers", [] { return entryDict(sim::controllers()); },
+      "The controllers simulate accepts (`gaitopt simulate --controller`): a dict of name -> "
+      "one-line description, in registration order.");
+  m.def(
+      "grounds", [] { return entryDict(sim::grounds()); },
+      "The grounds simulate accepts by name (`gaitopt simulate --ground`, "
+      "configs/grounds/NAME.yaml): a dict of name -> one-line description.");
 }
 
 }  // namespace gaitopt::python

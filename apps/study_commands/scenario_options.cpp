@@ -2,11 +2,23 @@
 
 #include <map>
 #include <string>
+#include <vector>
+
+#include <fmt/format.h>
 
 #include "apps/option_checks.hpp"
+#include "sim/walk/ground_registry.hpp"
 
 namespace gaitopt::apps {
 namespace {
+
+/// "\n  NAME: description" per registered entry, the list --help shows under an option.
+template <class Entry>
+std::string entryList(const std::vector<Entry>& entries) {
+  std::string list;
+  for (const Entry& e : entries) list += fmt::format("\n  {}: {}", e.name, e.description);
+  return list;
+}
 
 /// The failure rule of every ground (sim/contact/contact_rules.hpp).
 void addContactOptions(CLI::App* cmd, sim::ContactRules& rules) {
@@ -37,12 +49,13 @@ void addScenarioOptions(CLI::App* cmd, sim::ScenarioSettings& o) {
   cmd->add_option("--robot", o.robot_path,
                   "Robot YAML (default: configs/robots/<summary robot>.yaml)")
       ->option_text("FILE");
-  cmd->add_option("--controller", o.controller, "Tracking controller")
-      ->check(CLI::IsMember({"computed_torque", "sliding_mode", "mu_sliding_mode", "hzd"}))
+  cmd->add_option("--controller", o.controller,
+                  "Controller, one of:" + entryList(sim::controllers()))
+      ->check(CLI::IsMember(sim::controllerNames()))
       ->capture_default_str();
-  cmd->add_option("--ground", o.ground,
-                  "rigid, impedance, lcp, dart (the DART engine; configs/grounds/NAME.yaml) or a "
-                  "ground YAML")
+  cmd->add_option(
+         "--ground", o.ground,
+         "Ground: a ground YAML or one of (configs/grounds/NAME.yaml):" + entryList(sim::grounds()))
       ->capture_default_str();
   cmd->add_option("--steps", o.steps, "Steps to walk")
       ->check(quantityRange(config::kSteps))

@@ -9,9 +9,9 @@
 #include "gaits/export/gait_summary.hpp"
 #include "io/output/output_folder.hpp"
 #include "report/plot_script.hpp"
-#include "sim/controllers/hzd_controller.hpp"
 #include "sim/scenario/reference_folder.hpp"
 #include "sim/scenario/walk_summary.hpp"
+#include "sim/walk/ground_registry.hpp"
 #include "sim/walk/walk_record.hpp"
 
 namespace gaitopt::apps {
@@ -19,14 +19,16 @@ namespace {
 
 constexpr double kStickFrameInterval = 0.05;  // [s]
 
-/// The gait HZD needs (no DSP, every joint but the ankle actuated, a growing phase variable) is
-/// an input requirement: exit 2 naming the option and the folder.
-void checkHzdReference(const sim::ReferenceFolder& ref, const sim::Reference& reference) {
+/// The gait a controller needs (HZD's: no DSP, every joint but the ankle actuated, a growing
+/// phase variable) is an input requirement: exit 2 naming the option and the folder.
+void checkControllerFitsReference(const sim::ReferenceFolder& ref, const sim::Reference& reference,
+                                  const sim::Scenario& scenario) {
   try {
-    sim::makeHzdController(ref.model, reference, nullptr);
+    sim::makeController(sim::scenarioControllerModel(ref.model, scenario), reference, scenario);
   } catch (const std::invalid_argument& e) {
-    throw io::CommandError(io::kExitInputError,
-                           fmt::format("--controller hzd: {}: {}", ref.dir, e.what()));
+    throw io::CommandError(
+        io::kExitInputError,
+        fmt::format("--controller {}: {}: {}", scenario.controller, ref.dir, e.what()));
   }
 }
 
@@ -64,7 +66,7 @@ void runSimulate(const SimulateOptions& o) {
     fmt::print("simulate: {} steps of {} with {} on {} ground\n", scenario.steps, ref.dir,
                scenario.controller, sim::groundName(scenario.ground));
   const sim::Reference reference(ref.step, ref.model);
-  if (scenario.controller == "hzd") checkHzdReference(ref, reference);
+  checkControllerFitsReference(ref, reference, scenario);
   sim::WalkRecorder recorder(plant, o.output.rate_hz);
   const sim::ScenarioResult r = sim::runScenario(ref.model, reference, scenario, recorder.log());
   recorder.finish();

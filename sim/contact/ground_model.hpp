@@ -5,9 +5,12 @@
 /// (hybrid_walk.hpp); a compliant Hunt-Crossley ground integrated with a fixed explicit step
 /// (impedance_contact.hpp); and velocity-level time stepping with a Lemke LCP per step
 /// (lcp_contact_step.hpp); and DART, another engine with feet as bodies (dart_walk.hpp).
-/// Friction always comes from the robot (Model::friction()).
-#include <string>
-#include <variant>
+/// Each is registered once in sim/walk/ground_registry.cpp; a GroundModel holds the settings of
+/// any of them. Friction always comes from the robot (Model::friction()).
+#include <any>
+#include <type_traits>
+#include <typeindex>
+#include <utility>
 
 #include "sim/contact/impedance_contact.hpp"
 #include "sim/walk/event_integrator.hpp"
@@ -36,9 +39,28 @@ struct DartGround {
   double time_step = 1e-3;  ///< DART's step, and the controller's period [s]
 };
 
-using GroundModel = std::variant<RigidGround, CompliantGround, LcpGround, DartGround>;
+/// The settings of one ground, of whichever type its entry in sim/walk/ground_registry.hpp
+/// names: the structs above, or a ground's own, so a new ground needs no change here.
+class GroundModel {
+ public:
+  /// Implicit: a ground's settings are a GroundModel wherever one is asked for.
+  template <class G, class = std::enable_if_t<!std::is_same_v<std::decay_t<G>, GroundModel>>>
+  GroundModel(G settings) : settings_(std::move(settings)) {}
 
-/// "rigid", "impedance", "lcp" or "dart".
-std::string groundName(const GroundModel& ground);
+  /// The settings when they are a G, else null.
+  template <class G>
+  const G* getIf() const {
+    return std::any_cast<G>(&settings_);
+  }
+  template <class G>
+  G* getIf() {
+    return std::any_cast<G>(&settings_);
+  }
+  /// The type of the settings, which names the ground's entry.
+  std::type_index type() const { return settings_.type(); }
+
+ private:
+  std::any settings_;
+};
 
 }  // namespace gaitopt::sim

@@ -1,6 +1,7 @@
 #include "sim/controllers/tracking_law.hpp"
 
 #include <stdexcept>
+#include <string>
 
 namespace gaitopt::sim {
 namespace {
@@ -32,14 +33,6 @@ Eigen::VectorXd SlidingModeLaw::correction(const Eigen::VectorXd& e,
   const Eigen::VectorXd s = edot + lambda_ * e;  // sliding surface (Mu 4.3)
   const Eigen::VectorXd sat = (s / boundary_).cwiseMax(-1.0).cwiseMin(1.0);
   return lambda_ * edot + gain_ * sat;
-}
-
-std::unique_ptr<TrackingLaw> makeTrackingLaw(const std::string& name, const TrackingGains& g) {
-  if (name == "computed_torque") return std::make_unique<PdLaw>(g.kp, g.kd);
-  if (name == "sliding_mode")
-    return std::make_unique<SlidingModeLaw>(g.lambda, g.switching, g.boundary);
-  throw std::invalid_argument("unknown controller '" + name +
-                              "' (expected computed_torque or sliding_mode)");
 }
 
 }  // namespace gaitopt::sim

@@ -60,7 +60,7 @@ void analyseHzd(const dynamics::Model& plant, const dynamics::Model& model,
                 const HzdController& hzd, const Reference& ref, const Scenario& s,
                 ScenarioResult& r) {
   r.hzd_map = restrictedMap(model, hzd.constraints());
-  const auto* rigid = std::get_if<RigidGround>(&s.ground);
+  const auto* rigid = s.ground.getIf<RigidGround>();
   if (s.poincare && rigid && r.hzd_map->zeta_minus > 0)
     r.hzd_measured =
         measureRestrictedMap(plant, hzd, ref, hzd.constraints(),
@@ -76,27 +76,29 @@ BoundSide muBoundSide(const Scenario& s) {
                                                  : BoundSide::kEitherWay;
 }
 
+std::unique_ptr<Controller> makeController(const dynamics::Model& model, const Reference& ref,
+                                           const Scenario& s) {
+  const ControllerSetting setting{model,
+                                  ref,
+                                  scaledGains(s.gains, s.gain_scale),
+                                  scaledGains(s.mu_gains, s.gain_scale),
+                                  s.uncertainty_bound,
+                                  muBoundSide(s)};
+  return controllerEntry(s.controller).build(setting);
+}
+
 ScenarioResult runScenario(const dynamics::Model& nominal, const Reference& ref, const Scenario& s,
                            const WalkLog& log) {
   const auto start = std::chrono::steady_clock::now();
   const dynamics::Model plant = scenarioPlant(nominal, s);
   const dynamics::Model model = scenarioControllerModel(nominal, s);
-  const TrackingGains gains = scaledGains(s.gains, s.gain_scale);
+  const std::unique_ptr<Controller> controller = makeController(model, ref, s);
   ScenarioResult r;
-  std::unique_ptr<Controller> controller;
-  if (s.controller == "hzd") {
-    auto hzd = makeHzdController(model, ref, makeTrackingLaw("computed_torque", gains));
+  if (const auto* hzd = dynamic_cast<const HzdController*>(controller.get()))
     analyseHzd(plant, model, *hzd, ref, s, r);
-    controller = std::move(hzd);
-  } else if (s.controller == "mu_sliding_mode") {
-    controller = std::make_unique<MuSlidingModeController>(
-        model, scaledGains(s.mu_gains, s.gain_scale), s.uncertainty_bound, muBoundSide(s));
-  } else {
-    controller = std::make_unique<TrackingController>(model, makeTrackingLaw(s.controller, gains));
-  }
   r.walk = walk(plant, *controller, ref, s.ground, WalkPlan{s.steps, s.push, s.rules}, log);
   if (s.poincare) {
-    if (const auto* rigid = std::get_if<RigidGround>(&s.ground)) {
+    if (const auto* rigid = s.ground.getIf<RigidGround>()) {
       PoincareOptions options;
       options.integrator = rigid->integrator;
       options.rules = s.rules;
@@ -127,7 +129,7 @@ double sweepValue(const Scenario& s, const std::string& name) {
   if (name == "length_error") return s.parameter_errors.length;
   if (name == "gain_scale") return s.gain_scale;
   if (name == "friction") return s.friction.value_or(std::numeric_limits<double>::quiet_NaN());
-  const auto* compliant = std::get_if<CompliantGround>(&s.ground);
+  const auto* compliant = s.ground.getIf<CompliantGround>();
   return compliant ? compliant->contact.stiffness : std::numeric_limits<double>::quiet_NaN();
 }
 
@@ -145,7 +147,7 @@ void setSweepValue(Scenario& s, const std::string& name, double value) {
     s.gain_scale = value;
   } else if (name == "friction") {
     s.friction = value;
-  } else if (auto* compliant = std::get_if<CompliantGround>(&s.ground)) {
+  } else if (auto* compliant = s.ground.getIf<CompliantGround>()) {
     // Damping with the stiffness, so alpha = 2c / (3k) and the restitution stay the same.
     compliant->contact.damping *= value / compliant->contact.stiffness;
     compliant->contact.stiffness = value;

@@ -10,8 +10,7 @@
 #include "config/quantities.hpp"
 #include "dynamics/model_variation.hpp"
 #include "sim/contact/ground_model.hpp"
-#include "sim/controllers/mu_sliding_mode.hpp"
-#include "sim/controllers/tracking_law.hpp"
+#include "sim/controllers/controller_registry.hpp"
 #include "sim/studies/hzd_poincare.hpp"
 #include "sim/studies/poincare.hpp"
 #include "sim/walk/hybrid_walk.hpp"
@@ -20,8 +19,7 @@
 namespace gaitopt::sim {
 
 struct Scenario {
-  /// see makeTrackingLaw, "mu_sliding_mode" (mu_sliding_mode.hpp) or "hzd" (PD gains)
-  std::string controller = "computed_torque";
+  std::string controller = "computed_torque";  ///< a name of controllers()
   TrackingGains gains;
   MuSlidingModeGains mu_gains;  ///< Table 4.2 of the scenario's uncertainty case
   /// What mu_sliding_mode knows of its model's error: the true parameters are within a factor
@@ -59,6 +57,12 @@ struct ScenarioResult {
 dynamics::Model scenarioPlant(const dynamics::Model& nominal, const Scenario& scenario);
 /// The model the controller computes with.
 dynamics::Model scenarioControllerModel(const dynamics::Model& nominal, const Scenario& scenario);
+
+/// The scenario's controller on `model` (scenarioControllerModel's) for `ref`, with its gains at
+/// its bandwidth. @throws std::invalid_argument for an unknown controller, a bad gain_scale, or
+/// a model or reference the controller cannot drive.
+std::unique_ptr<Controller> makeController(const dynamics::Model& model, const Reference& ref,
+                                           const Scenario& scenario);
 
 /// Walks the scenario. @throws std::invalid_argument for an unknown controller or bad values.
 ScenarioResult runScenario(const dynamics::Model& nominal, const Reference& ref,

@@ -1,26 +1,38 @@
 #include "sim/scenario/scenario_settings.hpp"
 
+#include <filesystem>
+
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "config/config_error.hpp"
 #include "io/data_dir.hpp"
 #include "sim/contact/ground_config.hpp"
+#include "sim/walk/ground_registry.hpp"
 
 namespace gaitopt::sim {
-
 namespace {
-bool isBuiltinGround(const std::string& ground) {
-  return ground == "rigid" || ground == "impedance" || ground == "lcp" || ground == "dart";
+
+/// "--controller a or --controller b": the controllers for a passive stance ankle.
+std::string passiveAnkleOptions() {
+  std::vector<std::string> options;
+  for (const ControllerEntry& c : controllers())
+    if (c.passive_ankle) options.push_back("--controller " + c.name);
+  return fmt::format("{}", fmt::join(options, " or "));
 }
+
 }  // namespace
 
 std::string groundPath(const std::string& ground) {
-  if (isBuiltinGround(ground)) return io::dataFile(groundRecord(ground));
-  return ground;
+  if (findGround(ground)) return io::dataFile(groundRecord(ground));
+  if (std::filesystem::is_regular_file(ground)) return ground;
+  throw config::ConfigError(ground, "", 0,
+                            fmt::format("neither a registered ground ({}) nor a ground file",
+                                        fmt::join(groundNames(), ", ")));
 }
 
 std::string groundRecord(const std::string& ground) {
-  return isBuiltinGround(ground) ? "configs/grounds/" + ground + ".yaml" : ground;
+  return findGround(ground) ? "configs/grounds/" + ground + ".yaml" : ground;
 }
 
 Scenario makeScenario(const ScenarioSettings& o) {
@@ -47,14 +59,13 @@ std::vector<std::string> scenarioInputs(const ScenarioSettings& o, const Referen
 }
 
 void requireControllerFits(const ScenarioSettings& o, const dynamics::Model& model) {
-  // HZD (hzd_controller.hpp) leaves the unactuated stance ankle to the zero dynamics.
-  if (o.controller == "hzd" || model.joints().front().actuated) return;
+  if (controllerEntry(o.controller).passive_ankle || model.joints().front().actuated) return;
   throw config::ConfigError(
       "--controller", o.controller, 0,
       fmt::format("the {} controller imposes all {} joint accelerations through the joint "
                   "torques, so it needs an actuated stance ankle; robot '{}' has a passive one "
-                  "(walk it with --controller hzd)",
-                  o.controller, model.nLinks(), model.name()));
+                  "(walk it with {})",
+                  o.controller, model.nLinks(), model.name(), passiveAnkleOptions()));
 }
 
 nlohmann::ordered_json scenarioJson(const ScenarioSettings& o, const Scenario& s) {

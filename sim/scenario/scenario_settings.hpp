@@ -18,9 +18,9 @@ namespace gaitopt::sim {
 /// What a closed-loop command walks, as given on its command line.
 struct ScenarioSettings {
   std::string reference_dir;
-  std::string robot_path;  ///< "" = from the reference's summary.json
-  std::string controller = "computed_torque";
-  std::string ground = "rigid";  ///< a shipped ground name or a ground YAML
+  std::string robot_path;                      ///< "" = from the reference's summary.json
+  std::string controller = "computed_torque";  ///< a name of controllers()
+  std::string ground = "rigid";  ///< a name of grounds() (configs/grounds/NAME.yaml) or a YAML
   int steps = 20;
   int uncertainty_case = 1;              ///< Mu ch. 4 case
   std::string uncertainty_on = "plant";  ///< or "controller" (Mu's setting)
@@ -32,7 +32,8 @@ struct ScenarioSettings {
   ContactRules rules;  ///< slip, CoP and restitution settings (contact_rules.hpp)
 };
 
-/// The ground YAML `ground` names: a shipped configs/grounds/<name>.yaml or a file path.
+/// The ground YAML `ground` names: a registered ground's configs/grounds/<name>.yaml or a file
+/// path. @throws config::ConfigError listing the registered grounds when it is neither.
 std::string groundPath(const std::string& ground);
 
 /// The ground as summary.json records it: a shipped ground by its path relative to the source
@@ -49,7 +50,7 @@ std::vector<std::string> scenarioInputs(const ScenarioSettings& o, const Referen
 
 /// @throws config::ConfigError (exit 2) when the controller cannot drive `model`: the tracking
 /// laws set every joint acceleration through the torques, so the stance ankle must be actuated
-/// (HZD excepted).
+/// (unless the controller's entry, controller_registry.hpp, says it drives a passive one: HZD).
 void requireControllerFits(const ScenarioSettings& o, const dynamics::Model& model);
 
 /// The scenario's settings for summary.json.

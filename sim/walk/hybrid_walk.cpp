@@ -52,4 +52,11 @@ WalkResult simulateWalk(const dynamics::Model& plant, const Controller& controll
   return w;
 }
 
+WalkResult walkRigid(const dynamics::Model& plant, const Controller& controller,
+                     const Reference& ref, const RigidGround& ground, const WalkPlan& plan,
+                     const WalkLog& log, const VecD& theta0, const VecD& dtheta0) {
+  return simulateWalk(plant, controller, ref, WalkOptions{plan, ground.integrator}, log, theta0,
+                      dtheta0);
+}
+
 }  // namespace gaitopt::sim

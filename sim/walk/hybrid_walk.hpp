@@ -26,6 +26,7 @@
 
 #include "dynamics/model.hpp"
 #include "sim/contact/contact_rules.hpp"
+#include "sim/contact/ground_model.hpp"
 #include "sim/controllers/reference.hpp"
 #include "sim/controllers/tracking_controller.hpp"
 #include "sim/walk/event_integrator.hpp"
@@ -138,5 +139,10 @@ WalkTotals completedTotals(const WalkResult& walk);
 WalkResult simulateWalk(const dynamics::Model& plant, const Controller& controller,
                         const Reference& ref, const WalkOptions& options, const WalkLog& log = {},
                         const VecD& theta0 = {}, const VecD& dtheta0 = {});
+
+/// simulateWalk on `ground`'s event integrator: the rigid ground's walk (ground_registry.cpp).
+WalkResult walkRigid(const dynamics::Model& plant, const Controller& controller,
+                     const Reference& ref, const RigidGround& ground, const WalkPlan& plan,
+                     const WalkLog& log = {}, const VecD& theta0 = {}, const VecD& dtheta0 = {});
 
 }  // namespace gaitopt::sim

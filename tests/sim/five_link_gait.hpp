@@ -41,7 +41,7 @@ inline const gaits::Trajectory& polynomialGait() {
 }
 
 inline TrackingController computedTorque() {
-  return TrackingController(fiveLinkRobot(), makeTrackingLaw("computed_torque", TrackingGains{}));
+  return TrackingController(fiveLinkRobot(), std::make_unique<PdLaw>(TrackingGains{}));
 }
 
 }  // namespace gaitopt::sim::test

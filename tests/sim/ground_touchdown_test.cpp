@@ -102,8 +102,8 @@ class SoftTouchdown : public ::testing::Test {
 
 TEST_F(SoftTouchdown, ThreeGroundsAgreeOnTheRatesAfterSettling) {
   const std::string dir = std::string(GAITOPT_SOURCE_DIR) + "/configs/grounds/";
-  const auto compliant = std::get<CompliantGround>(loadGround(dir + "impedance.yaml"));
-  const auto lcp = std::get<LcpGround>(loadGround(dir + "lcp.yaml"));
+  const auto compliant = *loadGround(dir + "impedance.yaml").getIf<CompliantGround>();
+  const auto lcp = *loadGround(dir + "lcp.yaml").getIf<LcpGround>();
   const int n = plant_.nLinks();
   const VecD rigid_rates = rigid();
 

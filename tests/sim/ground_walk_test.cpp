@@ -131,7 +131,7 @@ TEST(GroundWalk, ACompliantWalkStartsWithTheStanceTipCarryingItsLoad) {
 }
 
 TEST(GroundWalk, TooLongRk4StepOnAStiffGroundIsReportedAsDiverged) {
-  auto ground = std::get<CompliantGround>(shippedGround("impedance"));
+  auto ground = *shippedGround("impedance").getIf<CompliantGround>();
   ground.contact.stiffness *= 100;  // 1e9 N/m^1.5, the same restitution (damping ratio c / k)
   ground.contact.damping *= 100;
   ground.time_step = 1e-3;

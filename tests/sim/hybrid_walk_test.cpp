@@ -37,8 +37,12 @@ class FiveLinkWalk : public ::testing::Test {
     delete poly_;
     delete model_;
   }
+  /// computed_torque (PD) or sliding_mode (controller_registry.cpp), default gains.
   static TrackingController controller(const std::string& law) {
-    return TrackingController(*model_, makeTrackingLaw(law, TrackingGains{}));
+    const TrackingGains gains;
+    if (law == "sliding_mode")
+      return TrackingController(*model_, std::make_unique<SlidingModeLaw>(gains));
+    return TrackingController(*model_, std::make_unique<PdLaw>(gains));
   }
   static dynamics::Model* model_;
   static gaits::Trajectory *poly_, *optimal_, *optimal_export_;

@@ -34,7 +34,7 @@ class RabbitHzd : public ::testing::Test {
     gait_ = new gaits::Trajectory(ocp::reconstructDense(p, *model_, r.x, 1000));
     ref_ = new Reference(*gait_);
     controller_ =
-        makeHzdController(*model_, *ref_, makeTrackingLaw("computed_torque", {})).release();
+        makeHzdController(*model_, *ref_, std::make_unique<PdLaw>(TrackingGains{})).release();
   }
   static void TearDownTestSuite() {
     delete controller_;

@@ -104,7 +104,7 @@ TEST(MuSlidingMode, WalksThePolynomialGaitWithItsModelOffByMusCase2) {
   EXPECT_EQ(w.steps_completed, 20) << w.failure;
   EXPECT_LT(w.max_tracking_error, 0.01);
   // The same model under computed torque does not get through the first step.
-  const TrackingController ct(model, makeTrackingLaw("computed_torque", TrackingGains{}));
+  const TrackingController ct(model, std::make_unique<PdLaw>(TrackingGains{}));
   EXPECT_EQ(simulateWalk(plant, ct, ref, {}).steps_completed, 0);
 }
 

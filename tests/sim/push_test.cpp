@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "dynamics/energy.hpp"
+#include "sim/walk/ground_registry.hpp"
 #include "sim/walk/push.hpp"
 #include "sim/walk/walk.hpp"
 #include "tests/sim/five_link_gait.hpp"
