@@ -105,8 +105,8 @@ py::dict simulate(const dynamics::Model& robot, const gaits::Trajectory& referen
 
 void bindWalk(py::module_& m) {
   m.def("simulate", &simulate, py::arg("robot"), py::arg("reference"), py::arg("steps") = 5,
-        py::arg("controller") = sim::Scenario{}.controller, py::arg("gain_scale") = 1.0,
-        py::arg("ground") = sim::ScenarioSettings{}.ground,
+        py::arg("controller") = sim::kDefaultController, py::arg("gain_scale") = 1.0,
+        py::arg("ground") = sim::kDefaultGround,
         "Walks `reference` (a Trajectory of `robot`) under `controller` (a name of controllers()) "
         "on `ground` (a name of grounds() or a ground YAML), as `gaitopt simulate` (steps and "
         "gain_scale in its ranges; Ctrl-C interrupts). Returns a dict: t, step, phase, stance_x, "

@@ -38,6 +38,9 @@ struct ControllerEntry {
   bool passive_ankle = false;
 };
 
+/// The controller a scenario walks unless told otherwise.
+inline constexpr const char* kDefaultController = "computed_torque";
+
 /// Every controller, in registration order.
 const std::vector<ControllerEntry>& controllers();
 std::vector<std::string> controllerNames();

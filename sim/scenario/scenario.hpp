@@ -19,7 +19,7 @@
 namespace gaitopt::sim {
 
 struct Scenario {
-  std::string controller = "computed_torque";  ///< a name of controllers()
+  std::string controller = kDefaultController;  ///< a name of controllers()
   TrackingGains gains;
   MuSlidingModeGains mu_gains;  ///< Table 4.2 of the scenario's uncertainty case
   /// What mu_sliding_mode knows of its model's error: the true parameters are within a factor

@@ -12,15 +12,17 @@
 #include "sim/contact/contact_rules.hpp"
 #include "sim/scenario/reference_folder.hpp"
 #include "sim/scenario/scenario.hpp"
+#include "sim/walk/ground_registry.hpp"
 
 namespace gaitopt::sim {
 
 /// What a closed-loop command walks, as given on its command line.
 struct ScenarioSettings {
   std::string reference_dir;
-  std::string robot_path;                      ///< "" = from the reference's summary.json
-  std::string controller = "computed_torque";  ///< a name of controllers()
-  std::string ground = "rigid";  ///< a name of grounds() (configs/grounds/NAME.yaml) or a YAML
+  std::string robot_path;                       ///< "" = from the reference's summary.json
+  std::string controller = kDefaultController;  ///< a name of controllers()
+  /// A name of grounds() (its configs/grounds/NAME.yaml) or a ground YAML.
+  std::string ground = kDefaultGround;
   int steps = 20;
   int uncertainty_case = 1;              ///< Mu ch. 4 case
   std::string uncertainty_on = "plant";  ///< or "controller" (Mu's setting)

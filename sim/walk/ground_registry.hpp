@@ -58,6 +58,9 @@ GroundEntry makeGroundEntry(std::string name, std::string description,
           }};
 }
 
+/// The ground `gaitopt simulate` and the Python module walk on unless told otherwise.
+inline constexpr const char* kDefaultGround = "rigid";
+
 /// Every ground, in registration order.
 const std::vector<GroundEntry>& grounds();
 std::vector<std::string> groundNames();

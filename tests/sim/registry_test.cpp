@@ -69,7 +69,9 @@ TEST(Registry, AGroundSettingThatIsNeitherANameNorAFileIsRefusedNamingEveryGroun
   }
 }
 
-TEST(Registry, NamesAreUniqueAndEachHasAOneLineDescription) {
+TEST(Registry, NamesAreUniqueEachHasAOneLineDescriptionAndTheDefaultsAreRegistered) {
+  EXPECT_EQ(controllerEntry(kDefaultController).name, Scenario{}.controller);
+  EXPECT_EQ(groundEntry(kDefaultGround).name, ScenarioSettings{}.ground);
   for (const auto& names : {controllerNames(), groundNames()})
     EXPECT_EQ(std::set<std::string>(names.begin(), names.end()).size(), names.size());
   for (const ControllerEntry& c : controllers()) {
