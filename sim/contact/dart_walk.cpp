@@ -8,6 +8,8 @@
 
 #include <dart/collision/CollisionObject.hpp>
 #include <dart/collision/CollisionResult.hpp>
+#include <dart/collision/dart/DARTCollisionDetector.hpp>
+#include <dart/constraint/ConstraintSolver.hpp>
 #include <dart/dynamics/BodyNode.hpp>
 #include <dart/dynamics/BoxShape.hpp>
 #include <dart/dynamics/PlanarJoint.hpp>
@@ -42,6 +44,18 @@ double soleDepth(const dynamics::Model& plant, const dynamics::FootBody& foot) {
   return plant.foot().heel + plant.foot().toe > 0 ? foot.thickness : foot.radius;
 }
 
+/// Coulomb friction mu along the walking plane (x) and none across it. The skeleton is planar, so
+/// nothing moves across the plane: with DART's default second friction direction the contact LCP
+/// has rows of zero mobility, its Dantzig solver returned NaN at every time step (535 of the 536
+/// of a walk) and DART fell back on 30 projected Gauss-Seidel sweeps, whose residual let the stance
+/// foot roll heel-down by 0.02 rad (4 mm) within one single support.
+void planarFriction(dart::dynamics::DynamicsAspect* aspect, double mu) {
+  aspect->setFrictionCoeff(mu);
+  aspect->setFirstFrictionDirection(Eigen::Vector3d::UnitX());
+  aspect->setFirstFrictionDirectionFrame(dart::dynamics::Frame::World());
+  aspect->setSecondaryFrictionCoeff(0.0);
+}
+
 /// The robot and its floor in one DART world, and which foot is the stance foot.
 class DartPlant {
  public:
@@ -52,12 +66,19 @@ class DartPlant {
     world_->setGravity(Eigen::Vector3d(g.x(), 0, g.y()));
     loadRobot();
     addFloor();
+    // DART's own box-box collider touches a flat foot at its four corners. FCL, DART's default,
+    // meshes the boxes: it touched the stance foot at 8 or 9 points and let its tip slide
+    // 0.12 mm in the first millisecond, where DART's collider holds it to 0.01 mm.
+    world_->getConstraintSolver()->setCollisionDetector(
+        dart::collision::DARTCollisionDetector::create());
   }
 
   ContactStep step(const FreeBaseState& s, const TorqueFeedback& torque) {
     if (!started_) start(s);
     followRelabelling(s);
+    actuateAnkles();
     robot_->setForces(jointForces(torque(0.0, s.q, s.v)));
+    if (swingServo()) holdSwingFootLevel();
     if (!s.hip_force.isZero())
       links_[static_cast<size_t>(plant_.legLinks())]->addExtForce(
           Eigen::Vector3d(s.hip_force.x(), 0, s.hip_force.y()), Eigen::Vector3d::Zero(), false,
@@ -87,7 +108,7 @@ class DartPlant {
       joints_.push_back(robot_->getJoint(plant_.joints()[j].name)->getDof(0));
     for (auto* foot : feet_)
       for (auto* shape : foot->getShapeNodesWith<dart::dynamics::DynamicsAspect>())
-        shape->getDynamicsAspect()->setFrictionCoeff(plant_.friction());
+        planarFriction(shape->getDynamicsAspect(), plant_.friction());
     world_->addSkeleton(robot_);
   }
 
@@ -101,7 +122,7 @@ class DartPlant {
             shape);
     node->setRelativeTranslation(
         Eigen::Vector3d(0, 0, -soleDepth(plant_, dynamics::kExportFoot) - 0.5));
-    node->getDynamicsAspect()->setFrictionCoeff(plant_.friction());
+    planarFriction(node->getDynamicsAspect(), plant_.friction());
     world_->addSkeleton(floor);
   }
 
@@ -158,9 +179,9 @@ class DartPlant {
     return s;
   }
 
-  /// The model's joint torques on DART's joints in the current labelling, and the swing ankle's
-  /// servo. Side 1: the model's joint j >= 1 is URDF joint n - j turned round, q'_j = -q_{n-j} +
-  /// const (relabelAngles), so it takes -tau_j.
+  /// The model's joint torques on DART's joints in the current labelling (the swing ankle's is
+  /// zero: it is a free hinge or a servo). Side 1: the model's joint j >= 1 is URDF joint n - j
+  /// turned round, q'_j = -q_{n-j} + const (relabelAngles), so it takes -tau_j.
   Eigen::VectorXd jointForces(const VecD& tau) {
     const int n = plant_.nLinks();
     Eigen::VectorXd f = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(robot_->getNumDofs()));
@@ -171,22 +192,37 @@ class DartPlant {
     for (int j = 1; j < n; ++j)
       add(joints_[static_cast<size_t>(side_ == 0 ? j - 1 : n - j - 1)],
           side_ == 0 ? tau(j) : -tau(j));
-    const int swing = 1 - side_;
-    if (plant_.joints()[0].actuated && forces_[static_cast<size_t>(swing)].y() <= 0)
-      add(ankles_[static_cast<size_t>(swing)], levelling(feet_[static_cast<size_t>(swing)]));
     return f;
   }
 
-  /// The PD that holds an unloaded foot level: the ankle's positive turn lowers the foot's angle
-  /// (both ankles measure the shank from the foot), so its torque is k phi + c phi-dot, with
-  /// k = I w^2, c = 2 I w (critical damping) for the foot's inertia I about the ankle and
-  /// w = 0.1 / h.
-  double levelling(const BodyNode* foot) const {
-    const auto& inertia = foot->getInertia();
-    const double i_ankle =
-        inertia.getMoment()(1, 1) + inertia.getMass() * inertia.getLocalCOM().squaredNorm();
-    const double w = 0.1 / world_->getTimeStep();
-    return i_ankle * w * w * angleOf(foot) + 2 * i_ankle * w * rateOf(foot);
+  /// The swing ankle is a servo while its foot carries no load and it is actuated.
+  bool swingServo() const {
+    return plant_.joints()[0].actuated && forces_[static_cast<size_t>(1 - side_)].y() <= 0;
+  }
+
+  /// The stance ankle takes the controller's torque; the swing ankle is a velocity servo or, on a
+  /// loaded foot, a free hinge as the model's leading tip in double support (conventions.hpp).
+  /// Set before the forces: DART applies a force joint's command, which setForces writes.
+  void actuateAnkles() {
+    ankles_[static_cast<size_t>(side_)]->getJoint()->setActuatorType(dart::dynamics::Joint::FORCE);
+    ankles_[static_cast<size_t>(1 - side_)]->getJoint()->setActuatorType(
+        swingServo() ? dart::dynamics::Joint::SERVO : dart::dynamics::Joint::FORCE);
+  }
+
+  /// Turns the unloaded foot back to level with time constant kServoSteps time steps: DART's
+  /// servo constraint reaches the commanded ankle rate within the step, solved with the
+  /// contacts (within the ankle's torque limit), where a PD torque is explicit and could hold
+  /// only a bandwidth of 0.1 / h: it left the swing foot 0.026 rad toe-down late in the swing,
+  /// its toe 5 mm below its heel, and the foot landed on its toe. The ankle's positive turn lowers
+  /// the foot's angle (both ankles measure the shank from the foot), so the foot turns at the
+  /// shank's rate minus the ankle's.
+  void holdSwingFootLevel() {
+    constexpr double kServoSteps = 4;
+    const int swing = 1 - side_;
+    const BodyNode* foot = feet_[static_cast<size_t>(swing)];
+    const BodyNode* shank = swing == 0 ? links_.front() : links_.back();
+    const double tau = kServoSteps * world_->getTimeStep();
+    ankles_[static_cast<size_t>(swing)]->setCommand(rateOf(shank) + angleOf(foot) / tau);
   }
 
   /// The floor's force on each foot over the last time step, (x, z) [N].

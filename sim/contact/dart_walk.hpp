@@ -3,8 +3,9 @@
 /// Walking in the DART physics engine (DART 6.12, dartsim.github.io): the robot of
 /// dynamics/urdf_export.hpp, its feet bodies that tip when the centre of pressure leaves them, on
 /// a floor box, advanced by DART's time stepping (semi-implicit Euler with its boxed LCP contact
-/// solver and Coulomb friction from the robot file, restitution 0). The root link is a
-/// PlanarJoint in the ZX plane, so the walk stays in the x-z plane.
+/// solver and Coulomb friction from the robot file along the plane, restitution 0; DART's own
+/// box-box collider). The root link is a PlanarJoint in the ZX plane, so the walk stays in the
+/// x-z plane.
 ///
 /// The toolkit closes the loop on DART's state once per time step (1 kHz with the shipped
 /// configs/grounds/dart.yaml): the free-base state of free_base_walk.hpp is read from DART's
@@ -14,10 +15,10 @@
 /// the same as on the toolkit's own grounds. The floor's top lies the sole depth below the tip
 /// (FootBody), so a flat foot's tip is at the model's ground height y = 0.
 ///
-/// The swing foot, which the model does not have, is held level by its ankle: a critically
-/// damped PD on the foot's angle of bandwidth 0.1 / h (resolved by the time step), while the
-/// foot carries no load; loaded, the ankle is a free hinge, as the model's leading tip in double
-/// support (conventions.hpp).
+/// The swing foot, which the model does not have, is held level by its ankle while it carries no
+/// load: a velocity servo (DART's servo motor constraint, solved with the contacts) turns it back
+/// to level within a few time steps; loaded, the ankle is a free hinge, as the model's leading
+/// tip in double support (conventions.hpp).
 #include "sim/contact/ground_model.hpp"
 #include "sim/walk/free_base_walk.hpp"
 
