@@ -55,7 +55,7 @@ TEST_P(DartWalkFull, TheRobustOptimumWalksTwentySteps) {
   const dynamics::Model plant = dynamics::perturbedModel(*nominal_, {mass_error, mass_error, 0, 0});
   const MuSlidingModeController controller(*nominal_, muTable42(1), {0.2, 0.2, 0.05, 0.05});
   const auto ground = loadGround(std::string(GAITOPT_SOURCE_DIR) + "/configs/grounds/dart.yaml");
-  const double h = std::get<DartGround>(ground).time_step;
+  const double h = ground.getIf<DartGround>()->time_step;
   FloorRecord floor;
   // From the second step on: the first starts from the plan's state, not from a step of DART's.
   const auto log = [&](const WalkSample& s) {
