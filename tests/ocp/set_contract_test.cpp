@@ -34,9 +34,10 @@ struct Shipped {
 
 constexpr int kSegments = 3;  // per phase
 
-/// Two variants around the nominal (ocp/shape/shape_config.hpp).
+/// One variant beside the nominal (ocp/shape/shape_config.hpp): a second one adds the same sets
+/// on a larger decision vector.
 std::vector<config::Override> variants() {
-  return {config::parseOverride("variants=[{mass_scale: 0.9}, {mass_scale: 1.1}]"),
+  return {config::parseOverride("variants=[{mass_scale: 1.1}]"),
           config::parseOverride("variant_feedback={kp: 200, kd: 20}"),
           config::parseOverride("variant_end_tolerance=0.1")};
 }
@@ -210,8 +211,7 @@ TEST(SetContractCoverage, EverySetOfTheGaitProblemIsChecked) {
                            "variant1_impulse_cones",
                            "variant1_touchdown_to_dsp",
                            "variant1_start",
-                           "variant1_end",
-                           "variant2_end"})
+                           "variant1_end"})
     EXPECT_TRUE(checked.count(name)) << name << " is in no problem of the contract";
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "config/config_error.hpp"
 #include "ocp/guess/initial_guess.hpp"
 #include "ocp/problem/gait_problem.hpp"
 #include "support/solved_config.hpp"
@@ -144,6 +145,34 @@ TEST(StageStructure, VariantsCopyThePhasesAndMeetTheNominalAtItsStartEndAndClock
                                  "variant2_touchdown_to_dsp", "variant2_touchdown"})
     EXPECT_NE(std::find(all.begin(), all.end(), name), all.end()) << name;
   expectPartitionAndCouplings(b.problem);
+}
+
+/// The message of loading the five-link config with `sets`, "" when it loads.
+std::string loadError(const std::vector<std::string>& sets) {
+  try {
+    config("mu2004_walk", sets);
+  } catch (const config::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ShapeConfig, ReadsStepsAndVariantsAndRefusesAnIncompleteEnsemble) {
+  const OcpConfig c = variants();
+  EXPECT_EQ(c.shape.steps, 1);
+  ASSERT_EQ(c.shape.variants.size(), 2u);
+  EXPECT_EQ(c.shape.variants[1].mass_scale, 1.05);
+  EXPECT_EQ(c.shape.feedback.kp, 300);
+  EXPECT_EQ(c.shape.feedback.kd, 30);
+  EXPECT_EQ(c.shape.end_tolerance, 0.1);
+  EXPECT_EQ(config("mu2004_walk").shape.variantCount(), 1);
+  EXPECT_NE(loadError({"steps=1.5"}).find("key 'steps'"), std::string::npos);
+  // A variant without the law would have free torques: the ensemble would say nothing.
+  const std::string no_law = loadError({"variants=[{mass_scale: 1.1}]"});
+  EXPECT_NE(no_law.find("variant_feedback"), std::string::npos) << no_law;
+  const std::string stray = loadError({"variant_end_tolerance=0.1"});
+  EXPECT_NE(stray.find("only meaningful with `variants`"), std::string::npos) << stray;
+  EXPECT_NE(loadError({"variants=[{mass: 1.1}]"}).find("mass"), std::string::npos);
 }
 
 }  // namespace

@@ -26,6 +26,9 @@ constexpr double kPassiveStep = 0.621817212397;  // [s]
 constexpr double kSecondGuess = 0.5;             // [s]
 
 TEST(TwoStepPassiveGait, CollapsesToTwoIdenticalPassiveSteps) {
+#ifndef NDEBUG
+  GTEST_SKIP() << "a solve: optimised builds only";
+#endif
   OcpConfig c = loadOcpConfig(test::shippedOcpConfig("compass_gait_passive"),
                               {config::parseOverride("steps=2")});
   ASSERT_EQ(c.shape.steps, 2);
