@@ -56,19 +56,32 @@ class Builder {
         close({spec.label, StageKind::kPhase, spec.step, spec.variant, {}, {}, i}));
     couple(phase_stage_.back(), spec.shares_duration);
     couple(phase_stage_.back(), spec.feedback_from);
-    touchdown_stage_.push_back(-1);
-    if (spec.touchdown) {
-      open();
-      b.touchdown = Touchdown::add(p_.nlp, model, config_, b.phase, config_.step_length, spec.copy);
-      touchdown_stage_.back() = close(
-          {spec.copy + "touchdown", StageKind::kTouchdown, spec.step, spec.variant, {}, {}, i});
-      couple(touchdown_stage_.back(), i);
-    }
+    touchdown_stage_.push_back(spec.touchdown ? emitTouchdown(i, b) : -1);
     p_.built.push_back(std::move(b));
   }
 
   void emitTransition(const TransitionSpec& t) {
     open();
+    addRows(t);
+    const PhaseSpec& to = shape_.phases[static_cast<size_t>(t.to)];
+    const int stage = close({t.name, StageKind::kTransition, to.step, to.variant, {}, {}, -1});
+    declareCouplings(stage, t);
+  }
+
+ private:
+  /// The touchdown at the end of phase i (built as `b`, on its variant's model); its stage.
+  int emitTouchdown(int i, BuiltPhase& b) {
+    const PhaseSpec& spec = shape_.phases[static_cast<size_t>(i)];
+    open();
+    b.touchdown =
+        Touchdown::add(p_.nlp, *b.model, config_, b.phase, config_.step_length, spec.copy);
+    const int stage =
+        close({spec.copy + "touchdown", StageKind::kTouchdown, spec.step, spec.variant, {}, {}, i});
+    couple(stage, i);
+    return stage;
+  }
+
+  void addRows(const TransitionSpec& t) {
     const int n2 = built(t.to).point.stateSize();
     switch (t.kind) {
       case TransitionKind::kContinuity:
@@ -89,12 +102,8 @@ class Builder {
         addStepDuration(t);
         break;
     }
-    const PhaseSpec& to = shape_.phases[static_cast<size_t>(t.to)];
-    const int stage = close({t.name, StageKind::kTransition, to.step, to.variant, {}, {}, -1});
-    declareCouplings(stage, t);
   }
 
- private:
   const Phase& built(int i) const { return p_.built[static_cast<size_t>(i)].phase; }
 
   /// (theta, dtheta) at a phase's first point.
