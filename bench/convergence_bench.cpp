@@ -1,5 +1,5 @@
 /// @file convergence_bench.cpp
-/// How often the shipped problems converge, and to which optimum (issue 34, item 1): every OCP
+/// How often the shipped problems converge, and to which optimum: every OCP
 /// config at SSP meshes of 24, 27, 30, 33 and 36 segments, each from two starts, the config's
 /// own initial guess (the polynomial gait, or the straight-leg guess) and a neighbouring solved
 /// gait (the config's solution at its shipped mesh, resampled onto the other mesh), plus every

@@ -1,5 +1,5 @@
 /// @file ground_bench.cpp
-/// Speed against accuracy of the three grounds (issue 5): the five-link robot with a 0.30 m heel
+/// Speed against accuracy of the three grounds: the five-link robot with a 0.30 m heel
 /// (tests/apps/mu2004_five_link_long_heel.yaml, where the polynomial gait's ZMP fits the foot; on
 /// the shipped 5 cm heel it walks on a saturated ankle and falls at step 1) tracks the
 /// polynomial gait (configs/gaits/mu2004.yaml) for 10 steps with computed torque on rigid,

@@ -1,5 +1,5 @@
 /// @file ocp_study.cpp
-/// The collocation study of issue 6 (bench/ocp_study.hpp): speed against accuracy of the OCP.
+/// The collocation study (bench/ocp_study.hpp): speed against accuracy of the OCP.
 /// Usage: ocp_study collocation|derivatives|guesses [--repeats N] [--seeds N] [--tol T]
 ///   collocation: both schemes on coarse to fine meshes, median of N solves (default 3) at
 ///                Ipopt tolerance T (default 1e-9: solver error far below discretisation error)

@@ -1,6 +1,6 @@
 #pragma once
 /// @file ocp_study.hpp
-/// The collocation study of issue 6: what a scheme, a mesh, a derivative mode and an initial
+/// The collocation study: what a scheme, a mesh, a derivative mode and an initial
 /// guess cost (Ipopt iterations, wall time) and buy (accuracy, convergence), on the RABBIT
 /// benchmark (configs/ocp/rabbit_kelly2017.yaml, Kelly 2017) and the default five-link problem
 /// (configs/ocp/mu2004_walk.yaml). Each study prints one CSV to stdout

@@ -1,5 +1,5 @@
 /// @file solve_profile.cpp
-/// Where the time of a whole gait solve goes (issue 16), the way `gaitopt optimize` spends it:
+/// Where the time of a whole gait solve goes, the way `gaitopt optimize` spends it:
 /// reading the config and robot, the polynomial guess, building the NLP, recording the
 /// sparsity, Ipopt (its linear solves apart), our callbacks, and writing the result folder
 /// (trajectory.csv and trajectory.json at 1 kHz and summary.json, no pictures). Problems: the
@@ -81,7 +81,7 @@ const std::vector<Lever> kLevers = {
     {"bound_mult_init_method constant",
      [](ocp::SolverOptions& o) { o.bound_mult_init_method = "constant"; }},
     {"tolerance 1e-6", [](ocp::SolverOptions& o) { o.tolerance = 1e-6; }},
-    {"tolerance 1e-6, bound_mult_init_method constant (before issue 16's change)",
+    {"tolerance 1e-6, bound_mult_init_method constant",
      [](ocp::SolverOptions& o) {
        o.tolerance = 1e-6;
        o.bound_mult_init_method = "constant";

@@ -58,13 +58,4 @@ S zeroMomentPoint(const Model& model, const Vec<S>& theta, const Vec<S>& dtheta,
   return num / den;
 }
 
-/// Centre of pressure of point contacts on the ground y = 0 (ground frame on a slope): the x where
-/// the ground wrench has zero moment. `moment_b` is the ground moment on the robot at B (ccw, =
-/// -tau0) [m].
-template <class S>
-S centreOfPressure(const S& x_b, const Vec2<S>& force_b, const S& moment_b, const S& x_e,
-                   const Vec2<S>& force_e) {
-  return (x_b * force_b(1) + x_e * force_e(1) + moment_b) / (force_b(1) + force_e(1));
-}
-
 }  // namespace gaitopt::dynamics

@@ -3,7 +3,7 @@
 /// Numbers as text for the 1 kHz exports (trajectory.csv, trajectory.json): the shortest decimal
 /// that reads back as exactly the same double, so a file round-trips bit for bit. std::to_chars
 /// (libstdc++'s Ryu) writes it in half the time of fmt's "{}" and a third of "{:.17g}", which was
-/// most of the cost of writing a result folder (issue 16 item 4).
+/// most of the cost of writing a result folder.
 #include <charconv>
 #include <string>
 

@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # Runs the dynamics micro-benchmarks and prints a markdown table of per-benchmark median and
 # minimum time over 15 repetitions, with the ratio of each median to BM_MassMatrix's; then
-# the OCP solve-time table (bench/ocp_bench.cpp), the solve-time profile of issue 16 (where a
+# the OCP solve-time table (bench/ocp_bench.cpp), the solve-time profile (where a
 # whole solve's time goes, and the solver settings measured against the shipped ones,
 # bench/solve_profile.cpp), every shipped config with MUMPS and with gaitopt's KKT solver
 # (scripts/linear_solver_compare.sh) and how often each converges on the five-link configs at
 # five meshes (scripts/solver_robustness.sh), how often every shipped problem converges over
-# meshes and starts (bench/convergence_bench.cpp, issue 34), the double support in theta
-# against reduced coordinates (bench/dsp_coordinates.cpp, issue 15), then the
+# meshes and starts (bench/convergence_bench.cpp), the double support in theta
+# against reduced coordinates (bench/dsp_coordinates.cpp), then the
 # speed-against-accuracy table and chart
 # of the ground models (bench/ground_bench.cpp, scripts/plots/ground_chart.py).
 # Usage: scripts/bench.sh BUILD_DIR   (BUILD_DIR configured with GAITOPT_BUILD_BENCH=ON, built)

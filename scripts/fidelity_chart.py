@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Fidelity chart of issue 20 ("model no more than a scene needs"): Mu's five-link robot and its
+"""Fidelity chart ("model no more than a scene needs"): Mu's five-link robot and its
 two reductions (configs/robots/mu2004_three_link.yaml: knees locked, point feet;
 mu2004_compass_gait.yaml: also the torso lumped at the hip) solve the same torque-squared gait
 problem over a speed sweep 0.3 .. 1.2 m/s at one step-frequency rule: the step length stays

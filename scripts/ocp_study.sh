@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The collocation study of issue 6 (bench/ocp_study.cpp): speed against accuracy of the OCP by
+# The collocation study (bench/ocp_study.cpp): speed against accuracy of the OCP by
 # scheme and mesh, by derivative mode, and by initial guess, on RABBIT (Kelly 2017) and the
 # five-link default problem; then the charts and markdown tables
 # (scripts/plots/ocp_study_charts.py). Writes OUT_DIR/{collocation,derivatives,guesses}.{csv,md}

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Cost against robustness (issue 15 item 4): the default five-link problem
+# Cost against robustness: the default five-link problem
 # (configs/ocp/mu2004_walk.yaml) solved with a designed strike of normal velocity v (0: lands at
 # rest, the default; else touchdown.normal_velocity [v, v + 0.01] m/s at Mu ch. 5's flat
 # single-impact sector, 50-140 deg, as mu2004_walk_strike.yaml) and with friction and ZMP margins

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs one optimise of the small RABBIT benchmark (configs/ocp/rabbit_kelly2017.yaml) under
-# valgrind's memcheck and fails on any memory error or leak (issue 7). Prints valgrind's error
+# valgrind's memcheck and fails on any memory error or leak. Prints valgrind's error
 # and leak summary and the wall time.
 # Usage: scripts/valgrind.sh BUILD_DIR   (a build of the gaitopt_cli target)
 set -euo pipefail

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "dynamics/centre_of_pressure.hpp"
 #include "dynamics/kinematics.hpp"
 
 namespace gaitopt::gaits {
@@ -32,8 +33,7 @@ double minFootCopMargin(const Trajectory& traj, const dynamics::Model& model) {
   for (const Knot& k : traj.knots()) {
     const double normal = k.force_stance.y();
     if (!(normal > 0)) return -kInfinity;
-    const double cop = -k.tau(0) / normal;  // the ground moment on the robot at B is -tau0
-    lowest = std::min({lowest, cop + foot.heel, foot.toe - cop});
+    lowest = std::min(lowest, dynamics::copMargin(dynamics::stanceCop(k.tau(0), normal), foot));
   }
   return lowest;
 }

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "dynamics/centre_of_pressure.hpp"
 #include "dynamics/energy.hpp"
 #include "dynamics/ground.hpp"
 #include "dynamics/impact/impact.hpp"

@@ -25,7 +25,7 @@ double minNormalForce(const Trajectory& traj);
 /// Largest |F_x| / F_y at any tip in contact: the friction coefficient the gait needs [-].
 double maxFrictionRatio(const Trajectory& traj);
 /// x of the ZMP (centre of pressure of the tip forces and the ground moment -tau0 at B),
-/// relative to B [m]. Mirrors dynamics::centreOfPressure.
+/// relative to B [m]. dynamics::centreOfPressure of the knot.
 double zmpX(const Knot& knot, double step_length);
 /// Smallest signed distance from the ZMP to the support boundary [m]: SSP support
 /// [-heel, toe] around B; DSP support [-heel, step_length + toe]. Negative when outside.

@@ -58,7 +58,7 @@ TrajectoryText::TrajectoryText(const std::vector<Knot>& rows, double step_length
                                const dynamics::Model& model)
     : robot_(model.name()), step_length_(step_length), names_(columnNames(model)) {
   requireRows(rows, model);
-  // The halves are formatted at once on two cores: formatting is most of a write (issue 16).
+  // The halves are formatted at once on two cores: formatting is most of a write.
   const std::span<const Knot> all(rows);
   const size_t half = rows.size() / 2;
   auto first = std::async(std::launch::async, [&] {

@@ -2,7 +2,7 @@
 /// @file trajectory_text.hpp
 /// The cells of an export as text, formatted once for both trajectory.csv and trajectory.json:
 /// the two files hold the same 60 columns of 1 kHz samples, and formatting the numbers was most
-/// of the cost of writing a result folder (issue 16 item 4). Numbers are the shortest decimal
+/// of the cost of writing a result folder. Numbers are the shortest decimal
 /// that reads back as exactly the same double (io/number_text.hpp).
 #include <string>
 #include <string_view>

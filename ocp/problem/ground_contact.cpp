@@ -24,6 +24,7 @@ GroundContact::GroundContact(const dynamics::Model& model, const PointLayout& po
   if (zmp_foot) {
     const double heel = zmp_foot->heel;
     const double hi = (dsp ? step_length : 0.0) + zmp_foot->toe;
+    // dynamics/centre_of_pressure.hpp in moment form, linear in (F, tau0):
     // M = step_length F_Ey - tau0; M + heel Fy >= 0 and hi Fy - M >= 0.
     rows.push_back(Row(0, heel, 0, step_length + heel, -1));
     rows.push_back(Row(0, hi, 0, hi - step_length, 1));

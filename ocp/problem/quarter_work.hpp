@@ -1,6 +1,6 @@
 #pragma once
 /// @file quarter_work.hpp
-/// Absolute work that holds between the collocation points (issue 15). In Hermite-Simpson the
+/// Absolute work that holds between the collocation points. In Hermite-Simpson the
 /// torque u and the rate v are quadratics through a segment's three points, so each joint's
 /// power tau_j dq_j is a quartic in time. Work slacks at the three points alone let the optimum
 /// put tau_j = 0 or dq_j = 0 at each of them and work freely in between: the least-cost-of-

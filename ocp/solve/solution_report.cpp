@@ -100,7 +100,7 @@ nlohmann::ordered_json strikeJson(const StrikeReport& s, const OcpConfig& config
 }
 
 /// The objective term by term (the solver's quadrature), and the share of the torque-squared
-/// regulariser in it when another term is the primary one (issue 15: a "small" regulariser was
+/// regulariser in it when another term is the primary one (a "small" regulariser was
 /// 78 % of the least-cost-of-transport objective).
 nlohmann::ordered_json costTermsJson(const Nlp& nlp, const Eigen::VectorXd& x,
                                      const CostWeights& weights) {

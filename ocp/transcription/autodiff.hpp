@@ -15,7 +15,7 @@
 ///
 /// The derivative vectors have bounded sizes, so they live on the stack: with heap vectors the
 /// nested impact Hessian allocated at every operation and took two thirds of the Hessian
-/// callback's time in a five-link solve (issue 16).
+/// callback's time in a five-link solve.
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 

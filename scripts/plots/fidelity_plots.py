@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Fidelity chart of issue 20 from scripts/fidelity_chart.py's CSV: cost of transport, peak
+"""Fidelity chart from scripts/fidelity_chart.py's CSV: cost of transport, peak
 joint torque and solve time of the five-link robot and its three-link and compass-gait
 reductions against walking speed, and each reduction's ratio to the five-link value (the band
 of +-10 % marks where a small model answers within 10 %). A failed solve is a missing point.

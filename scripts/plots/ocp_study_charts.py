@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Charts and markdown tables of the collocation study (bench/ocp_study, issue 6).
+"""Charts and markdown tables of the collocation study (bench/ocp_study).
 
 Usage: ocp_study_charts.py DIR
 Reads the CSVs bench/ocp_study wrote into DIR (collocation.csv, derivatives.csv, guesses.csv;

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Cost against robustness of the strike study (scripts/strike_study.sh, issue 15 item 4).
+"""Cost against robustness of the strike study (scripts/strike_study.sh).
 
 Usage: strike_study_chart.py RUNS_DIR OUT_DIR
 RUNS_DIR holds one gait folder per variant, named v<V>_f<FRICTION_MARGIN>_z<ZMP_MARGIN>

@@ -19,6 +19,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "dynamics/centre_of_pressure.hpp"
+
 namespace gaitopt::sim {
 
 /// What happens when the controller asks the stance ankle for more than the foot can carry.
@@ -50,23 +52,16 @@ inline constexpr const char* kFootRotation =
 inline constexpr const char* kStanceLiftoff = "stance tip lifts off the ground";
 inline constexpr const char* kLeadingLiftoff = "leading tip lifts off the ground";
 
-/// Margin of the stance foot's centre of pressure in moment form, > 0 while -tau0 / F_y lies
-/// inside [-heel, toe] with F_y > 0: min(heel F_y - tau0, toe F_y + tau0) [N m].
-inline double copMomentMargin(double tau0, double force_y, double heel, double toe) {
-  const double behind = heel * force_y - tau0, ahead = toe * force_y + tau0;
-  return behind < ahead ? behind : ahead;
-}
-
 /// A foot carrying less than this fraction of the robot's weight has no centre of pressure worth
 /// recording (the compliant ground's force ripple and a trailing foot about to lift off).
 inline constexpr double kLoadedFoot = 0.1;
 
 /// Margin of the single-support CoP -tau0 / F_y inside [-heel, toe], negative outside [m]; +inf
 /// when the foot carries less than kLoadedFoot of `weight` [N]. What summary.json records.
-inline double copMargin(double tau0, double force_y, double heel, double toe, double weight) {
+inline double loadedCopMargin(double tau0, double force_y, const dynamics::Foot& foot,
+                              double weight) {
   if (force_y < kLoadedFoot * weight) return std::numeric_limits<double>::infinity();
-  const double cop = -tau0 / force_y;
-  return cop + heel < toe - cop ? cop + heel : toe - cop;
+  return dynamics::copMargin(dynamics::stanceCop(tau0, force_y), foot);
 }
 
 }  // namespace gaitopt::sim

@@ -56,8 +56,8 @@ struct Walker {
   const WalkLog& log;
 
   AnkleLimit ankleLimit(const StepRun& run) const {
-    const double fy = std::max(run.force.b(1), 0.0);
-    return {-plant.foot().toe * fy, plant.foot().heel * fy, plant.joints().front().actuated};
+    const auto range = dynamics::ankleTorqueRange(run.force.b(1), plant.foot());
+    return {range.lower, range.upper, plant.joints().front().actuated};
   }
 
   /// Saturates in the DSP always (the trailing foot rolls onto its toe), in the SSP when the
@@ -141,9 +141,9 @@ struct Walker {
     const dynamics::Foot& foot = plant.foot();
     const double fy = run.force.b(1), tau0 = tau(0);
     if (run.phase == Phase::kSsp)
-      r.min_cop_margin = std::min(r.min_cop_margin, copMargin(tau0, fy, foot.heel, foot.toe,
-                                                              plant.totalMass() * plant.gravity()));
-    if (copMomentMargin(tau0, fy, foot.heel, foot.toe) >= 0) return "";
+      r.min_cop_margin = std::min(
+          r.min_cop_margin, loadedCopMargin(tau0, fy, foot, plant.totalMass() * plant.gravity()));
+    if (dynamics::copMomentMargin(tau0, fy, foot) >= 0) return "";
     if (saturates(run.phase)) {
       r.cop_saturated_time += h;
       return "";

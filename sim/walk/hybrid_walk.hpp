@@ -69,7 +69,7 @@ struct StepResult {
   double slip = 0;
   /// Least margin of the CoP the controller asked of the stance foot in single support, inside
   /// [-heel, toe] (negative: outside, so saturated or a foot rotation; contact_rules.hpp
-  /// copMargin); +inf without an actuated ankle [m].
+  /// loadedCopMargin); +inf without an actuated ankle [m].
   double min_cop_margin = std::numeric_limits<double>::infinity();
   double cop_saturated_time = 0;  ///< time the ankle torque was saturated [s]
   double stance_velocity = 0;     ///< the new stance tip's sliding velocity at the next start [m/s]

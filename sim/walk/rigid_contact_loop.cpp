@@ -64,10 +64,10 @@ ContactLoop::State ContactLoop::evaluate(double t, const Eigen::VectorXd& x) con
   if (!ankleLimited()) return s;
   const dynamics::Foot& foot = plant_.foot();
   const double fy = s.force_stance(1), tau0 = s.tau(0);
-  s.cop_moment = copMomentMargin(tau0, fy, foot.heel, foot.toe);
-  s.cop_margin = phase_ == Phase::kSsp ? copMargin(tau0, fy, foot.heel, foot.toe,
-                                                   plant_.totalMass() * plant_.gravity())
-                                       : std::numeric_limits<double>::infinity();
+  s.cop_moment = dynamics::copMomentMargin(tau0, fy, foot);
+  s.cop_margin = phase_ == Phase::kSsp
+                     ? loadedCopMargin(tau0, fy, foot, plant_.totalMass() * plant_.gravity())
+                     : std::numeric_limits<double>::infinity();
   const bool saturate = rules_.cop_limit == CopLimit::kSaturate || phase_ == Phase::kDsp;
   if (saturate && s.cop_moment < 0) saturateAnkle(s, pushed);
   return s;
@@ -81,7 +81,8 @@ void ContactLoop::saturateAnkle(State& s, const Vec2d& pushed) const {
   const double slope =
       contactDynamics(plant_, s.theta, s.dtheta, probe, contacts_, pushed).force_b(1) - fy;
   const double unloaded = fy - slope * tau0;  // F_By at tau0 = 0
-  // tau0 = heel F_By(tau0) and tau0 = -toe F_By(tau0): the CoP on the heel or on the toe.
+  // The ends of dynamics::ankleTorqueRange at the load the torque itself changes:
+  // tau0 = heel F_By(tau0) and tau0 = -toe F_By(tau0), the CoP on the heel or on the toe.
   const double upper = foot.heel * unloaded / (1 - foot.heel * slope);
   const double lower = -foot.toe * unloaded / (1 + foot.toe * slope);
   s.tau(0) = unloaded > 0 ? std::max(lower, std::min(tau0, upper)) : 0.0;

@@ -28,7 +28,7 @@ class ContactLoop {
     gaits::Knot ref;
     Eigen::VectorXd memory, memory_rate;
     double cop_margin = 0;   ///< of the CoP the controller asked for (StepResult) [m]
-    double cop_moment = 1;   ///< copMomentMargin of that request [N m]
+    double cop_moment = 1;   ///< dynamics::copMomentMargin of that request [N m]
     bool saturated = false;  ///< the plant's ankle torque was clipped
   };
 

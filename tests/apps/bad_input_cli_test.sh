@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# One case per class of bad input (issue 7): each must exit with its documented code (2 bad
+# One case per class of bad input: each must exit with its documented code (2 bad
 # input, 3 a gait that cannot be realised) and print one line naming the file, the key or line,
 # the value and what was expected; no result folder may appear.
 # Usage: bad_input_cli_test.sh <path to gaitopt binary> <repo root>

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Failed and interrupted solves (issue 7): a solve that does not converge or is infeasible
+# Failed and interrupted solves: a solve that does not converge or is infeasible
 # exits with its documented code (4, 3), names Ipopt's status and the worst violated constraint
 # by name, phase and node, writes its point to OUT.failed (marked by FAILED.txt and
 # "converged": false) and never touches a previous good result in OUT; a killed run leaves OUT

@@ -14,7 +14,7 @@ rows=$(($(wc -l <"$TMP/opt/trajectory.csv") - 1))
 check_json "(a) summary" "$TMP/opt/summary.json" <<'PY'
 assert d["status"] == "Solve_Succeeded", d["status"]
 assert abs(d["cost"] - 390.79) < 0.005, d["cost"]
-# issue 16: 8 iterations with multipliers started mu-based (13 before); a margin for other BLAS
+# 8 iterations with the multipliers started mu-based (13 when started constant); a margin for other BLAS
 assert d["iterations"] <= 10, d["iterations"]
 assert d["iterations"] > 0 and d["wall_time_s"] > d["callback_time_s"] > 0
 assert d["max_violation"] < 1e-6, d["max_violation"]
@@ -53,7 +53,7 @@ run optimize --config "$FIVE" --out "$TMP/warm5" --warm-start "$TMP/cold5" --qui
 import json, sys
 cold, warm = (json.load(open(f)) for f in sys.argv[1:3])
 assert abs(warm["cost"] - cold["cost"]) < 1e-4 * cold["cost"], (warm["cost"], cold["cost"])
-# issue 16: 131.516 to 5 digits in 15 iterations (29 before); a margin for other BLAS
+# 131.516 to 5 digits in 15 iterations (29 with Ipopt's default multiplier start); a margin for other BLAS
 assert abs(cold["cost"] - 131.516) < 5e-4 and cold["iterations"] <= 18, (cold["cost"], cold["iterations"])
 assert warm["iterations"] < cold["iterations"], (warm["iterations"], cold["iterations"])
 PY

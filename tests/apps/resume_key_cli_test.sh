@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Resumes keyed by content (issue 39): every option of the resumable commands, read from their
+# Resumes keyed by content: every option of the resumable commands, read from their
 # --help, either shapes the rows and is in the folder's key (a rerun that changes it is refused,
 # exit 2, naming the key) or is listed here as not shaping them with the reason (a rerun that
 # changes it resumes). An option missing from the tables fails the test, so a new option must

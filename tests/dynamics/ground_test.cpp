@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "dynamics/centre_of_pressure.hpp"
 #include "dynamics/dsp_dynamics.hpp"
 #include "dynamics/ground.hpp"
 #include "dynamics/model_variation.hpp"

@@ -71,7 +71,7 @@ TEST_F(BadRobotFile, ZeroLength) {
       << msg;
 }
 
-// mass 1e308 overflowed the mass matrix to NaN with exit 0 (issue 19): refused, range named.
+// mass 1e308 overflowed the mass matrix to NaN with exit 0: refused, range named.
 TEST_F(BadRobotFile, AbsurdMassNamesThePlausibleRange) {
   const std::string msg = errorOf(write("mass: 5.28", "mass: 1e308"));
   EXPECT_NE(msg.find("key 'links[1].mass': expected a number in [0.001, 10000] [kg], got 1e308"),

@@ -1,4 +1,4 @@
-// The polynomial gait of Mu ch. 3 on a slope (issue 8): designed in the ground frame with gravity
+// The polynomial gait of Mu ch. 3 on a slope: designed in the ground frame with gravity
 // rotated (dynamics/model.hpp), it still satisfies the dynamics exactly, and its energy balance
 // is the physics of walking uphill: over one step the net actuator work equals the potential
 // gained, m g step_length sin(gamma), since the gait is periodic and touches down without impact

@@ -142,7 +142,7 @@ TEST(DspChart, DefaultOptimumsDenseExportHoldsTheTipAtThePointsAndBetweenThem) {
   const double between = gaits::maxDspTipDrift(dense, model);
   RecordProperty("drift_at_points_m", fmt::format("{:.2e}", at_points));
   RecordProperty("drift_between_points_m", fmt::format("{:.2e}", between));
-  EXPECT_LT(at_points, 1e-6);  // issue 15's bounds; measured 1e-13 for both
+  EXPECT_LT(at_points, 1e-6);  // the export contract's DSP tip bound; measured 1e-13 for both
   EXPECT_LT(between, 1e-4);
   // The export is the pinned chain's motion: E does not accelerate, the equations of motion
   // hold, the rates are the angles' derivatives and foot B's CoP stays on the foot.

@@ -1,4 +1,4 @@
-// The RABBIT gait problem of Kelly (2017) on slopes of +-0.05 rad (issue 8), on a coarse mesh:
+// The RABBIT gait problem of Kelly (2017) on slopes of +-0.05 rad, on a coarse mesh:
 // it converges, and the optimum obeys the energy balance of a periodic step with an impact,
 //   integral of sum_j tau_j dq_j dt = m g L sin(gamma) + (K^- - K^+),
 // the potential gained along the slope plus the kinetic energy the heel strike absorbs (the

@@ -1,4 +1,4 @@
-// Gait optimisation for the robots with straight legs (issue 20): the straight-leg initial
+// Gait optimisation for the robots with straight legs: the straight-leg initial
 // guess (ocp/guess/straight_leg_guess.hpp) meets its boundary conditions, and the shipped configs
 // of the compass gait and the three-link walker solve to periodic gaits that an independent
 // re-simulation (RKF 7(8), ocp/solve/resimulation.hpp) and the closed-form impact map

@@ -1,10 +1,11 @@
-// Contact that is physical (issue 14 item 4): the free-base contact dynamics reduce to Mu's pinned
+// Contact that is physical: the free-base contact dynamics reduce to Mu's pinned
 // models and obey Newton's law while a tip slides; the stance ankle saturates where the CoP
 // reaches the edge of the foot; on rigid ground a small slip is measured and the walk goes on,
 // a large one ends it, and the polynomial gait (ZMP 0.147 m off the foot) fails as a foot
 // rotation when the rules say so.
 #include <gtest/gtest.h>
 
+#include "dynamics/centre_of_pressure.hpp"
 #include "dynamics/dsp_dynamics.hpp"
 #include "dynamics/ground.hpp"
 #include "dynamics/model_variation.hpp"

@@ -84,7 +84,7 @@ TEST_F(FiveLinkWalk, BothGaitsWalkTwentyStepsOnAStableCycle) {
   // the export overshoots: at t = 0.58275 s it gives ddtheta1 = 23.8 rad/s^2 between samples of 3.2
   // and 2.7, so computed torque asks the ankle for +13 N m (-10 N m at the samples) at the RK4
   // midpoints. Clipped at the 5 cm heel, the swing tip stays 40 um up at the planned touchdown and
-  // the stance tip slides 1 cm (measured; issue 14 item 4, open: a reference matter).
+  // the stance tip slides 1 cm (measured: the reference, not the ground, is at fault).
   const dynamics::Model plant = dynamics::withFoot(*model_, {0.30, model_->foot().toe});
   for (const auto& [name, step] : gaits) {
     const Reference ref(*step);

@@ -1,4 +1,4 @@
-// The reference survives timing errors (issue 14 item 1): past the planned touchdown the swing
+// The reference survives timing errors: past the planned touchdown the swing
 // tip keeps descending instead of hovering, and a phase starts from where the robot is with
 // derivatives that are the derivatives of the faded angles.
 #include <gtest/gtest.h>
