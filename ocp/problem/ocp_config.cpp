@@ -176,6 +176,12 @@ void readSolver(const YamlReader& r, SolverOptions& s) {
   s.print_level = static_cast<int>(r.numberOr("print_level", 0, config::inRange(0, 12, "")));
 }
 
+// The problem's shape (ocp/shape/shape_config.hpp): its keys sit beside the others at the root.
+std::vector<std::string> withShapeKeys(std::vector<std::string> keys) {
+  keys.insert(keys.end(), shapeKeys().begin(), shapeKeys().end());
+  return keys;
+}
+
 }  // namespace
 
 std::string CostWeights::primary() const {
@@ -185,9 +191,9 @@ std::string CostWeights::primary() const {
 
 OcpConfig loadOcpConfig(const std::string& path, const std::vector<config::Override>& overrides) {
   const YamlReader root = YamlReader::fromFile(path, overrides);
-  root.allowOnly({"name", "description", "robot", "initial_guess", "step_length", "phases",
-                  "step_duration", "scheme", "impact", "cost", "mesh_refinement", "constraints",
-                  "solver", "slope", "touchdown"});
+  root.allowOnly(withShapeKeys({"name", "description", "robot", "initial_guess", "step_length",
+                                "phases", "step_duration", "scheme", "impact", "cost",
+                                "mesh_refinement", "constraints", "solver", "slope", "touchdown"}));
   OcpConfig c;
   c.name = root.string("name");
   root.stringOr("description", "");
@@ -229,6 +235,7 @@ OcpConfig loadOcpConfig(const std::string& path, const std::vector<config::Overr
                 "an impactless touchdown");
   }
   if (root.has("solver")) readSolver(root.map("solver"), c.solver);
+  c.shape = readShapeConfig(root);  // the problem's shape (ocp/shape/shape_config.hpp)
   return c;
 }
 

@@ -8,6 +8,7 @@
 #include "config/overrides.hpp"
 #include "dynamics/model.hpp"
 #include "ocp/problem/clearance_profile.hpp"
+#include "ocp/shape/shape_config.hpp"
 #include "ocp/solve/ipopt_adapter.hpp"
 #include "ocp/transcription/collocation.hpp"
 
@@ -110,6 +111,9 @@ struct OcpConfig {
   /// tracking error does not rotate the foot about its edge [m], < half the foot.
   double zmp_margin = 0;
   SolverOptions solver;
+
+  // The problem's shape: steps per period and model variants (ocp/shape/shape_config.hpp).
+  ShapeConfig shape;
 };
 
 /// The problem of the config file `path`, with `overrides` (`--set KEY=VALUE`) in place of the

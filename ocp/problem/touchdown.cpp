@@ -51,39 +51,40 @@ Eigen::VectorXd gather(const Eigen::VectorXd& x, const std::vector<int>& idx) {
 }  // namespace
 
 Touchdown Touchdown::add(Nlp& nlp, const dynamics::Model& model, const OcpConfig& c,
-                         const Phase& ssp, double step_length) {
+                         const Phase& ssp, double step_length, const std::string& prefix) {
   const int n = model.nLinks();
   const std::vector<int> theta_end = ssp.indices(-1, ssp.point.q);
   Touchdown t;
   t.strike_ = concat(theta_end, ssp.indices(-1, ssp.point.v));
   t.rates_after_ = ssp.indices(-1, ssp.point.v);
   // Every link is nonlinear in the strike angles only (the first n of its variables).
-  addLink(nlp, "touchdown_position", 2, theta_end, n, TipAtTouchdown{&model, step_length});
+  addLink(nlp, prefix + "touchdown_position", 2, theta_end, n, TipAtTouchdown{&model, step_length});
   if (c.impact == ImpactModel::kImpactless) {
-    addLink(nlp, "touchdown_at_rest", 2, t.strike_, n, StrikeVelocity{&model, false});
+    addLink(nlp, prefix + "touchdown_at_rest", 2, t.strike_, n, StrikeVelocity{&model, false});
     return t;
   }
   const StrikeDesign& strike = c.touchdown;
   if (strike.enabled)  // -v_max <= ydot_e^- <= -v_min: implies the descent below
-    addLink(nlp, "strike_normal_velocity", 1, t.strike_, n, StrikeVelocity{&model, true},
+    addLink(nlp, prefix + "strike_normal_velocity", 1, t.strike_, n, StrikeVelocity{&model, true},
             -strike.normal_max, -strike.normal_min);
   else if (c.swing_descends)
-    addLink(nlp, "strike_downward", 1, t.strike_, n, StrikeVelocity{&model, true}, -kInf, 0.0);
+    addLink(nlp, prefix + "strike_downward", 1, t.strike_, n, StrikeVelocity{&model, true}, -kInf,
+            0.0);
   if (strike.angle)
-    addLink(nlp, "strike_angle", 2, t.strike_, n,
+    addLink(nlp, prefix + "strike_angle", 2, t.strike_, n,
             StrikeAngle{&model, strike.angle_min, strike.angle_max}, 0.0, kInf);
   ImpactLayout l = ImpactLayout::rigid(n, c.impact == ImpactModel::kDouble);
   Eigen::VectorXd lo = Eigen::VectorXd::Constant(l.size(), -kInf), hi = -lo;
   // The old stance tip leaves the ground.
   if (!l.doubleImpact() && c.trailing_lifts) lo(l.base_velocity[1]) = 0;
-  l.offset = nlp.addVariables("impact", l.size(), lo, hi,
+  l.offset = nlp.addVariables(prefix + "impact", l.size(), lo, hi,
                               guessImpact(model, l, gather(nlp.initialGuess(), t.strike_)))
                  .offset;
-  addLink(nlp, "impact", l.size(), concat(t.strike_, l.inDecision(l.all()).indices()), n,
+  addLink(nlp, prefix + "impact", l.size(), concat(t.strike_, l.inDecision(l.all()).indices()), n,
           RigidImpact{&model, l});
   if (c.ground_contact && c.impact_friction) {
     const Slice impulses = l.inDecision(l.impulses());
-    addLink(nlp, "impulse_cones", 3 * impulses.size / 2, impulses.indices(), 0,
+    addLink(nlp, prefix + "impulse_cones", 3 * impulses.size / 2, impulses.indices(), 0,
             ImpulseCones{frictionBound(model, c)}, 0.0, kInf);
   }
   t.rates_after_ = l.inDecision(l.rates_after).indices();

@@ -10,6 +10,7 @@
 ///   contact on.
 /// It owns its variables, rows, guess and energy-loss report.
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -40,9 +41,11 @@ class Touchdown {
   /// Adds the touchdown's rows (and impact variables, guessed from the closed-form impact maps
   /// at the strike state of the SSP's guess) to `nlp`, all of phase kLinkPhase: they tie the
   /// SSP's last point to what follows it.
+  /// `prefix` starts the names of its sets and block when the problem holds several touchdowns
+  /// (other steps, model variants: ocp/shape/gait_shape.hpp).
   /// @throws std::invalid_argument when the friction margin leaves no cone.
   static Touchdown add(Nlp& nlp, const dynamics::Model& model, const OcpConfig& config,
-                       const Phase& ssp, double step_length);
+                       const Phase& ssp, double step_length, const std::string& prefix = "");
 
   /// The impact variables; nullopt when the touchdown is impactless.
   const std::optional<ImpactLayout>& impact() const { return impact_; }

@@ -210,6 +210,11 @@ nlohmann::ordered_json solutionSummary(const GaitResultOptions& o, const dynamic
       {"scheme", toString(problem.ssp.layout.scheme)},
       {"dsp_pin", problem.dsp && problem.dsp->reduced_coordinates ? "position (reduced coordinates)"
                                                                   : "acceleration"}};
+  // A longer period or an ensemble (docs/design.md#the-problems-shape): the folder holds one step.
+  if (problem.steps > 1 || problem.variants > 1)
+    summary["nlp"]["shape"] = {{"steps", problem.steps},
+                               {"variants", problem.variants},
+                               {"exported", "the nominal's first step"}};
   summary["mesh_history"] = meshHistory(solution.history);
   summary["solver"] = solverSettings(config);
   return summary;

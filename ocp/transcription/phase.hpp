@@ -17,10 +17,17 @@ struct Phase {
   /// A double support collocated in reduced coordinates, its leading tip pinned at position
   /// and velocity level at every point (dsp_chart.hpp).
   bool reduced_coordinates = false;
+  /// The phase's name when it is one of several of its kind (another step or a model variant,
+  /// ocp/shape/gait_shape.hpp); empty: "ssp" or "dsp".
+  std::string label;
 
   bool doubleSupport() const { return kind == gaits::Phase::kDsp; }
-  /// "ssp" or "dsp": the prefix of the phase's set and block names, and its tag in the NLP.
-  std::string name() const { return doubleSupport() ? "dsp" : "ssp"; }
+  /// The label, else "ssp" or "dsp": the prefix of the phase's set and block names, and its tag
+  /// in the NLP.
+  std::string name() const {
+    if (!label.empty()) return label;
+    return doubleSupport() ? "dsp" : "ssp";
+  }
   /// Decision-vector indices of `slice` of point p (p < 0 counts from the end).
   std::vector<int> indices(int p, const Slice& slice) const {
     return slice.indices(layout.pointOffset(p < 0 ? layout.points() + p : p));

@@ -134,4 +134,16 @@ run optimize --config "$C" --set 'phases[2].segments=8' --out "$TMP/v" --quiet -
 [[ $RC -eq 2 ]] && grep -q "there is no list item \[2\]" "$TMP/err" ||
   fail "(h) --set past a list's end: exit $RC: $(cat "$TMP/err")"
 [[ ! -e $TMP/v ]] || fail "(h) a refused --set wrote a folder"
+
+# (i) two steps in one period (`--set steps=2`, docs/design.md#the-problems-shape): the passive
+# compass gait stays passive, and the summary says the folder holds the nominal's first step.
+run optimize --config "$ROOT/configs/ocp/compass_gait_passive.yaml" --set steps=2 \
+  --out "$TMP/two" --quiet --no-plots
+[[ $RC -eq 0 ]] || fail "(i) steps=2 exited $RC: $(cat "$TMP/err")"
+check_json "(i) two steps" "$TMP/two/summary.json" <<'PY'
+assert d["nlp"]["shape"] == {"steps": 2, "variants": 1, "exported": "the nominal's first step"}, d["nlp"]
+assert d["cost"] < 1e-8, d["cost"]
+# the passive step of configs/ocp/compass_gait_passive.yaml (Newton shooting): 0.621817212397 s
+assert abs(d["duration"] - 0.621817212397) < 1e-3, d["duration"]
+PY
 echo "optimize CLI: all checks passed"

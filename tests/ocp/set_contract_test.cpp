@@ -1,7 +1,8 @@
 // One contract over every constraint set and cost term of the shipped gait problems
 // (configs/ocp/*.yaml, on a coarse mesh: the sets are the same code whatever the segments, and
 // the five-link walk with an impactless touchdown, with a ZMP margin and with the DSP in reduced
-// coordinates, which no shipped config uses):
+// coordinates, which no shipped config uses, and the shapes of ocp/shape/gait_shape.hpp: two
+// steps in one period, and model variants on fixed and on free durations):
 // outputs fully written, derivatives against the set's own central differences, the same
 // sparsity at three random points (tests/support/set_contract.hpp). Each set is its own test,
 // named config_set, so a failure names the set. A last test shows that the contract catches one
@@ -32,6 +33,14 @@ struct Shipped {
 };
 
 constexpr int kSegments = 3;  // per phase
+
+/// One variant beside the nominal (ocp/shape/shape_config.hpp): a second one adds the same sets
+/// on a larger decision vector.
+std::vector<config::Override> variants() {
+  return {config::parseOverride("variants=[{mass_scale: 1.1}]"),
+          config::parseOverride("variant_feedback={kp: 200, kd: 20}"),
+          config::parseOverride("variant_end_tolerance=0.1")};
+}
 
 std::unique_ptr<Shipped> coarseProblem(OcpConfig config) {
   for (auto& phase : config.phases) {
@@ -66,6 +75,16 @@ const std::map<std::string, std::unique_ptr<Shipped>>& shippedProblems() {
       reduced.dsp_reduced_coordinates = true;
       all.emplace(name + "_reduced_dsp", coarseProblem(reduced));
     }
+    // Two steps in one period: the second step's sets and the relabelling between the steps.
+    all.emplace("compass_gait_passive_two_steps",
+                coarseProblem(loadOcpConfig((dir / "compass_gait_passive.yaml").string(),
+                                            {config::parseOverride("steps=2")})));
+    // Model variants: the feedback law, the start and end conditions and every copied set, on
+    // the nominal's fixed durations and on its free ones (with work slacks in the nominal's
+    // points only, so the law reads two different point layouts).
+    for (const std::string name : {"mu2004_walk", "mu2004_walk_cot"})
+      all.emplace(name + "_variants",
+                  coarseProblem(loadOcpConfig((dir / (name + ".yaml")).string(), variants())));
     return all;
   }();
   return problems;
@@ -137,8 +156,8 @@ INSTANTIATE_TEST_SUITE_P(ShippedProblems, SetContract, ::testing::ValuesIn(allSe
                            return info.param.config + "_" + info.param.name;
                          });
 
-/// Every set and cost term that gait_problem.cpp and touchdown.cpp can add, in each phase it
-/// can appear in, is among those the contract runs over.
+/// Every set and cost term that the shape builder (ocp/shape/) and touchdown.cpp can add, in
+/// each phase it can appear in, is among those the contract runs over.
 TEST(SetContractCoverage, EverySetOfTheGaitProblemIsChecked) {
   std::set<std::string> checked;
   for (const SetCase& c : allSets()) checked.insert(c.name);
@@ -172,7 +191,27 @@ TEST(SetContractCoverage, EverySetOfTheGaitProblemIsChecked) {
                            "ssp_quarter_work_split",
                            "dsp_quarter_work_split",
                            "ssp_quarter_abs_work",
-                           "dsp_quarter_abs_work"})
+                           "dsp_quarter_abs_work",
+                           "step2_ssp_defects",
+                           "step2_ssp_dynamics",
+                           "step2_ssp_ground_contact",
+                           "step2_touchdown_position",
+                           "step2_impact",
+                           "step2_start",
+                           "variant1_ssp_defects",
+                           "variant1_ssp_dynamics",
+                           "variant1_ssp_ground_contact",
+                           "variant1_ssp_clearance",
+                           "variant1_ssp_feedback",
+                           "variant1_dsp_defects",
+                           "variant1_dsp_dynamics",
+                           "variant1_dsp_ground_contact",
+                           "variant1_dsp_feedback",
+                           "variant1_impact",
+                           "variant1_impulse_cones",
+                           "variant1_touchdown_to_dsp",
+                           "variant1_start",
+                           "variant1_end"})
     EXPECT_TRUE(checked.count(name)) << name << " is in no problem of the contract";
 }
 

@@ -1,0 +1,57 @@
+#include "ocp/shape/shape_config.hpp"
+
+#include <cmath>
+
+namespace gaitopt::ocp {
+namespace {
+
+using config::YamlReader;
+
+constexpr int kMaxSteps = 4;
+constexpr int kMaxVariants = 8;
+
+int readSteps(const YamlReader& root) {
+  const double steps =
+      root.numberOr("steps", 1, config::inRange(1, kMaxSteps, "(whole number of steps)"));
+  if (steps != std::floor(steps)) root.fail("steps", "expected a whole number of steps");
+  return static_cast<int>(steps);
+}
+
+VariantConfig readVariant(const YamlReader& r) {
+  r.allowOnly({"mass_scale"});
+  return {r.number("mass_scale", config::inRange(0.5, 2.0, "(times the nominal mass)"))};
+}
+
+FeedbackGains readFeedback(const YamlReader& r) {
+  r.allowOnly({"kp", "kd"});
+  return {r.number("kp", config::inRange(0, 1e5, "[N m / rad]")),
+          r.number("kd", config::inRange(0, 1e4, "[N m s / rad]"))};
+}
+
+}  // namespace
+
+const std::vector<std::string>& shapeKeys() {
+  static const std::vector<std::string> keys = {"steps", "variants", "variant_feedback",
+                                                "variant_end_tolerance"};
+  return keys;
+}
+
+ShapeConfig readShapeConfig(const YamlReader& root) {
+  ShapeConfig s;
+  s.steps = readSteps(root);
+  if (!root.has("variants")) {
+    for (const char* key : {"variant_feedback", "variant_end_tolerance"})
+      if (root.has(key)) root.fail(key, "only meaningful with `variants`");
+    return s;
+  }
+  for (const auto& item : root.list("variants")) s.variants.push_back(readVariant(item));
+  if (s.variants.empty() || static_cast<int>(s.variants.size()) > kMaxVariants)
+    root.fail("variants", "expected 1 to 8 variants besides the nominal");
+  // Without the law a variant's torques are free and the ensemble says nothing.
+  s.feedback = readFeedback(root.map("variant_feedback"));
+  s.end_tolerance =
+      root.number("variant_end_tolerance", config::inRange(1e-6, 10, "(state distance)"));
+  return s;
+}
+
+}  // namespace gaitopt::ocp

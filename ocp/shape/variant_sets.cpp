@@ -1,0 +1,89 @@
+#include "ocp/shape/variant_sets.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+namespace gaitopt::ocp {
+namespace {
+
+int actuatedJoints(const dynamics::Model& model) {
+  return static_cast<int>(std::count_if(model.joints().begin(), model.joints().end(),
+                                        [](const auto& joint) { return joint.actuated; }));
+}
+
+/// Row j of the joint map M (Mu 2.41): q_0 = theta_0, q_j = theta_{j-1} - theta_j.
+std::vector<std::pair<int, double>> jointRow(int j) {
+  if (j == 0) return {{0, 1.0}};
+  return {{j - 1, 1.0}, {j, -1.0}};
+}
+
+}  // namespace
+
+FeedbackLaw::FeedbackLaw(std::string name, const Phase& variant, const Phase& reference,
+                         const dynamics::Model& model, const FeedbackGains& gains)
+    : ConstraintSet(std::move(name), variant.layout.points() * actuatedJoints(model),
+                    variant.name()),
+      joints_(actuatedJoints(model)) {
+  if (variant.layout.points() != reference.layout.points())
+    throw std::invalid_argument("a variant's feedback law needs the reference's mesh");
+  const PointLayout& v = variant.point;
+  const PointLayout& r = reference.point;
+  int row = 0;
+  for (int p = 0; p < variant.layout.points(); ++p) {
+    const int vo = variant.layout.pointOffset(p), ro = reference.layout.pointOffset(p);
+    for (int j = 0; j < model.nLinks(); ++j) {
+      if (!model.joints()[static_cast<size_t>(j)].actuated) continue;
+      entries_.emplace_back(row, vo + v.u[j], 1.0);
+      entries_.emplace_back(row, ro + r.u[j], -1.0);
+      for (const auto& [i, m] : jointRow(j)) {  // - kp M (theta_ref - theta) - kd M (...)
+        entries_.emplace_back(row, ro + r.q[i], -gains.kp * m);
+        entries_.emplace_back(row, vo + v.q[i], gains.kp * m);
+        entries_.emplace_back(row, ro + r.v[i], -gains.kd * m);
+        entries_.emplace_back(row, vo + v.v[i], gains.kd * m);
+      }
+      ++row;
+    }
+  }
+}
+
+void FeedbackLaw::values(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> g) const {
+  g.setZero();
+  for (const auto& e : entries_) g(e.row()) += e.value() * x(e.col());
+}
+
+void FeedbackLaw::jacobian(const Eigen::VectorXd& /*x*/, Triplets& out) const {
+  out.insert(out.end(), entries_.begin(), entries_.end());
+}
+
+StateDistance::StateDistance(std::string name, std::vector<int> a, std::vector<int> b,
+                             double tolerance)
+    : ConstraintSet(std::move(name), 1), a_(std::move(a)), b_(std::move(b)), tolerance_(tolerance) {
+  if (a_.size() != b_.size()) throw std::invalid_argument("states of different sizes");
+}
+
+void StateDistance::values(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> g) const {
+  double sum = 0;
+  for (size_t i = 0; i < a_.size(); ++i) sum += (x(a_[i]) - x(b_[i])) * (x(a_[i]) - x(b_[i]));
+  g(0) = sum;
+}
+
+void StateDistance::jacobian(const Eigen::VectorXd& x, Triplets& out) const {
+  for (size_t i = 0; i < a_.size(); ++i) {
+    const double d = x(a_[i]) - x(b_[i]);
+    out.emplace_back(0, a_[i], 2 * d);
+    out.emplace_back(0, b_[i], -2 * d);
+  }
+}
+
+void StateDistance::hessian(const Eigen::VectorXd& /*x*/, const Eigen::VectorXd& lambda,
+                            Triplets& out) const {
+  const double h = 2 * lambda(0);
+  for (size_t i = 0; i < a_.size(); ++i) {
+    out.emplace_back(a_[i], a_[i], h);
+    out.emplace_back(b_[i], b_[i], h);
+    out.emplace_back(std::max(a_[i], b_[i]), std::min(a_[i], b_[i]), -h);
+  }
+}
+
+}  // namespace gaitopt::ocp

@@ -1,0 +1,158 @@
+// Three model variants sharing one reference (ocp/shape/gait_shape.hpp; the ensemble of
+// Mordatch, Lowrey and Todorov 2015): the five-link walk of configs/ocp/mu2004_walk.yaml with two
+// copies on the robot at 0.95 and 1.05 times its link masses, each driven by joint PD around the
+// nominal reference, solved as one NLP. At the solution every variant is checked against physics
+// computed here, not by the sets: its torques are the feedback law, its points satisfy the
+// single-support dynamics of its own (perturbed) model and not those of the nominal, it starts in
+// the nominal's start state, lands its swing tip one step ahead, keeps its ground force inside
+// the friction cone, and ends within the stated distance of the nominal's end state.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "dynamics/joint_coordinates.hpp"
+#include "dynamics/kinematics.hpp"
+#include "dynamics/ssp_dynamics.hpp"
+#include "support/solved_config.hpp"
+
+namespace gaitopt::ocp {
+namespace {
+
+constexpr double kKp = 300, kKd = 30;  // [N m / rad], [N m s / rad]
+constexpr double kEndTolerance = 0.05;
+
+OcpConfig ensembleConfig() {
+  std::vector<config::Override> o;
+  for (const char* s :
+       {"variants=[{mass_scale: 0.95}, {mass_scale: 1.05}]", "variant_feedback={kp: 300, kd: 30}",
+        "variant_end_tolerance=0.05", "phases[0].segments=15", "phases[1].segments=3"})
+    o.push_back(config::parseOverride(s));
+  return loadOcpConfig(test::shippedOcpConfig("mu2004_walk"), o);
+}
+
+class Ensemble : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+#ifdef NDEBUG
+    solved_ = new test::SolvedConfig(ensembleConfig());
+#endif
+  }
+  void SetUp() override {
+    if (!solved_) GTEST_SKIP() << "a solve: optimised builds only";
+  }
+  static void TearDownTestSuite() {
+    delete solved_;
+  }
+  static const GaitProblem& problem() {
+    return solved_->problem;
+  }
+  static const Eigen::VectorXd& x() {
+    return solved_->result.x;
+  }
+  /// Point k of phase `phase` (0 SSP, 1 DSP) of variant v.
+  static Eigen::VectorXd point(int v, int phase, int k) {
+    const Phase& p = *problem().phasesOf(0, v)[static_cast<size_t>(phase)];
+    return p.layout.point(x(), k < 0 ? p.layout.points() + k : k);
+  }
+  static const PointLayout& layout(int v, int phase) {
+    return problem().phasesOf(0, v)[static_cast<size_t>(phase)]->point;
+  }
+  static const dynamics::Model& modelOf(int v) {
+    return *problem().models[static_cast<size_t>(v)];
+  }
+  static test::SolvedConfig* solved_;
+};
+test::SolvedConfig* Ensemble::solved_ = nullptr;
+
+TEST_F(Ensemble, SolvesWithEveryConstraintOfEveryVariantMet) {
+  ASSERT_TRUE(solved_->result.success) << solved_->result.status;
+  RecordProperty("cost", fmt::format("{:.6g}", solved_->result.cost));
+  RecordProperty("iterations", solved_->result.iterations);
+  EXPECT_EQ(problem().variants, 3);
+  EXPECT_LT(problem().nlp.worstConstraint(x()).amount, 1e-6)
+      << describe(problem().nlp.worstConstraint(x()));
+  EXPECT_LT(problem().nlp.worstBound(x()).amount, 1e-6);
+  // The variants' links are 0.95 and 1.05 times as heavy.
+  EXPECT_NEAR(modelOf(1).totalMass(), 0.95 * solved_->model.totalMass(), 1e-9);
+  EXPECT_NEAR(modelOf(2).totalMass(), 1.05 * solved_->model.totalMass(), 1e-9);
+}
+
+TEST_F(Ensemble, VariantTorquesAreTheJointPdLawAroundTheReference) {
+  ASSERT_TRUE(solved_->result.success);
+  double largest_correction = 0;
+  for (int v = 1; v <= 2; ++v)
+    for (int phase = 0; phase < 2; ++phase) {
+      const PointLayout &lv = layout(v, phase), &lr = layout(0, phase);
+      const int points = problem().phasesOf(0, v)[static_cast<size_t>(phase)]->layout.points();
+      for (int k = 0; k < points; ++k) {
+        const Eigen::VectorXd pv = point(v, phase, k), pr = point(0, phase, k);
+        const VecD dq = dynamics::toJoint<double>(VecD(lr.q.of(pr) - lv.q.of(pv)));
+        const VecD dv = dynamics::toJoint<double>(VecD(lr.v.of(pr) - lv.v.of(pv)));
+        const Eigen::VectorXd law = lr.u.of(pr) + kKp * dq + kKd * dv;
+        EXPECT_LT((lv.u.of(pv) - law).cwiseAbs().maxCoeff(), 1e-6)
+            << "variant " << v << " point " << k;
+        largest_correction =
+            std::max(largest_correction, (law - lr.u.of(pr)).cwiseAbs().maxCoeff());
+      }
+    }
+  RecordProperty("largest_correction_Nm", fmt::format("{:.3g}", largest_correction));
+  // The variants do leave the reference: the law corrects by more than 0.01 N m somewhere.
+  EXPECT_GT(largest_correction, 0.01);
+}
+
+TEST_F(Ensemble, VariantsMoveWithTheirOwnMassesFromTheNominalStartToTheStepAhead) {
+  ASSERT_TRUE(solved_->result.success);
+  const PointLayout& l = layout(0, 0);
+  for (int v = 1; v <= 2; ++v) {
+    const int points = problem().phasesOf(0, v)[0]->layout.points();
+    double own = 0, nominal = 0;
+    for (int k = 0; k < points; ++k) {
+      const Eigen::VectorXd p = point(v, 0, k);
+      const VecD theta = l.q.of(p), dtheta = l.v.of(p), ddtheta = l.a.of(p);
+      const VecD tau = l.u.of(p);
+      own = std::max(own, (dynamics::sspInverseDynamics(modelOf(v), theta, dtheta, ddtheta) - tau)
+                              .cwiseAbs()
+                              .maxCoeff());
+      nominal = std::max(
+          nominal, (dynamics::sspInverseDynamics(solved_->model, theta, dtheta, ddtheta) - tau)
+                       .cwiseAbs()
+                       .maxCoeff());
+    }
+    RecordProperty(fmt::format("variant{}_nominal_model_residual_Nm", v),
+                   fmt::format("{:.3g}", nominal));
+    EXPECT_LT(own, 1e-6) << "variant " << v << ": Mu (2.43) on its own model";
+    EXPECT_GT(nominal, 0.1) << "variant " << v << " would move as the nominal";
+    // It starts in the nominal's start state.
+    const Eigen::VectorXd s0 = point(0, 0, 0), sv = point(v, 0, 0);
+    EXPECT_LT((l.q.of(sv) - l.q.of(s0)).cwiseAbs().maxCoeff(), 1e-9);
+    EXPECT_LT((l.v.of(sv) - l.v.of(s0)).cwiseAbs().maxCoeff(), 1e-9);
+    // Its swing tip lands one step ahead on the ground at the end of the shared SSP.
+    const Vec2d tip = dynamics::swingTip<double>(modelOf(v), VecD(l.q.of(point(v, 0, -1))));
+    EXPECT_NEAR(tip.x(), solved_->config.step_length, 1e-6);
+    EXPECT_NEAR(tip.y(), 0.0, 1e-6);
+  }
+}
+
+TEST_F(Ensemble, VariantsPushOnTheGroundInsideTheConeAndEndNearTheNominal) {
+  ASSERT_TRUE(solved_->result.success);
+  const double mu = frictionBound(solved_->model, solved_->config);
+  for (int v = 1; v <= 2; ++v) {
+    const gaits::Trajectory t = reconstruct(problem(), solved_->model, x(), 0, v);
+    for (const gaits::Knot& k : t.knots()) {
+      EXPECT_GT(k.force_stance.y(), -1e-6) << "variant " << v << " t = " << k.t;
+      EXPECT_LT(std::abs(k.force_stance.x()), mu * k.force_stance.y() + 1e-6);
+    }
+    // The end states (after the DSP) within the tolerance.
+    const PointLayout& l = layout(v, 1);
+    const Eigen::VectorXd ev = point(v, 1, -1), en = point(0, 1, -1);
+    const double distance = std::sqrt((l.q.of(ev) - layout(0, 1).q.of(en)).squaredNorm() +
+                                      (l.v.of(ev) - layout(0, 1).v.of(en)).squaredNorm());
+    RecordProperty(fmt::format("variant{}_end_distance", v), fmt::format("{:.4g}", distance));
+    EXPECT_LT(distance, kEndTolerance + 1e-6) << "variant " << v;
+  }
+}
+
+}  // namespace
+}  // namespace gaitopt::ocp
