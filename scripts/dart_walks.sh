@@ -26,14 +26,8 @@ for gait in mu2004_walk mu2004_walk_strike mu2004_walk_robust; do
       "$bin" simulate --reference "$work/ref_$gait" --ground dart --controller "$controller" \
         --mass-error="$mass" --cop-limit fail --steps 20 --out "$work/walk" --no-plots \
         --no-poincare --quiet >/dev/null
-      /usr/bin/python3 - "$work/walk/summary.json" "$gait" "$controller" "$mass" \
-        >>"$out/dart_walks.csv" <<'PY'
-import json, sys
-s = json.load(open(sys.argv[1]))
-failure = s["failure"].replace(",", ";")
-print(f"{sys.argv[2]},{sys.argv[3]},{1 + float(sys.argv[4]):.1f},{s['steps_completed']},"
-      f"{s['max_tracking_error']:.3g},{s['max_slip_m']:.3g},{failure}")
-PY
+      /usr/bin/python3 scripts/walk_row.py "$work/walk/summary.json" "$gait" "$controller" \
+        "$(awk "BEGIN { printf \"%.1f\", 1 + $mass }")" >>"$out/dart_walks.csv"
     done
   done
 done

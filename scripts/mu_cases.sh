@@ -29,14 +29,8 @@ for gait in poly opt opt_robust; do
         "$bin" simulate --reference "$work/$gait" --robot "${robots[$robot]}" \
           --controller "$controller" --uncertainty-case "$c" --uncertainty-on controller \
           --steps 20 --out "$work/walk" --no-plots --no-poincare --quiet >/dev/null
-        /usr/bin/python3 - "$work/walk/summary.json" "$gait" "$robot" "$controller" "$c" \
-          >>"$out/mu_cases.csv" <<'PY'
-import json, sys
-s = json.load(open(sys.argv[1]))
-failure = s["failure"].replace(",", ";")
-print(f"{sys.argv[2]},{sys.argv[3]},{sys.argv[4]},{sys.argv[5]},{s['steps_completed']},"
-      f"{s['max_tracking_error']:.3g},{s.get('max_slip_m', 0):.3g},{failure}")
-PY
+        /usr/bin/python3 scripts/walk_row.py "$work/walk/summary.json" "$gait" "$robot" \
+          "$controller" "$c" >>"$out/mu_cases.csv"
       done
     done
   done
