@@ -12,7 +12,7 @@
 #include "dynamics/impact/impact.hpp"
 #include "dynamics/model.hpp"
 #include "dynamics/residual_derivatives.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "dynamics/ssp_dynamics.hpp"
 
 namespace {

@@ -22,7 +22,7 @@
 #include <fmt/format.h>
 
 #include "dynamics/kinematics.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "ocp/guess/initial_guess.hpp"
 #include "sim/contact/ground_config.hpp"
 #include "sim/walk/walk.hpp"

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "bench/ocp_study.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "ocp/guess/initial_guess.hpp"
 
 namespace gaitopt::bench {

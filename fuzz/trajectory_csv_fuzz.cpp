@@ -1,5 +1,5 @@
 // Fuzz target: trajectory.csv through gaits::readTrajectoryCsv for the five-link robot.
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "fuzz_input.hpp"
 #include "gaits/trajectory/trajectory_csv.hpp"
 

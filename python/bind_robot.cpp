@@ -7,7 +7,7 @@
 #include "dynamics/energy.hpp"
 #include "dynamics/kinematics.hpp"
 #include "dynamics/model_variation.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "dynamics/ssp_dynamics.hpp"
 #include "python/bindings.hpp"
 

@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "config/config_error.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "report/report_frames.hpp"
 #include "sim/scenario/reference_folder.hpp"
 

@@ -7,8 +7,8 @@
 
 #include "apps/command_runner.hpp"
 #include "config/config_error.hpp"
-#include "dynamics/robot_config.hpp"
-#include "dynamics/urdf_export.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
+#include "dynamics/robot_files/urdf_export.hpp"
 #include "io/output/checked_write.hpp"
 
 namespace gaitopt::apps {

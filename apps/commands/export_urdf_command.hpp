@@ -1,7 +1,7 @@
 #pragma once
 /// @file export_urdf_command.hpp
 /// `gaitopt export-urdf --robot FILE --out FILE.urdf`: the robot as a URDF for DART, Drake,
-/// Pinocchio and ROS tools (dynamics/urdf_export.hpp: frames, feet, the planar root).
+/// Pinocchio and ROS tools (dynamics/robot_files/urdf_export.hpp: frames, feet, the planar root).
 #include <string>
 
 #include <CLI/CLI.hpp>

@@ -12,7 +12,7 @@
 #include "apps/command_runner.hpp"
 #include "apps/option_checks.hpp"
 #include "config/config_error.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "gaits/export/gait_summary.hpp"
 #include "gaits/impact/grid_range.hpp"
 #include "gaits/impact/impact_map_report.hpp"

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "apps/command_runner.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "gaits/trajectory/state_file.hpp"
 #include "report/inspect_report.hpp"
 

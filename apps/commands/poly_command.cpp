@@ -8,7 +8,7 @@
 
 #include "apps/command_runner.hpp"
 #include "dynamics/model_variation.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "gaits/export/gait_summary.hpp"
 #include "gaits/polynomial/hip_plan_search.hpp"
 #include "gaits/polynomial/polynomial_gait.hpp"

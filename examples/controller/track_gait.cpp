@@ -13,7 +13,7 @@
 #include <iostream>
 #include <string>
 
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "gaits/trajectory/trajectory_csv.hpp"
 #include "sim/scenario/scenario.hpp"
 

@@ -11,7 +11,7 @@
 
 #include "config/yaml_reader.hpp"
 #include "dynamics/model_variation.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 
 namespace gaitopt::ocp {
 namespace {

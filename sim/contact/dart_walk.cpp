@@ -20,7 +20,7 @@
 #include <dart/utils/urdf/DartLoader.hpp>
 
 #include "dynamics/impact/relabel.hpp"
-#include "dynamics/urdf_export.hpp"
+#include "dynamics/robot_files/urdf_export.hpp"
 
 namespace gaitopt::sim {
 namespace {

@@ -1,11 +1,11 @@
 #pragma once
 /// @file dart_walk.hpp
 /// Walking in the DART physics engine (DART 6.12, dartsim.github.io): the robot of
-/// dynamics/urdf_export.hpp, its feet bodies that tip when the centre of pressure leaves them, on
-/// a floor box, advanced by DART's time stepping (semi-implicit Euler with its boxed LCP contact
-/// solver and Coulomb friction from the robot file along the plane, restitution 0; DART's own
-/// box-box collider). The root link is a PlanarJoint in the ZX plane, so the walk stays in the
-/// x-z plane.
+/// dynamics/robot_files/urdf_export.hpp, its feet bodies that tip when the centre of pressure
+/// leaves them, on a floor box, advanced by DART's time stepping (semi-implicit Euler with its
+/// boxed LCP contact solver and Coulomb friction from the robot file along the plane, restitution
+/// 0; DART's own box-box collider). The root link is a PlanarJoint in the ZX plane, so the walk
+/// stays in the x-z plane.
 ///
 /// The toolkit closes the loop on DART's state once per time step (1 kHz with the shipped
 /// configs/grounds/dart.yaml): the free-base state of free_base_walk.hpp is read from DART's

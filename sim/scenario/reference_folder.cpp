@@ -8,7 +8,7 @@
 
 #include "config/config_error.hpp"
 #include "dynamics/model_variation.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "gaits/trajectory/trajectory_csv.hpp"
 #include "io/data_dir.hpp"
 #include "io/strict_json.hpp"

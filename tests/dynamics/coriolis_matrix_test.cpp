@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "dynamics/ssp_dynamics.hpp"
 
 namespace gaitopt::test {

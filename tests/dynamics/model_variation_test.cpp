@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "dynamics/model_variation.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 
 namespace gaitopt::dynamics {
 namespace {

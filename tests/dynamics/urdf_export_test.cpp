@@ -18,8 +18,8 @@
 
 #include "dynamics/joint_coordinates.hpp"
 #include "dynamics/kinematics.hpp"
+#include "dynamics/robot_files/urdf_export.hpp"
 #include "dynamics/ssp_dynamics.hpp"
-#include "dynamics/urdf_export.hpp"
 #include "support/fixtures.hpp"
 
 namespace gaitopt::test {

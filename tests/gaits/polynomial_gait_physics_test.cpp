@@ -9,7 +9,7 @@
 
 #include "dynamics/dsp_dynamics.hpp"
 #include "dynamics/ground.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "dynamics/ssp_dynamics.hpp"
 #include "gaits/export/gait_export.hpp"
 #include "gaits/export/metrics.hpp"

@@ -11,7 +11,7 @@
 #include <fmt/format.h>
 
 #include "dynamics/dsp_dynamics.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "gaits/export/consistency.hpp"
 #include "gaits/export/export_checks.hpp"
 #include "ocp/guess/initial_guess.hpp"

@@ -11,7 +11,7 @@
 #include "dynamics/impact/impact.hpp"
 #include "dynamics/impact/relabel.hpp"
 #include "dynamics/kinematics.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "gaits/export/consistency.hpp"
 #include "gaits/export/export_checks.hpp"
 #include "gaits/export/metrics.hpp"

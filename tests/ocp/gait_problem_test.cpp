@@ -8,7 +8,7 @@
 
 #include "dynamics/impact/impact.hpp"
 #include "dynamics/impact/relabel.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "dynamics/ssp_dynamics.hpp"
 #include "gaits/export/consistency.hpp"
 #include "gaits/export/metrics.hpp"

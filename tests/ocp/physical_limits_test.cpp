@@ -13,7 +13,7 @@
 #include <fmt/format.h>
 
 #include "dynamics/impact/impact.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "ocp/problem/gait_problem.hpp"
 #include "support/solved_config.hpp"
 

@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "ocp/guess/initial_guess.hpp"
 #include "ocp/problem/gait_problem.hpp"
 #include "ocp/solve/ipopt_adapter.hpp"

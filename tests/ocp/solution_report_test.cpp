@@ -7,7 +7,7 @@
 
 #include "dynamics/impact/impact.hpp"
 #include "dynamics/impact/relabel.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "dynamics/ssp_dynamics.hpp"
 #include "io/io_test_dir.hpp"
 #include "io/strict_json.hpp"

@@ -16,7 +16,7 @@
 #include "dynamics/impact/impact.hpp"
 #include "dynamics/impact/relabel.hpp"
 #include "dynamics/kinematics.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "ocp/guess/initial_guess.hpp"
 #include "ocp/guess/straight_leg_guess.hpp"
 #include "ocp/solve/gait_solve.hpp"

@@ -2,7 +2,7 @@
 // constraint row is found by name, phase, node and row, where the disturbance was put.
 #include <gtest/gtest.h>
 
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "ocp/guess/initial_guess.hpp"
 #include "ocp/problem/gait_problem.hpp"
 

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "dynamics/model_variation.hpp"
-#include "dynamics/robot_config.hpp"
-#include "dynamics/urdf_export.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
+#include "dynamics/robot_files/urdf_export.hpp"
 #include "ocp/guess/initial_guess.hpp"
 #include "ocp/solve/gait_solve.hpp"
 #include "sim/contact/ground_config.hpp"

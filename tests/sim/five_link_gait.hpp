@@ -4,7 +4,7 @@
 #include <string>
 
 #include "dynamics/model_variation.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "gaits/polynomial/gait_params.hpp"
 #include "gaits/polynomial/hip_plan_search.hpp"
 #include "gaits/polynomial/polynomial_gait.hpp"

@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "dynamics/model_variation.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "ocp/guess/initial_guess.hpp"
 #include "ocp/solve/gait_solve.hpp"
 #include "sim/studies/poincare.hpp"

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "dynamics/model_variation.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 #include "five_link_gait.hpp"
 #include "ocp/guess/initial_guess.hpp"
 #include "ocp/solve/gait_solve.hpp"

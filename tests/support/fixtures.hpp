@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "dynamics/model.hpp"
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 
 namespace gaitopt::test {
 

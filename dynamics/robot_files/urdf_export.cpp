@@ -1,4 +1,4 @@
-#include "dynamics/urdf_export.hpp"
+#include "dynamics/robot_files/urdf_export.hpp"
 
 #include <numbers>
 #include <set>

@@ -1,4 +1,4 @@
-#include "dynamics/robot_config.hpp"
+#include "dynamics/robot_files/robot_config.hpp"
 
 #include <numbers>
 #include <stdexcept>
