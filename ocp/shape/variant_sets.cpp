@@ -4,18 +4,14 @@
 #include <stdexcept>
 #include <utility>
 
+#include "dynamics/joint_coordinates.hpp"
+
 namespace gaitopt::ocp {
 namespace {
 
 int actuatedJoints(const dynamics::Model& model) {
   return static_cast<int>(std::count_if(model.joints().begin(), model.joints().end(),
                                         [](const auto& joint) { return joint.actuated; }));
-}
-
-/// Row j of the joint map M (Mu 2.41): q_0 = theta_0, q_j = theta_{j-1} - theta_j.
-std::vector<std::pair<int, double>> jointRow(int j) {
-  if (j == 0) return {{0, 1.0}};
-  return {{j - 1, 1.0}, {j, -1.0}};
 }
 
 }  // namespace
@@ -29,6 +25,7 @@ FeedbackLaw::FeedbackLaw(std::string name, const Phase& variant, const Phase& re
     throw std::invalid_argument("a variant's feedback law needs the reference's mesh");
   const PointLayout& v = variant.point;
   const PointLayout& r = reference.point;
+  const MatD map = dynamics::jointMap(model.nLinks());  // q = M theta (Mu 2.41)
   int row = 0;
   for (int p = 0; p < variant.layout.points(); ++p) {
     const int vo = variant.layout.pointOffset(p), ro = reference.layout.pointOffset(p);
@@ -36,7 +33,9 @@ FeedbackLaw::FeedbackLaw(std::string name, const Phase& variant, const Phase& re
       if (!model.joints()[static_cast<size_t>(j)].actuated) continue;
       entries_.emplace_back(row, vo + v.u[j], 1.0);
       entries_.emplace_back(row, ro + r.u[j], -1.0);
-      for (const auto& [i, m] : jointRow(j)) {  // - kp M (theta_ref - theta) - kd M (...)
+      for (int i = 0; i < model.nLinks(); ++i) {  // - kp M (theta_ref - theta) - kd M (...)
+        const double m = map(j, i);
+        if (m == 0) continue;
         entries_.emplace_back(row, ro + r.q[i], -gains.kp * m);
         entries_.emplace_back(row, vo + v.q[i], gains.kp * m);
         entries_.emplace_back(row, ro + r.v[i], -gains.kd * m);
