@@ -75,6 +75,7 @@ GaitShape describeGait(const dynamics::Model& model, const OcpConfig& config) {
   shape.steps = config.shape.steps;
   shape.variants = config.shape.variantCount();
   shape.feedback = config.shape.feedback;
+  shape.spread = config.shape.spread;
   // The caller owns the nominal model: a shared pointer that does not own it.
   shape.models.emplace_back(std::shared_ptr<const dynamics::Model>(), &model);
   for (const VariantConfig& v : config.shape.variants)

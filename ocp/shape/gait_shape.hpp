@@ -34,7 +34,7 @@ struct PhaseSpec {
   int shares_duration = -1;
   /// The nominal phase whose reference drives this one's torques by the feedback law, or -1.
   int feedback_from = -1;
-  bool cost = true;  ///< carries the running cost (the nominal only)
+  bool cost = true;  ///< carries the running cost (the nominal only; a variant its spread)
 };
 
 enum class TransitionKind {
@@ -60,6 +60,7 @@ struct GaitShape {
   /// Per variant; [0] the nominal the caller owns, the others held here.
   std::vector<std::shared_ptr<const dynamics::Model>> models;
   FeedbackGains feedback;
+  double spread = 0;  ///< weight of each variant phase's spread cost (variant_sets.hpp)
   int steps = 1;
   int variants = 1;
 

@@ -48,10 +48,7 @@ class Builder {
     BuiltPhase b{addPhaseVariables(p_.nlp, model, config_, guess, spec, shared), spec.step,
                  spec.variant, &model, std::nullopt};
     addPhaseSets(p_.nlp, model, config_, b.phase, spec.cost);
-    if (spec.feedback_from >= 0)
-      p_.nlp.addConstraint(std::make_unique<FeedbackLaw>(b.phase.name() + "_feedback", b.phase,
-                                                         built(spec.feedback_from), model,
-                                                         shape_.feedback));
+    if (spec.feedback_from >= 0) addVariantSets(spec, b);
     phase_stage_.push_back(
         close({spec.label, StageKind::kPhase, spec.step, spec.variant, {}, {}, i}));
     couple(phase_stage_.back(), spec.shares_duration);
@@ -69,6 +66,16 @@ class Builder {
   }
 
  private:
+  /// A variant's torques by the feedback law around the reference, and its spread about it.
+  void addVariantSets(const PhaseSpec& spec, const BuiltPhase& b) {
+    const Phase& reference = built(spec.feedback_from);
+    p_.nlp.addConstraint(std::make_unique<FeedbackLaw>(b.phase.name() + "_feedback", b.phase,
+                                                       reference, *b.model, shape_.feedback));
+    if (shape_.spread > 0)
+      p_.nlp.addCost(std::make_unique<VariantSpread>(b.phase.name() + "_spread", b.phase, reference,
+                                                     shape_.spread));
+  }
+
   /// The touchdown at the end of phase i (built as `b`, on its variant's model); its stage.
   int emitTouchdown(int i, BuiltPhase& b) {
     const PhaseSpec& spec = shape_.phases[static_cast<size_t>(i)];

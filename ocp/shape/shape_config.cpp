@@ -32,7 +32,7 @@ FeedbackGains readFeedback(const YamlReader& r) {
 
 const std::vector<std::string>& shapeKeys() {
   static const std::vector<std::string> keys = {"steps", "variants", "variant_feedback",
-                                                "variant_end_tolerance"};
+                                                "variant_end_tolerance", "variant_spread"};
   return keys;
 }
 
@@ -40,7 +40,7 @@ ShapeConfig readShapeConfig(const YamlReader& root) {
   ShapeConfig s;
   s.steps = readSteps(root);
   if (!root.has("variants")) {
-    for (const char* key : {"variant_feedback", "variant_end_tolerance"})
+    for (const char* key : {"variant_feedback", "variant_end_tolerance", "variant_spread"})
       if (root.has(key)) root.fail(key, "only meaningful with `variants`");
     return s;
   }
@@ -51,6 +51,7 @@ ShapeConfig readShapeConfig(const YamlReader& root) {
   s.feedback = readFeedback(root.map("variant_feedback"));
   s.end_tolerance =
       root.number("variant_end_tolerance", config::inRange(1e-6, 10, "(state distance)"));
+  s.spread = root.numberOr("variant_spread", 0.0, config::inRange(0, 1e6, "(weight)"));
   return s;
 }
 

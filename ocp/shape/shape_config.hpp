@@ -31,6 +31,9 @@ struct ShapeConfig {
   /// A variant's state after its last touchdown lies within this Euclidean distance of the
   /// nominal's (angles [rad] and rates [rad/s] alike).
   double end_tolerance = 0;
+  /// Weight of the variants' spread about the reference in the cost (variant_sets.hpp, 0: none)
+  /// [1 / (rad^2 s)] times the nominal cost's units.
+  double spread = 0;
 
   int variantCount() const { return 1 + static_cast<int>(variants.size()); }
 };

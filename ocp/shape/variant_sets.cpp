@@ -85,4 +85,47 @@ void StateDistance::hessian(const Eigen::VectorXd& /*x*/, const Eigen::VectorXd&
   }
 }
 
+VariantSpread::VariantSpread(std::string name, const Phase& variant, const Phase& reference,
+                             double weight)
+    : CostTerm(std::move(name)), layout_(variant.layout) {
+  const Eigen::VectorXd w = variant.layout.quadratureWeights();
+  for (int p = 0; p < variant.layout.points(); ++p)
+    for (int i = 0; i < variant.point.q.size; ++i)
+      pairs_.push_back({variant.layout.pointOffset(p) + variant.point.q[i],
+                        reference.layout.pointOffset(p) + reference.point.q[i], weight * w(p)});
+}
+
+double VariantSpread::value(const Eigen::VectorXd& x) const {
+  double sum = 0;
+  for (const Pair& e : pairs_) sum += e.w * (x(e.a) - x(e.b)) * (x(e.a) - x(e.b));
+  return duration(x) * sum;
+}
+
+void VariantSpread::gradient(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> grad) const {
+  const double t = duration(x);
+  double unit = 0;  // the value per unit duration: d value / d T
+  for (const Pair& e : pairs_) {
+    const double d = x(e.a) - x(e.b);
+    grad(e.a) += 2 * t * e.w * d;
+    grad(e.b) -= 2 * t * e.w * d;
+    unit += e.w * d * d;
+  }
+  if (layout_.freeDuration()) grad(layout_.duration_index) += unit;
+}
+
+void VariantSpread::hessian(const Eigen::VectorXd& x, double factor, Triplets& out) const {
+  const double t = duration(x);
+  for (const Pair& e : pairs_) {
+    const double h = 2 * factor * t * e.w;
+    out.emplace_back(e.a, e.a, h);
+    out.emplace_back(e.b, e.b, h);
+    out.emplace_back(std::max(e.a, e.b), std::min(e.a, e.b), -h);
+    if (!layout_.freeDuration()) continue;
+    const int T = layout_.duration_index;
+    const double c = 2 * factor * e.w * (x(e.a) - x(e.b));  // d2 / dT d(theta_k - theta_ref)
+    out.emplace_back(std::max(T, e.a), std::min(T, e.a), c);
+    out.emplace_back(std::max(T, e.b), std::min(T, e.b), -c);
+  }
+}
+
 }  // namespace gaitopt::ocp

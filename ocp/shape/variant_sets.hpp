@@ -2,12 +2,13 @@
 /// @file variant_sets.hpp
 /// The constraint sets that tie a model variant to the nominal (gait_shape.hpp): its torques
 /// given by the feedback law around the nominal reference at every collocation point, and its
-/// end state near the nominal's. Both have exact derivatives: the law is linear, the distance
-/// a sum of squares.
+/// end state near the nominal's, and the optional cost of its spread about the reference. All
+/// have exact derivatives: the law is linear, the distance and the spread sums of squares.
 #include <vector>
 
 #include "dynamics/model.hpp"
 #include "ocp/shape/shape_config.hpp"
+#include "ocp/transcription/collocation.hpp"
 #include "ocp/transcription/nlp.hpp"
 #include "ocp/transcription/phase.hpp"
 
@@ -51,6 +52,27 @@ class StateDistance : public ConstraintSet {
  private:
   std::vector<int> a_, b_;
   double tolerance_;
+};
+
+/// weight T sum_p w_p |theta_k(p) - theta_ref(p)|^2 [rad^2 s]: the spread of a variant's link
+/// angles about the reference's over one phase, by the phase's quadrature (w_p for T = 1, T its
+/// duration, a variable when free). An optional term beside the nominal's cost: it pays for
+/// the variants staying close to the reference, not only ending near it.
+class VariantSpread : public CostTerm {
+ public:
+  VariantSpread(std::string name, const Phase& variant, const Phase& reference, double weight);
+  double value(const Eigen::VectorXd& x) const override;
+  void gradient(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> grad) const override;
+  void hessian(const Eigen::VectorXd& x, double factor, Triplets& out) const override;
+
+ private:
+  struct Pair {
+    int a, b;  // the variant's and the reference's angle
+    double w;  // the point's quadrature weight times the cost weight
+  };
+  double duration(const Eigen::VectorXd& x) const { return layout_.durationAt(x); }
+  std::vector<Pair> pairs_;
+  PhaseLayout layout_;  // the variant's: its duration is the reference's
 };
 
 }  // namespace gaitopt::ocp

@@ -1,6 +1,6 @@
 // A quantity is checked in one place (config/quantities.hpp): the scenario's command-line option
 // and the stability sweep of the same parameter accept and refuse the same values, in the same
-// words.
+// words. --controller takes the registered names (sim/controllers/controller_registry.hpp).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -76,6 +76,16 @@ TEST(OptionChecks, TheOptionAndTheSweepRefuseTheSameValues) {
     }
   }
   EXPECT_EQ(compared, 5 * 9);
+}
+
+TEST(OptionChecks, TheControllerOptionTakesEveryRegisteredNameAndRefusesOthersNamingThem) {
+  for (const std::string& name : sim::controllerNames())
+    EXPECT_FALSE(optionRefusal("--controller", name)) << name;
+  const auto refusal = optionRefusal("--controller", "pid");
+  ASSERT_TRUE(refusal);
+  EXPECT_NE(refusal->find("pid"), std::string::npos) << *refusal;
+  for (const std::string& name : sim::controllerNames())
+    EXPECT_NE(refusal->find(name), std::string::npos) << name << " is not in: " << *refusal;
 }
 
 TEST(OptionChecks, AGridBeyondTheMemoryBudgetIsRefusedNamingItsSource) {

@@ -39,7 +39,8 @@ constexpr int kSegments = 3;  // per phase
 std::vector<config::Override> variants() {
   return {config::parseOverride("variants=[{mass_scale: 1.1}]"),
           config::parseOverride("variant_feedback={kp: 200, kd: 20}"),
-          config::parseOverride("variant_end_tolerance=0.1")};
+          config::parseOverride("variant_end_tolerance=0.1"),
+          config::parseOverride("variant_spread=0.5")};
 }
 
 std::unique_ptr<Shipped> coarseProblem(OcpConfig config) {
@@ -211,7 +212,9 @@ TEST(SetContractCoverage, EverySetOfTheGaitProblemIsChecked) {
                            "variant1_impulse_cones",
                            "variant1_touchdown_to_dsp",
                            "variant1_start",
-                           "variant1_end"})
+                           "variant1_end",
+                           "variant1_ssp_spread",
+                           "variant1_dsp_spread"})
     EXPECT_TRUE(checked.count(name)) << name << " is in no problem of the contract";
 }
 

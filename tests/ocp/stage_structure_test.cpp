@@ -27,7 +27,8 @@ OcpConfig config(const std::string& name, const std::vector<std::string>& sets =
 OcpConfig variants() {
   return config("mu2004_walk", {"phases[0].segments=6", "phases[1].segments=2",
                                 "variants=[{mass_scale: 0.95}, {mass_scale: 1.05}]",
-                                "variant_feedback={kp: 300, kd: 30}", "variant_end_tolerance=0.1"});
+                                "variant_feedback={kp: 300, kd: 30}", "variant_end_tolerance=0.1",
+                                "variant_spread=1"});
 }
 
 struct Built {
@@ -165,6 +166,7 @@ TEST(ShapeConfig, ReadsStepsAndVariantsAndRefusesAnIncompleteEnsemble) {
   EXPECT_EQ(c.shape.feedback.kp, 300);
   EXPECT_EQ(c.shape.feedback.kd, 30);
   EXPECT_EQ(c.shape.end_tolerance, 0.1);
+  EXPECT_EQ(c.shape.spread, 1);
   EXPECT_EQ(config("mu2004_walk").shape.variantCount(), 1);
   EXPECT_NE(loadError({"steps=1.5"}).find("key 'steps'"), std::string::npos);
   // A variant without the law would have free torques: the ensemble would say nothing.

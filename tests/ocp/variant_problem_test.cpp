@@ -23,8 +23,9 @@ namespace {
 constexpr double kKp = 300, kKd = 30;  // [N m / rad], [N m s / rad]
 constexpr double kEndTolerance = 0.05;
 
-OcpConfig ensembleConfig() {
+OcpConfig ensembleConfig(const std::vector<std::string>& extra = {}) {
   std::vector<config::Override> o;
+  for (const std::string& s : extra) o.push_back(config::parseOverride(s));
   for (const char* s :
        {"variants=[{mass_scale: 0.95}, {mass_scale: 1.05}]", "variant_feedback={kp: 300, kd: 30}",
         "variant_end_tolerance=0.05", "phases[0].segments=15", "phases[1].segments=3"})
@@ -152,6 +153,41 @@ TEST_F(Ensemble, VariantsPushOnTheGroundInsideTheConeAndEndNearTheNominal) {
     RecordProperty(fmt::format("variant{}_end_distance", v), fmt::format("{:.4g}", distance));
     EXPECT_LT(distance, kEndTolerance + 1e-6) << "variant " << v;
   }
+}
+
+/// The integral over the step of sum_i (theta_k,i - theta_ref,i)^2, summed over the variants, by
+/// the trapezoid rule on the points (not the scheme's own quadrature) [rad^2 s].
+double integratedSpread(const GaitProblem& p, const Eigen::VectorXd& x) {
+  double sum = 0;
+  for (int v = 1; v < p.variants; ++v)
+    for (size_t phase = 0; phase < p.phasesOf(0, 0).size(); ++phase) {
+      const Phase &pv = *p.phasesOf(0, v)[phase], &pr = *p.phasesOf(0, 0)[phase];
+      const PhaseLayout& l = pv.layout;
+      auto at = [&](int k) {
+        return (pv.point.q.of(l.point(x, k)) - pr.point.q.of(pr.layout.point(x, k))).squaredNorm();
+      };
+      for (int k = 0; k + 1 < l.points(); ++k)
+        sum += 0.5 * (at(k) + at(k + 1)) *
+               (l.time(k + 1, l.durationAt(x)) - l.time(k, l.durationAt(x)));
+    }
+  return sum;
+}
+
+TEST_F(Ensemble, ASpreadWeightTradesNominalCostForVariantsNearerTheReference) {
+  ASSERT_TRUE(solved_->result.success);
+  const test::SolvedConfig spread(ensembleConfig({"variant_spread=1e6"}));
+  ASSERT_TRUE(spread.result.success) << spread.result.status;
+  const double without = integratedSpread(problem(), x());
+  const double with = integratedSpread(spread.problem, spread.result.x);
+  double nominal = 0;  // the nominal's own terms, without the spread
+  for (const auto& term : spread.problem.nlp.costTerms())
+    if (term->name().find("variant") == std::string::npos) nominal += term->value(spread.result.x);
+  RecordProperty("integrated_spread_rad2s",
+                 fmt::format("{:.3g} without, {:.3g} with", without, with));
+  RecordProperty("nominal_cost",
+                 fmt::format("{:.6g} without, {:.6g} with", solved_->result.cost, nominal));
+  EXPECT_LT(with, without);
+  EXPECT_GT(nominal, solved_->result.cost);
 }
 
 }  // namespace
