@@ -176,6 +176,23 @@ void readSolver(const YamlReader& r, SolverOptions& s) {
   s.print_level = static_cast<int>(r.numberOr("print_level", 0, config::inRange(0, 12, "")));
 }
 
+/// The section, checked against the problem: the easy problem is the torque-squared one, and a
+/// continuation mesh has a segment count per phase.
+void readContinuationOf(const YamlReader& root, OcpConfig& c) {
+  c.continuation = readContinuation(root.map("continuation"));
+  if (!(c.cost.torque_squared > 0))
+    root.fail("continuation",
+              "a continuation starts from the torque-squared problem: expected "
+              "cost.torque_squared > 0");
+  const std::vector<int>& segments = c.continuation.mesh_segments;
+  if (segments.empty()) return;
+  if (segments.size() != c.phases.size())
+    root.map("continuation")
+        .map("mesh")
+        .fail("segments", fmt::format("expected one count per phase ({}), got {}", c.phases.size(),
+                                      segments.size()));
+}
+
 }  // namespace
 
 std::string CostWeights::primary() const {
@@ -187,7 +204,7 @@ OcpConfig loadOcpConfig(const std::string& path, const std::vector<config::Overr
   const YamlReader root = YamlReader::fromFile(path, overrides);
   root.allowOnly({"name", "description", "robot", "initial_guess", "step_length", "phases",
                   "step_duration", "scheme", "impact", "cost", "mesh_refinement", "constraints",
-                  "solver", "slope", "touchdown"});
+                  "solver", "slope", "touchdown", "continuation"});
   OcpConfig c;
   c.name = root.string("name");
   root.stringOr("description", "");
@@ -229,6 +246,7 @@ OcpConfig loadOcpConfig(const std::string& path, const std::vector<config::Overr
                 "an impactless touchdown");
   }
   if (root.has("solver")) readSolver(root.map("solver"), c.solver);
+  if (root.has("continuation")) readContinuationOf(root, c);
   return c;
 }
 

@@ -8,6 +8,7 @@
 #include "config/overrides.hpp"
 #include "dynamics/model.hpp"
 #include "ocp/problem/clearance_profile.hpp"
+#include "ocp/solve/continuation_options.hpp"
 #include "ocp/solve/ipopt_adapter.hpp"
 #include "ocp/transcription/collocation.hpp"
 
@@ -110,6 +111,9 @@ struct OcpConfig {
   /// tracking error does not rotate the foot about its edge [m], < half the foot.
   double zmp_margin = 0;
   SolverOptions solver;
+  /// Reach this problem from the torque-squared problem on its mesh (continuation.hpp); off
+  /// unless the config has a `continuation:` section.
+  ContinuationOptions continuation;
 };
 
 /// The problem of the config file `path`, with `overrides` (`--set KEY=VALUE`) in place of the
