@@ -3,13 +3,14 @@
 /// Reaching a hard gait problem from an easy one (Allgower & Georg, "Introduction to Numerical
 /// Continuation Methods", 2003, ch. 1: natural-parameter continuation). The easy problem is the
 /// torque-squared problem on the configured mesh (continuation_path.hpp); the path then moves the
-/// margins, the strike velocity and the cost weights to their configured values in
+/// listed parameters (margins, strike velocity, cost weights) to their configured values in
 /// ContinuationOptions::steps steps of progress, each stage started from the previous stage's
 /// solution, primal and dual (Ipopt's warm_start_init_point with the multipliers).
 ///   - A stage Ipopt ends without success (iteration limit, restoration failure, local
-///     infeasibility, ...) is retried from its best accepted iterate (BestIterate) with a larger
-///     initial barrier, retry_mu_init[i], at most `retries` times: a larger barrier re-centres
-///     an iterate that the small barrier of a warm start has pinned against its bounds.
+///     infeasibility, ...) is retried from its best accepted iterate (BestIterate) at the initial
+///     barriers retry_mu_init, at most `retries` times: one below the configured barrier warm,
+///     for a start next to an optimum; the larger ones re-centre an iterate pinned against its
+///     bounds (ContinuationOptions).
 ///   - A stage that still fails halves the step and is tried again from the last solved stage,
 ///     at most `halvings` times over the path; then the continuation gives up, with the failed
 ///     stage's result.

@@ -3,11 +3,12 @@
 /// The problems a continuation passes through (continuation.hpp), one per value of a progress
 /// p in [0, 1]: at p = 0 the easy problem, at p = 1 the configured one. The easy problem has the
 /// configured variables, rows and mesh, so that each stage starts from the previous stage's
-/// primal-dual solution; only bounds and weights move:
-///   friction_margin, zmp_margin        from 0 (the robot's whole cone and foot);
-///   touchdown.normal_velocity min      from 0 (a strike may land at rest), its max kept;
-///   cost weights                       torque_squared kept, every other weight from
-///                                      cost_start times its configured value.
+/// primal-dual solution; only bounds and weights move, by group (ContinuationOptions::parameters;
+/// a group not listed keeps its configured values):
+///   margins  friction_margin, zmp_margin  from 0 (the robot's whole cone and foot);
+///   strike   touchdown.normal_velocity    its min from 0 (a strike may land at rest), max kept;
+///   cost     the cost weights             torque_squared kept, every other weight from
+///                                         cost_start times its configured value.
 /// A parameter whose two ends are positive moves geometrically with p when the options say so
 /// (ContinuationOptions::geometric), every other linearly.
 #include <vector>

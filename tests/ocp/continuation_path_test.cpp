@@ -95,6 +95,20 @@ TEST(ContinuationPath, EndsAreTheEasyAndTheConfiguredProblemAndWeightsMoveGeomet
   EXPECT_DOUBLE_EQ(configAt(sequential, 0.75).cost.cost_of_transport, std::sqrt(start * cot * cot));
 }
 
+TEST(ContinuationPath, TheStrikeVelocityMovesFromZeroAndGroupsNotListedStayConfigured) {
+  OcpConfig target = loadOcpConfig(shippedOcpConfig("mu2004_walk_strike"));
+  target.continuation.parameters = {"strike"};
+  const OcpConfig easy = configAt(target, 0), half = configAt(target, 0.5);
+  EXPECT_EQ(easy.touchdown.normal_min, 0.0);
+  EXPECT_DOUBLE_EQ(half.touchdown.normal_min, target.touchdown.normal_min / 2);
+  EXPECT_EQ(easy.touchdown.normal_max, target.touchdown.normal_max);
+  EXPECT_EQ(easy.friction_margin, target.friction_margin);  // margins not listed
+  EXPECT_TRUE(pathMoves(target));
+  target.continuation.parameters = {"cost"};  // a torque-squared problem has no other weight
+  EXPECT_FALSE(pathMoves(target));
+  EXPECT_EQ(configAt(target, 0).touchdown.normal_min, target.touchdown.normal_min);
+}
+
 TEST(ContinuationPath, EveryStageHasTheConfiguredVariablesAndRows) {
   // The precondition of a primal-dual warm start from one stage to the next.
   const OcpConfig target = loadOcpConfig(shippedOcpConfig("mu2004_walk_cot"));
