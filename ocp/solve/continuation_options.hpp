@@ -28,8 +28,9 @@ struct ContinuationOptions {
   /// strike velocity, so their friction cones bound its direction alone at any velocity above 0
   /// and none at 0; the problems at 0 and just above it differ by a finite step (measured on
   /// mu2004_walk_robust.yaml at its margins: a step of the least velocity from 0 to 1.25 mm/s
-  /// stopped at the iteration limit, with each retry). The others keep their configured values on
-  /// the whole path; with none (config `parameters: none`) the path is the mesh continuation alone.
+  /// stopped at the iteration limit, and so did its restarts at barriers 0.1 and 1). The others
+  /// keep their configured values on the whole path; with none (config `parameters: none`) the
+  /// path is the mesh continuation alone.
   std::vector<std::string> parameters = {"margins", "cost"};
   /// The groups one after another, in the order listed, each over an equal share of the
   /// progress (groups the config does not move take none); false: all together.
