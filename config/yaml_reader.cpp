@@ -194,6 +194,25 @@ std::vector<double> YamlReader::numbers(const std::string& key, const NumberChec
   return values;
 }
 
+std::vector<std::string> YamlReader::choices(const std::string& key,
+                                             const std::vector<std::string>& allowed) const {
+  const YAML::Node n = child(key);
+  if (n.IsScalar()) return {choice(key, allowed)};
+  if (!n.IsSequence() || n.size() == 0)
+    fail(key, "expected a word or a non-empty list of words, got " + describeNode(n));
+  std::vector<std::string> words;
+  for (size_t i = 0; i < n.size(); ++i) {
+    const std::string path = fmt::format("{}[{}]", keyPath(key), i);
+    if (!n[i].IsScalar() ||
+        std::find(allowed.begin(), allowed.end(), n[i].Scalar()) == allowed.end())
+      throw ConfigError(
+          file_, path, lineOf(n[i]),
+          fmt::format("expected one of {}, got {}", fmt::join(allowed, ", "), describeNode(n[i])));
+    words.push_back(n[i].Scalar());
+  }
+  return words;
+}
+
 bool YamlReader::isMap(const std::string& key) const {
   return has(key) && node_[key].IsMap();
 }

@@ -52,6 +52,9 @@ class YamlReader {
   std::string stringOr(const std::string& key, const std::string& fallback) const;
   /// One number or a non-empty list of numbers, each checked (e.g. `speed: [0.4, 0.6]`).
   std::vector<double> numbers(const std::string& key, const NumberCheck& check) const;
+  /// One word or a non-empty list of words, each one of `allowed` (e.g. `order: [margins, cost]`).
+  std::vector<std::string> choices(const std::string& key,
+                                   const std::vector<std::string>& allowed) const;
   /// The mapping under `key`.
   YamlReader map(const std::string& key) const;
   /// Whether the value under `key` is a mapping (e.g. a range `{from, to, count}`).

@@ -3,7 +3,8 @@
 /// The gait problem at one point of a library: the base problem with its step length, slope
 /// and speed replaced. A speed v at step length L makes the step last T = L / v; every phase
 /// duration (and its bounds) scales by T / T_base, so the SSP/DSP split of the base is kept.
-/// The polynomial guess gait keeps its shape: its hip and apex distances scale with L.
+/// The polynomial guess gait keeps its shape: its hip and apex distances scale with L. The base
+/// problem's `continuation:` is off: the library's schedule is the continuation between points.
 #include <array>
 
 #include "dynamics/model.hpp"

@@ -182,6 +182,23 @@ std::vector<std::string> withShapeKeys(std::vector<std::string> keys) {
   return keys;
 }
 
+/// The section, checked against the problem: the easy problem is the torque-squared one, and a
+/// continuation mesh has a segment count per phase.
+void readContinuationOf(const YamlReader& root, OcpConfig& c) {
+  c.continuation = readContinuation(root.map("continuation"));
+  if (!(c.cost.torque_squared > 0))
+    root.fail("continuation",
+              "a continuation starts from the torque-squared problem: expected "
+              "cost.torque_squared > 0");
+  const std::vector<int>& segments = c.continuation.mesh_segments;
+  if (segments.empty()) return;
+  if (segments.size() != c.phases.size())
+    root.map("continuation")
+        .map("mesh")
+        .fail("segments", fmt::format("expected one count per phase ({}), got {}", c.phases.size(),
+                                      segments.size()));
+}
+
 }  // namespace
 
 std::string CostWeights::primary() const {
@@ -191,9 +208,10 @@ std::string CostWeights::primary() const {
 
 OcpConfig loadOcpConfig(const std::string& path, const std::vector<config::Override>& overrides) {
   const YamlReader root = YamlReader::fromFile(path, overrides);
-  root.allowOnly(withShapeKeys({"name", "description", "robot", "initial_guess", "step_length",
-                                "phases", "step_duration", "scheme", "impact", "cost",
-                                "mesh_refinement", "constraints", "solver", "slope", "touchdown"}));
+  root.allowOnly(
+      withShapeKeys({"name", "description", "robot", "initial_guess", "step_length", "phases",
+                     "step_duration", "scheme", "impact", "cost", "mesh_refinement", "constraints",
+                     "solver", "slope", "touchdown", "continuation"}));
   OcpConfig c;
   c.name = root.string("name");
   root.stringOr("description", "");
@@ -236,6 +254,7 @@ OcpConfig loadOcpConfig(const std::string& path, const std::vector<config::Overr
   }
   if (root.has("solver")) readSolver(root.map("solver"), c.solver);
   c.shape = readShapeConfig(root);  // the problem's shape (ocp/shape/shape_config.hpp)
+  if (root.has("continuation")) readContinuationOf(root, c);
   return c;
 }
 

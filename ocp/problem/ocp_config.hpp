@@ -9,6 +9,7 @@
 #include "dynamics/model.hpp"
 #include "ocp/problem/clearance_profile.hpp"
 #include "ocp/shape/shape_config.hpp"
+#include "ocp/solve/continuation_options.hpp"
 #include "ocp/solve/ipopt_adapter.hpp"
 #include "ocp/transcription/collocation.hpp"
 
@@ -114,6 +115,10 @@ struct OcpConfig {
 
   // The problem's shape: steps per period and model variants (ocp/shape/shape_config.hpp).
   ShapeConfig shape;
+
+  /// Reach this problem from the torque-squared problem on its mesh (continuation.hpp); off
+  /// unless the config has a `continuation:` section.
+  ContinuationOptions continuation;
 };
 
 /// The problem of the config file `path`, with `overrides` (`--set KEY=VALUE`) in place of the

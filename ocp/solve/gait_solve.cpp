@@ -47,17 +47,28 @@ Eigen::VectorXd phaseErrors(const GaitProblem& p, const Phase& phase, const dyna
   });
 }
 
+/// The first round: a solve from `guess`, or the continuation the config asks for.
+GaitSolution firstRound(const dynamics::Model& model, const OcpConfig& config,
+                        const gaits::Trajectory& guess) {
+  if (config.continuation.enabled) {
+    ContinuationResult c = solveByContinuation(model, config, guess);
+    return {std::move(c.problem), std::move(c.result), {}, std::move(c.stages)};
+  }
+  GaitSolution s{buildGaitProblem(model, config, guess), {}, {}, {}};
+  s.result = solveWithIpopt(s.problem.nlp, config.solver);
+  return s;
+}
+
 }  // namespace
 
 GaitSolution solveGait(const dynamics::Model& model, OcpConfig config,
                        const gaits::Trajectory& guess,
                        const std::function<void(const MeshRound&)>& on_round) {
-  GaitSolution s{buildGaitProblem(model, config, guess), {}, {}};
-  SolverOptions options = config.solver;
+  GaitSolution s = firstRound(model, config, guess);
   double wall = 0, callbacks = 0;
   int iterations = 0;
   for (int round = 0;; ++round) {
-    s.result = solveWithIpopt(s.problem.nlp, options);
+    if (round > 0) s.result = solveWithIpopt(s.problem.nlp, warmStarted(config.solver));
     wall += s.result.wall_time_s;
     callbacks += s.result.callback_time_s;
     iterations += s.result.iterations;
@@ -75,7 +86,6 @@ GaitSolution solveGait(const dynamics::Model& model, OcpConfig config,
     if (done) break;
     s.problem = buildGaitProblem(
         model, config, reconstructDense(s.problem, model, s.result.x, kRefinementResampleHz));
-    options = warmStarted(config.solver);
   }
   s.result.wall_time_s = wall;
   s.result.callback_time_s = callbacks;

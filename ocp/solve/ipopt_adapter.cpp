@@ -113,13 +113,27 @@ struct LeastViolation {
   double violation = std::numeric_limits<double>::infinity();
 };
 
+/// Keeps the best accepted iterate (BestIterate): a feasible one beats any infeasible one,
+/// feasible ones by cost, infeasible ones by violation.
+void offerIterate(BestIterate& best, const Eigen::VectorXd& x, double violation, double cost,
+                  double feasible_tolerance) {
+  const bool feasible = violation <= feasible_tolerance;
+  const bool better = best.x.size() == 0 || (feasible && !best.feasible) ||
+                      (feasible && best.feasible && cost < best.cost) ||
+                      (!feasible && !best.feasible && violation < best.violation);
+  if (better) best = {x, violation, cost, feasible};
+}
+
 class Adapter : public Ipopt::TNLP {
  public:
-  Adapter(const Nlp& nlp, SolveResult& result, LeastViolation& best, bool progress)
+  Adapter(const Nlp& nlp, SolveResult& result, LeastViolation& best, const SolverOptions& options,
+          const WarmStart* start)
       : nlp_(nlp),
         result_(result),
         best_(best),
-        progress_(progress),
+        progress_(options.progress),
+        feasible_tolerance_(options.constraint_tolerance),
+        start_(start),
         gl_(nlp.constraintLower()),
         gu_(nlp.constraintUpper()) {
     const CallbackTimer t(result.profile.sparsity_time_s);
@@ -147,10 +161,16 @@ class Adapter : public Ipopt::TNLP {
     return true;
   }
 
-  bool get_starting_point(Index n, bool init_x, Number* x, bool init_z, Number*, Number*, Index,
-                          bool init_lambda, Number*) override {
-    if (init_z || init_lambda) return false;  // warm starts pass x only
-    if (init_x) Eigen::Map<Eigen::VectorXd>(x, n) = nlp_.initialGuess();
+  bool get_starting_point(Index n, bool init_x, Number* x, bool init_z, Number* z_l, Number* z_u,
+                          Index m, bool init_lambda, Number* lambda) override {
+    const bool duals = start_ != nullptr && !start_->multipliers.empty();
+    if ((init_z || init_lambda) && !duals) return false;  // asked only with warm_start_init_point
+    if (init_x) Eigen::Map<Eigen::VectorXd>(x, n) = start_ ? start_->x : nlp_.initialGuess();
+    if (init_z) {
+      Eigen::Map<Eigen::VectorXd>(z_l, n) = start_->multipliers.z_lower;
+      Eigen::Map<Eigen::VectorXd>(z_u, n) = start_->multipliers.z_upper;
+    }
+    if (init_lambda) Eigen::Map<Eigen::VectorXd>(lambda, m) = start_->multipliers.lambda;
     return true;
   }
 
@@ -178,7 +198,11 @@ class Adapter : public Ipopt::TNLP {
                   Number* values) override {
     const CallbackTimer t(result_.callback_time_s);
     if (values == nullptr) return fillStructure(jac_, rows, cols);
-    jac_.accumulate(nlp_.jacobianTriplets(vec(x, n)), values);
+    // Ipopt evaluates the Jacobian at each iterate it accepts, before it reports the iteration
+    // (its convergence check needs the dual infeasibility there): the iterate of the next
+    // intermediate_callback.
+    iterate_ = vec(x, n);
+    jac_.accumulate(nlp_.jacobianTriplets(iterate_), values);
     return true;
   }
 
@@ -193,19 +217,27 @@ class Adapter : public Ipopt::TNLP {
   bool intermediate_callback(Ipopt::AlgorithmMode, Index iter, Number obj, Number inf_pr,
                              Number inf_du, Number, Number, Number, Number, Number, Index,
                              const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
+    if (iterate_.size() == nlp_.variables()) {
+      const CallbackTimer t(result_.callback_time_s);
+      offerIterate(result_.best_iterate, iterate_,
+                   violation(nlp_, iterate_, nlp_.constraintValues(iterate_), gl_, gu_),
+                   nlp_.cost(iterate_), feasible_tolerance_);
+    }
     if (progress_)
       fmt::print("  iter {:4d}  cost {: .6e}  infeasibility {:.2e}  dual {:.2e}\n", iter, obj,
                  inf_pr, inf_du);
     return true;
   }
 
-  void finalize_solution(Ipopt::SolverReturn status, Index n, const Number* x, const Number*,
-                         const Number*, Index, const Number*, const Number*, Number obj,
-                         const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
+  void finalize_solution(Ipopt::SolverReturn status, Index n, const Number* x, const Number* z_l,
+                         const Number* z_u, Index m, const Number*, const Number* lambda,
+                         Number obj, const Ipopt::IpoptData*,
+                         Ipopt::IpoptCalculatedQuantities*) override {
     result_.status = statusName(status);
     result_.success = status == Ipopt::SUCCESS;
     result_.x = vec(x, n);
     result_.cost = obj;
+    result_.multipliers = {vec(z_l, n), vec(z_u, n), vec(lambda, m)};
   }
 
  private:
@@ -232,6 +264,9 @@ class Adapter : public Ipopt::TNLP {
   SolveResult& result_;
   LeastViolation& best_;
   bool progress_;
+  double feasible_tolerance_;
+  const WarmStart* start_;
+  Eigen::VectorXd iterate_;  // the point of the last Jacobian: the current iterate
   Eigen::VectorXd gl_, gu_;  // constraint bounds, assembled once
   SparsityPattern jac_, hess_;
 };
@@ -257,9 +292,36 @@ void setLinearSolver(Ipopt::OptionsList& ipopt, const SolverOptions& options) {
   ipopt.SetIntegerValue("mumps_pivot_order", options.mumps_pivot_order);
 }
 
+/// Ipopt's primal-dual warm start (warm_start_init_point): x and the multipliers as given,
+/// moved off the bounds by the options' pushes (warmStarted: 1e-6) rather than Ipopt's
+/// warm-start defaults of 1e-3. From its own primal-dual optimum the default five-link problem
+/// then re-solves in 1 iteration (tests/ocp/continuation_path_test.cpp).
+void setWarmStart(Ipopt::OptionsList& ipopt, const SolverOptions& options) {
+  ipopt.SetStringValue("warm_start_init_point", "yes");
+  ipopt.SetNumericValue("warm_start_bound_push", options.bound_push);
+  ipopt.SetNumericValue("warm_start_bound_frac", options.bound_frac);
+  ipopt.SetNumericValue("warm_start_slack_bound_push", options.bound_push);
+  ipopt.SetNumericValue("warm_start_slack_bound_frac", options.bound_frac);
+  ipopt.SetNumericValue("warm_start_mult_bound_push", options.bound_push);
+}
+
+/// @throws std::invalid_argument when a start does not fit the problem.
+void checkStart(const Nlp& nlp, const WarmStart& start) {
+  const Multipliers& m = start.multipliers;
+  const bool fits =
+      start.x.size() == nlp.variables() &&
+      (m.empty() || (m.z_lower.size() == nlp.variables() && m.z_upper.size() == nlp.variables() &&
+                     m.lambda.size() == nlp.constraints()));
+  if (!fits)
+    throw std::invalid_argument(
+        fmt::format("a start of {} variables and {} multipliers for a problem of {} variables and "
+                    "{} rows",
+                    start.x.size(), m.lambda.size(), nlp.variables(), nlp.constraints()));
+}
+
 }  // namespace
 
-SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options) {
+SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options, const WarmStart* warm) {
   const auto start = Clock::now();
   SolveResult result;
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
@@ -278,13 +340,15 @@ SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options) {
   app->Options()->SetStringValue("nlp_scaling_method", options.nlp_scaling_method);
   app->Options()->SetIntegerValue("print_level", options.print_level);
   app->Options()->SetStringValue("sb", "yes");  // no Ipopt banner
+  if (warm != nullptr) checkStart(nlp, *warm);
+  if (warm != nullptr && !warm->multipliers.empty()) setWarmStart(*app->Options(), options);
   // No options file: Initialize() would read ./ipopt.opt, and a stray one in the working
   // directory would override these settings unseen by summary.json.
   if (app->Initialize(std::string()) != Ipopt::Solve_Succeeded)
     throw std::runtime_error("Ipopt could not be initialised (check the solver options)");
   app->Jnlst()->AddJournal(new FactorizationCounter(result.profile.factorizations));
   LeastViolation best;
-  Ipopt::SmartPtr<Ipopt::TNLP> adapter = new Adapter(nlp, result, best, options.progress);
+  Ipopt::SmartPtr<Ipopt::TNLP> adapter = new Adapter(nlp, result, best, options, warm);
   const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(adapter);
   if (status == Ipopt::Invalid_Option && options.linear_solver == "ldl")
     throw std::runtime_error(
@@ -292,7 +356,7 @@ SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options) {
                     kkt::kLibraryName));
   if (result.x.size() == 0) {  // Ipopt failed before finalize_solution
     result.status = fmt::format("Ipopt_Error_{}", static_cast<int>(status));
-    result.x = nlp.initialGuess();
+    result.x = warm ? warm->x : nlp.initialGuess();
   }
   result.iterations = IsValid(app->Statistics()) ? app->Statistics()->IterationCount() : 0;
   if (IsValid(app->IpoptDataObject())) {

@@ -56,6 +56,23 @@ struct SolveProfile {
   int kkt_nonzeros = 0;  ///< lower triangle: Hessian, Jacobian and the slacks' diagonal
 };
 
+/// The Lagrange multipliers of a point (Ipopt's sign convention): of the variable bounds (z_L,
+/// z_U >= 0, one per variable) and of the constraint rows (lambda, one per row).
+struct Multipliers {
+  Eigen::VectorXd z_lower, z_upper, lambda;
+
+  bool empty() const { return lambda.size() == 0; }
+};
+
+/// The accepted iterate a failed solve is best restarted from: among Ipopt's accepted iterates
+/// those within constraint_tolerance, the cheapest; when none is, the least violated.
+struct BestIterate {
+  Eigen::VectorXd x;  ///< empty when Ipopt accepted none
+  double violation = 0;
+  double cost = 0;
+  bool feasible = false;  ///< within constraint_tolerance
+};
+
 struct SolveResult {
   std::string status;  ///< Ipopt's SolverReturn name, e.g. "Solve_Succeeded"
   bool success = false;
@@ -67,9 +84,20 @@ struct SolveResult {
   Eigen::VectorXd x;
   /// Which point x is: "last iterate" or "least-violated point evaluated".
   std::string point = "last iterate";
+  /// The multipliers of Ipopt's last iterate (also when x is the least-violated point).
+  Multipliers multipliers;
+  BestIterate best_iterate;
   double wall_time_s = 0;
   double callback_time_s = 0;  ///< time spent evaluating the Nlp (ours, not Ipopt's)
   SolveProfile profile;
+};
+
+/// A primal-dual start: Ipopt begins at x with these multipliers (its warm_start_init_point),
+/// moved off the bounds by the options' bound_push and bound_frac only. Without multipliers
+/// (empty) Ipopt starts at x and initialises them itself.
+struct WarmStart {
+  Eigen::VectorXd x;
+  Multipliers multipliers;
 };
 
 /// `options` for a start next to an optimum: a small barrier, bound multipliers on its central
@@ -80,7 +108,10 @@ struct SolveResult {
 /// with mu-based multipliers at pushes of 1e-4.
 SolverOptions warmStarted(SolverOptions options);
 
-/// @throws std::runtime_error if Ipopt cannot be initialised (bad option).
-SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options);
+/// From the Nlp's initial guess, or from `warm` (same variables and rows as `nlp`).
+/// @throws std::runtime_error if Ipopt cannot be initialised (bad option), std::invalid_argument
+/// if `warm` does not fit `nlp`.
+SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options,
+                           const WarmStart* warm = nullptr);
 
 }  // namespace gaitopt::ocp

@@ -53,12 +53,51 @@ nlohmann::ordered_json solverJson(const SolverOptions& s) {
 }
 
 /// Every solver setting the solution came from: the config's (defaults filled in), those of
-/// the warm-started refinement rounds, and the refinement's resample rate.
+/// the warm-started refinement rounds and continuation stages, and the refinement's resample
+/// rate.
 nlohmann::ordered_json solverSettings(const OcpConfig& config) {
   auto json = solverJson(config.solver);
   json["refinement_rounds"] = solverJson(warmStarted(config.solver));
   json["refinement_resample_hz"] = kRefinementResampleHz;
+  if (config.continuation.enabled)
+    json["continuation_stages"] = solverJson(warmStarted(config.solver));
   return json;
+}
+
+nlohmann::ordered_json pathParametersJson(const PathParameters& p) {
+  return {{"friction_margin", p.friction_margin},
+          {"zmp_margin", p.zmp_margin},
+          {"strike_normal_velocity", {p.normal_velocity_min, p.normal_velocity_max}},
+          {"cost",
+           {{"torque_squared", p.cost.torque_squared},
+            {"abs_work", p.cost.abs_work},
+            {"cost_of_transport", p.cost.cost_of_transport}}}};
+}
+
+/// The continuation's settings and the path it took, one entry per Ipopt solve.
+nlohmann::ordered_json continuationJson(const ContinuationOptions& o,
+                                        const std::vector<ContinuationStage>& path) {
+  auto stages = nlohmann::ordered_json::array();
+  for (const ContinuationStage& s : path)
+    stages.push_back({{"progress", s.progress},
+                      {"parameters", pathParametersJson(s.parameters)},
+                      {"segments", s.segments},
+                      {"start", s.start},
+                      {"mu_init", s.mu_init},
+                      {"status", s.status},
+                      {"converged", s.success},
+                      {"iterations", s.iterations},
+                      {"cost", s.cost},
+                      {"max_violation", s.max_violation},
+                      {"wall_time_s", s.wall_time_s}});
+  return {{"steps", o.steps},
+          {"spacing", o.geometric ? "geometric" : "linear"},
+          {"cost_start", o.cost_start},
+          {"halvings", o.halvings},
+          {"retries", o.retries},
+          {"retry_mu_init", o.retry_mu_init},
+          {"mesh", {{"segments", o.mesh_segments}, {"until", o.mesh_until}}},
+          {"stages", stages}};
 }
 
 /// The location of a violation for summary.json; `name_key` says what the name names.
@@ -216,6 +255,8 @@ nlohmann::ordered_json solutionSummary(const GaitResultOptions& o, const dynamic
                                {"variants", problem.variants},
                                {"exported", "the nominal's first step"}};
   summary["mesh_history"] = meshHistory(solution.history);
+  if (config.continuation.enabled)
+    summary["continuation"] = continuationJson(config.continuation, solution.continuation);
   summary["solver"] = solverSettings(config);
   return summary;
 }
