@@ -14,13 +14,14 @@ bin="$build/apps/gaitopt"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$out"
-for gait in mu2004_walk mu2004_walk_strike mu2004_walk_robust; do
+gaits=(mu2004_walk mu2004_walk_strike mu2004_walk_robust)
+for gait in "${gaits[@]}"; do
   "$bin" optimize --config "configs/ocp/$gait.yaml" --out "$work/ref_$gait" --no-plots \
     --quiet >/dev/null
 done
 echo "gait,controller,plant_mass,steps,max_tracking_error_rad,max_slip_m,failure" \
   >"$out/dart_walks.csv"
-for gait in mu2004_walk mu2004_walk_strike mu2004_walk_robust; do
+for gait in "${gaits[@]}"; do
   for controller in computed_torque mu_sliding_mode; do
     for mass in -0.1 0 0.1; do
       "$bin" simulate --reference "$work/ref_$gait" --ground dart --controller "$controller" \
