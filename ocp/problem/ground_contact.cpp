@@ -12,7 +12,7 @@ using Row = Eigen::Matrix<double, 1, 5>;  // coefficients of (F_Bx, F_By, F_Ex, 
 
 GroundContact::GroundContact(const dynamics::Model& model, const PointLayout& point,
                              const std::optional<dynamics::Foot>& zmp_foot, double step_length,
-                             double mu)
+                             double mu, double min_normal)
     : model_(&model), point_(point) {
   const bool dsp = point.hasContactForce();
   std::vector<Row> rows{Row(0, 1, 0, 0, 0), Row(-1, mu, 0, 0, 0), Row(1, mu, 0, 0, 0)};
@@ -37,6 +37,9 @@ GroundContact::GroundContact(const dynamics::Model& model, const PointLayout& po
   }
   rows_.resize(static_cast<Eigen::Index>(rows.size()), 5);
   for (size_t r = 0; r < rows.size(); ++r) rows_.row(static_cast<Eigen::Index>(r)) = rows[r];
+  lower_ = Eigen::VectorXd::Zero(rows_.rows());
+  lower_(0) = min_normal;           // F_By
+  if (dsp) lower_(3) = min_normal;  // F_Ey
 }
 
 Eigen::Matrix<double, 5, 1> GroundContact::contactQuantities(const Eigen::VectorXd& v) const {

@@ -75,14 +75,17 @@ ClearanceProfile readClearance(const YamlReader& r) {
 void readConstraints(const YamlReader& r, OcpConfig& c) {
   r.allowOnly({"torque_limits", "knee_limits", "angle_range", "rate_limit", "joint_velocity_limits",
                "swing_descends", "trailing_lifts", "ground_contact", "impact_friction", "zmp",
-               "clearance", "friction_margin", "zmp_margin", "dsp_reduced_coordinates",
-               "jerk_limit"});
+               "clearance", "friction_margin", "zmp_margin", "min_normal_force",
+               "dsp_reduced_coordinates", "jerk_limit"});
   c.ground_contact = r.booleanOr("ground_contact", true);
   c.impact_friction = r.booleanOr("impact_friction", true);
   c.zmp = r.booleanOr("zmp", true);
   c.friction_margin = r.numberOr("friction_margin", 0.0, config::inRange(0, 1, "(of mu)"));
   c.zmp_margin = r.numberOr("zmp_margin", 0.0, config::inRange(0, 1, "[m]"));
   if (c.zmp_margin > 0 && !c.zmp) r.fail("zmp_margin", "a ZMP margin needs zmp: true");
+  c.min_normal_force = r.numberOr("min_normal_force", 0.0, config::inRange(0, 1e4, "[N]"));
+  if (c.min_normal_force > 0 && !c.ground_contact)
+    r.fail("min_normal_force", "a least normal force needs ground_contact: true");
   if (r.has("clearance")) c.clearance = readClearance(r.map("clearance"));
   c.torque_limits = r.booleanOr("torque_limits", true);
   c.knee_limits = r.booleanOr("knee_limits", true);

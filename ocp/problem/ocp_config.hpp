@@ -111,6 +111,10 @@ struct OcpConfig {
   /// With zmp: the ZMP (and in the DSP foot B's own CoP) kept this far inside [-heel, toe], so a
   /// tracking error does not rotate the foot about its edge [m], < half the foot.
   double zmp_margin = 0;
+  /// Every tip in contact keeps at least this normal force at every point (SSP stance tip, both
+  /// DSP tips) [N], so the optimum does not unload a foot to zero where a tracking error then
+  /// lifts it off.
+  double min_normal_force = 0;
   SolverOptions solver;
 
   // The problem's shape: steps per period and model variants (ocp/shape/shape_config.hpp).

@@ -156,7 +156,7 @@ void addPhaseSets(Nlp& nlp, const dynamics::Model& model, const OcpConfig& c, co
                               : std::nullopt;
     addPathConstraint(nlp, phase, "ground_contact",
                       std::make_shared<GroundContact>(model, phase.point, zmp_foot, c.step_length,
-                                                      frictionBound(model, c)));
+                                                      frictionBound(model, c), c.min_normal_force));
   }
   if (!phase.doubleSupport() && c.clearance.enabled)
     nlp.addConstraint(std::make_unique<SwingClearance>(model, phase, c.clearance));

@@ -23,6 +23,7 @@ OcpConfig easiest(OcpConfig c) {
   if (continued(c, "margins")) {
     c.friction_margin = 0;
     c.zmp_margin = 0;
+    c.min_normal_force = 0;
   }
   if (continued(c, "strike")) c.touchdown.normal_min = 0;
   if (continued(c, "cost")) {
@@ -35,7 +36,8 @@ OcpConfig easiest(OcpConfig c) {
 /// Whether the path moves a group's parameters at all.
 bool moves(const OcpConfig& c, const std::string& group) {
   if (!continued(c, group)) return false;
-  if (group == "margins") return c.friction_margin > 0 || c.zmp_margin > 0;
+  if (group == "margins")
+    return c.friction_margin > 0 || c.zmp_margin > 0 || c.min_normal_force > 0;
   if (group == "strike") return c.touchdown.normal_min > 0;
   return c.cost.abs_work > 0 || c.cost.cost_of_transport > 0;
 }
@@ -68,6 +70,7 @@ OcpConfig configAt(const OcpConfig& target, double progress) {
   OcpConfig c = target;
   c.friction_margin = at(easy.friction_margin, target.friction_margin, "margins");
   c.zmp_margin = at(easy.zmp_margin, target.zmp_margin, "margins");
+  c.min_normal_force = at(easy.min_normal_force, target.min_normal_force, "margins");
   c.touchdown.normal_min = at(easy.touchdown.normal_min, target.touchdown.normal_min, "strike");
   c.cost.abs_work = at(easy.cost.abs_work, target.cost.abs_work, "cost");
   c.cost.cost_of_transport = at(easy.cost.cost_of_transport, target.cost.cost_of_transport, "cost");
@@ -75,7 +78,8 @@ OcpConfig configAt(const OcpConfig& target, double progress) {
 }
 
 PathParameters pathParameters(const OcpConfig& c) {
-  return {c.friction_margin, c.zmp_margin, c.touchdown.normal_min, c.touchdown.normal_max, c.cost};
+  return {c.friction_margin,      c.zmp_margin,           c.min_normal_force,
+          c.touchdown.normal_min, c.touchdown.normal_max, c.cost};
 }
 
 bool pathMoves(const OcpConfig& target) {

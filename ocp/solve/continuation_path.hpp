@@ -21,6 +21,7 @@ namespace gaitopt::ocp {
 struct PathParameters {
   double friction_margin = 0;
   double zmp_margin = 0;
+  double min_normal_force = 0;                              ///< [N]
   double normal_velocity_min = 0, normal_velocity_max = 0;  ///< strike design only [m/s]
   CostWeights cost;
 };

@@ -67,6 +67,7 @@ nlohmann::ordered_json solverSettings(const OcpConfig& config) {
 nlohmann::ordered_json pathParametersJson(const PathParameters& p) {
   return {{"friction_margin", p.friction_margin},
           {"zmp_margin", p.zmp_margin},
+          {"min_normal_force", p.min_normal_force},
           {"strike_normal_velocity", {p.normal_velocity_min, p.normal_velocity_max}},
           {"cost",
            {{"torque_squared", p.cost.torque_squared},

@@ -65,6 +65,15 @@ TEST(ContinuationConfig, SectionIsReadAndCheckedAgainstTheProblem) {
         "expected cost.torque_squared > 0");
 }
 
+TEST(ContinuationPath, TheLeastNormalForceIsAMarginThatStartsAtZero) {
+  OcpConfig target = loadOcpConfig(shippedOcpConfig("mu2004_walk_cot"));
+  target.min_normal_force = 40;  // [N]
+  EXPECT_EQ(configAt(target, 0).min_normal_force, 0.0);
+  EXPECT_DOUBLE_EQ(configAt(target, 0.5).min_normal_force, 20);
+  EXPECT_EQ(configAt(target, 1).min_normal_force, 40);
+  EXPECT_EQ(pathParameters(configAt(target, 0.25)).min_normal_force, 10);
+}
+
 TEST(ContinuationPath, EndsAreTheEasyAndTheConfiguredProblemAndWeightsMoveGeometrically) {
   const OcpConfig target = loadOcpConfig(shippedOcpConfig("mu2004_walk_cot"));
   ASSERT_TRUE(target.continuation.enabled);
