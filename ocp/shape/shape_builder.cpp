@@ -7,6 +7,7 @@
 #include <string>
 
 #include "ocp/problem/gait_links.hpp"
+#include "ocp/shape/computed_torque_law.hpp"
 #include "ocp/shape/phase_builder.hpp"
 #include "ocp/shape/variant_sets.hpp"
 #include "ocp/transcription/autodiff_constraint.hpp"
@@ -69,8 +70,16 @@ class Builder {
   /// A variant's torques by the feedback law around the reference, and its spread about it.
   void addVariantSets(const PhaseSpec& spec, const BuiltPhase& b) {
     const Phase& reference = built(spec.feedback_from);
-    p_.nlp.addConstraint(std::make_unique<FeedbackLaw>(b.phase.name() + "_feedback", b.phase,
-                                                       reference, *b.model, shape_.feedback));
+    const FeedbackGains& law = shape_.feedback;
+    const std::string name = b.phase.name() + "_feedback";
+    if (law.law == FeedbackGains::Law::kJointPd)
+      p_.nlp.addConstraint(std::make_unique<FeedbackLaw>(name, b.phase, reference, *b.model, law));
+    else if (!b.phase.doubleSupport())
+      p_.nlp.addConstraint(std::make_unique<ComputedTorqueLaw>(
+          b.phase.name() + "_computed_torque", b.phase, reference, *shape_.models[0], law));
+    else
+      p_.nlp.addConstraint(std::make_unique<FeedbackLaw>(
+          name, b.phase, reference, *b.model, FeedbackGains{{}, law.dsp_kp, law.dsp_kd}));
     if (shape_.spread > 0)
       p_.nlp.addCost(std::make_unique<VariantSpread>(b.phase.name() + "_spread", b.phase, reference,
                                                      shape_.spread));

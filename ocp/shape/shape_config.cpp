@@ -23,9 +23,22 @@ VariantConfig readVariant(const YamlReader& r) {
 }
 
 FeedbackGains readFeedback(const YamlReader& r) {
-  r.allowOnly({"kp", "kd"});
-  return {r.number("kp", config::inRange(0, 1e5, "[N m / rad]")),
-          r.number("kd", config::inRange(0, 1e4, "[N m s / rad]"))};
+  r.allowOnly({"law", "kp", "kd", "dsp_kp", "dsp_kd"});
+  FeedbackGains g;
+  const std::string law = r.has("law") ? r.choice("law", {"joint_pd", "computed_torque"}) : "";
+  if (law != "computed_torque") {
+    if (r.has("dsp_kp") || r.has("dsp_kd"))
+      r.fail("dsp_kp", "only meaningful with law: computed_torque");
+    g.kp = r.number("kp", config::inRange(0, 1e5, "[N m / rad]"));
+    g.kd = r.number("kd", config::inRange(0, 1e4, "[N m s / rad]"));
+    return g;
+  }
+  g.law = FeedbackGains::Law::kComputedTorque;
+  g.kp = r.number("kp", config::inRange(0, 1e6, "[1/s^2]"));
+  g.kd = r.number("kd", config::inRange(0, 1e4, "[1/s]"));
+  g.dsp_kp = r.number("dsp_kp", config::inRange(0, 1e5, "[N m / rad]"));
+  g.dsp_kd = r.number("dsp_kd", config::inRange(0, 1e4, "[N m s / rad]"));
+  return g;
 }
 
 }  // namespace

@@ -17,11 +17,21 @@ struct VariantConfig {
   double mass_scale = 1;
 };
 
-/// Joint PD around the reference, the same gains on every actuated joint:
-/// u = u_ref + kp (q_ref - q) + kd (dq_ref - dq), q = M theta the joint angles (Mu 2.41).
+/// The law that drives every variant around the reference, the same gains on every joint.
+///  - joint_pd: u = u_ref + kp (q_ref - q) + kd (dq_ref - dq), q = M theta the joint angles
+///    (Mu 2.41); kp [N m / rad], kd [N m s / rad].
+///  - computed_torque: the closed loop's own law (sim/controllers/tracking_controller.cpp, Mu
+///    2.43) on the nominal model: u = the nominal's inverse dynamics at the variant's state for
+///    the joint accelerations ddq_ref + kp (q_ref - q) + kd (dq_ref - dq); kp [1/s^2], kd [1/s].
+///    In single support only (the double support's computed torque shares the load by the
+///    plan's forces); the double support uses joint PD with dsp_kp and dsp_kd.
 struct FeedbackGains {
-  double kp = 0;  ///< [N m / rad]
-  double kd = 0;  ///< [N m s / rad]
+  enum class Law { kJointPd, kComputedTorque };
+  Law law = Law::kJointPd;
+  double kp = 0;
+  double kd = 0;
+  double dsp_kp = 0;  ///< computed_torque: the DSP's joint PD [N m / rad]
+  double dsp_kd = 0;  ///< [N m s / rad]
 };
 
 struct ShapeConfig {

@@ -86,6 +86,14 @@ const std::map<std::string, std::unique_ptr<Shipped>>& shippedProblems() {
     for (const std::string name : {"mu2004_walk", "mu2004_walk_cot"})
       all.emplace(name + "_variants",
                   coarseProblem(loadOcpConfig((dir / (name + ".yaml")).string(), variants())));
+    // The closed loop's computed-torque law in single support (computed_torque_law.hpp), with
+    // the least normal force on the contact rows.
+    std::vector<config::Override> ct = variants();
+    ct[1] = config::parseOverride(
+        "variant_feedback={law: computed_torque, kp: 400, kd: 40, dsp_kp: 300, dsp_kd: 30}");
+    ct.push_back(config::parseOverride("constraints.min_normal_force=50"));
+    all.emplace("mu2004_walk_computed_torque_variants",
+                coarseProblem(loadOcpConfig((dir / "mu2004_walk.yaml").string(), ct)));
     return all;
   }();
   return problems;
@@ -204,6 +212,7 @@ TEST(SetContractCoverage, EverySetOfTheGaitProblemIsChecked) {
                            "variant1_ssp_ground_contact",
                            "variant1_ssp_clearance",
                            "variant1_ssp_feedback",
+                           "variant1_ssp_computed_torque",
                            "variant1_dsp_defects",
                            "variant1_dsp_dynamics",
                            "variant1_dsp_ground_contact",

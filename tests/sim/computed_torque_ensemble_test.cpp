@@ -1,0 +1,100 @@
+// Model variants driven by the closed loop's own computed-torque law (variant_feedback: {law:
+// computed_torque}, ocp/shape/computed_torque_law.hpp). At the solution of a small ensemble,
+// every single-support torque of the variant is recomputed by the controller the walks use
+// (sim::TrackingController with its PD law): the optimiser's law and the controller's must be
+// the same function. The variant's points satisfy its own (heavier) model's dynamics, so the
+// pair is the closed loop on that plant, collocated. Config errors name their key.
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "dynamics/ssp_dynamics.hpp"
+#include "ocp/shape/computed_torque_law.hpp"
+#include "sim/controllers/tracking_controller.hpp"
+#include "sim/controllers/tracking_law.hpp"
+#include "support/solved_config.hpp"
+
+namespace gaitopt::ocp {
+namespace {
+
+constexpr double kKp = 400, kKd = 40;  // the tracking law's defaults [1/s^2], [1/s]
+
+std::vector<config::Override> ensemble(const std::string& feedback) {
+  std::vector<config::Override> o;
+  for (const std::string& s :
+       {std::string("variants=[{mass_scale: 1.1}]"), "variant_feedback=" + feedback,
+        std::string("variant_end_tolerance=0.05"), std::string("phases[0].segments=15"),
+        std::string("phases[1].segments=3"), std::string("solver.linear_solver=mumps")})
+    o.push_back(config::parseOverride(s));
+  return o;
+}
+
+const std::string kLaw = "{law: computed_torque, kp: 400, kd: 40, dsp_kp: 300, dsp_kd: 30}";
+
+std::string loadError(const std::string& feedback) {
+  try {
+    loadOcpConfig(test::shippedOcpConfig("mu2004_walk"), ensemble(feedback));
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ComputedTorqueVariantConfig, TheLawAndItsGainsAreReadStrictly) {
+  EXPECT_EQ(loadError(kLaw), "");
+  EXPECT_NE(loadError("{law: computed_torque, kp: 400, kd: 40}").find("dsp_kp"), std::string::npos);
+  EXPECT_NE(loadError("{law: lqr, kp: 400, kd: 40}").find("variant_feedback.law"),
+            std::string::npos);
+  EXPECT_NE(
+      loadError("{kp: 300, kd: 30, dsp_kp: 300}").find("only meaningful with law: computed_torque"),
+      std::string::npos);
+}
+
+TEST(ComputedTorqueVariantConfig, APassiveJointIsRefused) {
+  const dynamics::Model rabbit =
+      problemModel(loadOcpConfig(test::shippedOcpConfig("rabbit_kelly2017")));
+  FeedbackGains g;
+  g.kp = kKp;
+  g.kd = kKd;
+  EXPECT_THROW(ComputedTorqueResidual(rabbit, g), std::invalid_argument);
+}
+
+TEST(ComputedTorqueVariant, TorquesAreTheTrackingControllersOnTheNominalModel) {
+#ifndef NDEBUG
+  GTEST_SKIP() << "a solve: optimised builds only";
+#endif
+  const test::SolvedConfig s(loadOcpConfig(test::shippedOcpConfig("mu2004_walk"), ensemble(kLaw)));
+  ASSERT_TRUE(s.result.success) << s.result.status;
+  const sim::TrackingController controller(s.model, std::make_shared<sim::PdLaw>(kKp, kKd));
+  const dynamics::Model& plant = *s.problem.models[1];
+  const Phase& variant = *s.problem.phasesOf(0, 1)[0];
+  const Phase& reference = *s.problem.phasesOf(0, 0)[0];
+  const PointLayout& l = variant.point;
+  double law_error = 0, own_model = 0, correction = 0;
+  for (int k = 0; k < variant.layout.points(); ++k) {
+    const Eigen::VectorXd pv = variant.layout.point(s.result.x, k);
+    const Eigen::VectorXd pr = reference.layout.point(s.result.x, k);
+    gaits::Knot ref;
+    ref.theta = l.q.of(pr);
+    ref.dtheta = l.v.of(pr);
+    ref.ddtheta = l.a.of(pr);
+    const VecD theta = l.q.of(pv), dtheta = l.v.of(pv), tau = l.u.of(pv);
+    const VecD commanded = controller.unclippedTorque(gaits::Phase::kSsp, theta, dtheta, ref);
+    law_error = std::max(law_error, (commanded - tau).cwiseAbs().maxCoeff());
+    own_model = std::max(
+        own_model, (dynamics::sspInverseDynamics(plant, theta, dtheta, VecD(l.a.of(pv))) - tau)
+                       .cwiseAbs()
+                       .maxCoeff());
+    correction = std::max(correction, (tau - VecD(l.u.of(pr))).cwiseAbs().maxCoeff());
+  }
+  RecordProperty("largest_law_error_Nm", fmt::format("{:.3g}", law_error));
+  RecordProperty("largest_correction_Nm", fmt::format("{:.3g}", correction));
+  EXPECT_LT(law_error, 1e-6);  // the controller's torque, to the solver's tolerance
+  EXPECT_LT(own_model, 1e-6);  // on the 10 % heavier plant's dynamics
+  EXPECT_GT(correction, 1.0);  // and it is not the reference's feed-forward
+}
+
+}  // namespace
+}  // namespace gaitopt::ocp
