@@ -4,6 +4,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "config/units.hpp"
 #include "gaits/export/consistency.hpp"
 #include "gaits/export/metrics.hpp"
 #include "io/output/checked_write.hpp"
@@ -68,6 +69,10 @@ ordered_json gaitSummary(const Trajectory& traj, const dynamics::Model& model,
       {"slope_rad", model.slope()},  // ground inclination, > 0 uphill (dynamics/model.hpp)
       {"total_mass", model.totalMass()},
   };
+  const Posture upright = posture(traj, model);
+  s["posture_deg"] = {{"max_torso_lean", upright.torso_lean / kDeg},
+                      {"max_stance_knee_flexion", upright.stance_knee / kDeg},
+                      {"max_swing_knee_flexion", upright.swing_knee / kDeg}};
   s.update(robotJson(model));
   return s;
 }

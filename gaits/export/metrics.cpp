@@ -94,6 +94,19 @@ double minNormalForce(const Trajectory& traj) {
   return lowest;
 }
 
+Posture posture(const Trajectory& traj, const dynamics::Model& model) {
+  Posture p;
+  const int n = model.nLinks();
+  const bool knees = model.legLinks() == 2;
+  for (const Knot& k : traj.knots()) {
+    if (model.torso()) p.torso_lean = std::max(p.torso_lean, std::abs(k.theta(*model.torso())));
+    if (!knees) continue;
+    p.stance_knee = std::max(p.stance_knee, std::abs(k.theta(1) - k.theta(0)));
+    p.swing_knee = std::max(p.swing_knee, std::abs(k.theta(n - 2) - k.theta(n - 1)));
+  }
+  return p;
+}
+
 double maxFrictionRatio(const Trajectory& traj) {
   double highest = 0;
   for (const Knot& k : traj.knots())

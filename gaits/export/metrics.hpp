@@ -30,6 +30,16 @@ double zmpX(const Knot& knot, double step_length);
 /// Smallest signed distance from the ZMP to the support boundary [m]: SSP support
 /// [-heel, toe] around B; DSP support [-heel, step_length + toe]. Negative when outside.
 double minZmpMargin(const Trajectory& traj, const dynamics::Model& model);
+/// How far a gait leaves the upright posture, largest over the knots [rad]: the torso's angle
+/// from vertical, and each knee's flexion |theta_thigh - theta_shank| (0 straight) for the
+/// stance leg (links 0, 1) and the swing leg (links n-2, n-1). Zero for what the robot lacks.
+struct Posture {
+  double torso_lean = 0;
+  double stance_knee = 0;
+  double swing_knee = 0;
+};
+Posture posture(const Trajectory& traj, const dynamics::Model& model);
+
 /// The touchdown of a step: the last SSP knot before the DSP meets the rigid double impact
 /// (Mu 2.27-2.28); an SSP-only step ends at its strike and meets the single impact (2.34-2.36,
 /// the old stance tip B lifts off with trailing_velocity).

@@ -122,6 +122,24 @@ Trajectory contactStep() {
   return Trajectory("test", 0.35, knots);
 }
 
+TEST(GaitMetrics, PostureIsTheLargestTorsoLeanAndKneeFlexionOfEitherLeg) {
+  const dynamics::Model model = loadNamed("mu2004_five_link");  // links: 0, 1 stance, 2 torso
+  Knot bent = restKnot(0, Phase::kSsp);
+  bent.theta << 0.1, 0.5, -0.3, 0.2, -0.7;  // stance knee 0.4, swing knee 0.9, torso 0.3
+  Knot straight = restKnot(0, Phase::kSsp);
+  straight.theta << 0.2, 0.2, 0.1, -0.4, -0.4;
+  std::vector<Knot> knots{straight, bent, straight};
+  for (size_t i = 0; i < knots.size(); ++i) knots[i].t = 0.1 * static_cast<double>(i);
+  const gaits::Posture p = gaits::posture(Trajectory("test", 0.35, knots), model);
+  EXPECT_DOUBLE_EQ(p.torso_lean, 0.3);
+  EXPECT_DOUBLE_EQ(p.stance_knee, 0.4);
+  EXPECT_DOUBLE_EQ(p.swing_knee, 0.9);
+  // A robot without knees or torso has none to bend.
+  const gaits::Posture compass =
+      gaits::posture(constantStep(restKnot(0, Phase::kSsp, 2)), loadNamed("compass_gait"));
+  EXPECT_EQ(compass.torso_lean + compass.stance_knee + compass.swing_knee, 0.0);
+}
+
 TEST(GaitMetrics, MinNormalForceUsesOnlyTipsInContact) {
   EXPECT_EQ(gaits::minNormalForce(contactStep()), 60);  // E in the DSP, not -40 from the SSP
   auto knots = contactStep().knots();
