@@ -1,7 +1,7 @@
 """One CSV row of a closed-loop walk: the given leading fields, then steps walked, the largest
 tracking error, the largest slip and the failure (commas turned into semicolons) of the walk's
 summary.json. Used by the study scripts that tabulate many walks (scripts/mu_cases.sh,
-scripts/dart_walks.sh).
+scripts/walk_table.sh).
 
 usage: walk_row.py SUMMARY_JSON FIELD...
 """

@@ -21,11 +21,10 @@ void readMesh(const YamlReader& r, ContinuationOptions& o) {
 
 /// `none`, or a list of distinct groups.
 std::vector<std::string> readParameters(const YamlReader& r) {
-  std::vector<std::string> groups =
-      r.choices("parameters", {"none", "margins", "strike", "cost", "variants"});
+  std::vector<std::string> groups = r.choices("parameters", {"none", "margins", "strike", "cost"});
   for (size_t i = 0; i < groups.size(); ++i) {
     if (groups[i] == "none" && groups.size() > 1)
-      r.fail("parameters", "expected `none` alone or a list of margins, strike, cost and variants");
+      r.fail("parameters", "expected `none` alone or a list of margins, strike and cost");
     for (size_t j = 0; j < i; ++j)
       if (groups[j] == groups[i]) r.fail("parameters", "'" + groups[i] + "' is listed twice");
   }

@@ -78,20 +78,12 @@ OcpConfig configAt(const OcpConfig& target, double progress) {
 }
 
 PathParameters pathParameters(const OcpConfig& c) {
-  PathParameters p{c.friction_margin,
-                   c.zmp_margin,
-                   c.min_normal_force,
-                   c.touchdown.normal_min,
-                   c.touchdown.normal_max,
-                   c.cost,
-                   {}};
-  for (const VariantConfig& v : c.shape.variants) p.variant_mass_scales.push_back(v.mass_scale);
-  return p;
+  return {c.friction_margin,      c.zmp_margin,           c.min_normal_force,
+          c.touchdown.normal_min, c.touchdown.normal_max, c.cost};
 }
 
 bool pathMoves(const OcpConfig& target) {
-  return moves(target, "margins") || moves(target, "strike") || moves(target, "cost") ||
-         moves(target, "variants");
+  return moves(target, "margins") || moves(target, "strike") || moves(target, "cost");
 }
 
 OcpConfig onSegments(OcpConfig config, const std::vector<int>& segments) {

@@ -24,7 +24,6 @@ struct PathParameters {
   double min_normal_force = 0;                              ///< [N]
   double normal_velocity_min = 0, normal_velocity_max = 0;  ///< strike design only [m/s]
   CostWeights cost;
-  std::vector<double> variant_mass_scales;  ///< of the model variants, in order
 };
 
 /// `target` at progress p (clamped to [0, 1]); exactly `target` at p = 1.

@@ -65,17 +65,14 @@ nlohmann::ordered_json solverSettings(const OcpConfig& config) {
 }
 
 nlohmann::ordered_json pathParametersJson(const PathParameters& p) {
-  nlohmann::ordered_json json = {
-      {"friction_margin", p.friction_margin},
-      {"zmp_margin", p.zmp_margin},
-      {"min_normal_force", p.min_normal_force},
-      {"strike_normal_velocity", {p.normal_velocity_min, p.normal_velocity_max}},
-      {"cost",
-       {{"torque_squared", p.cost.torque_squared},
-        {"abs_work", p.cost.abs_work},
-        {"cost_of_transport", p.cost.cost_of_transport}}}};
-  if (!p.variant_mass_scales.empty()) json["variant_mass_scales"] = p.variant_mass_scales;
-  return json;
+  return {{"friction_margin", p.friction_margin},
+          {"zmp_margin", p.zmp_margin},
+          {"min_normal_force", p.min_normal_force},
+          {"strike_normal_velocity", {p.normal_velocity_min, p.normal_velocity_max}},
+          {"cost",
+           {{"torque_squared", p.cost.torque_squared},
+            {"abs_work", p.cost.abs_work},
+            {"cost_of_transport", p.cost.cost_of_transport}}}};
 }
 
 /// The continuation's settings and the path it took, one entry per Ipopt solve.
