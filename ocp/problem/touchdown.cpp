@@ -42,12 +42,6 @@ Eigen::VectorXd guessImpact(const dynamics::Model& model, const ImpactLayout& l,
   return v;
 }
 
-Eigen::VectorXd gather(const Eigen::VectorXd& x, const std::vector<int>& idx) {
-  Eigen::VectorXd y(static_cast<Eigen::Index>(idx.size()));
-  for (size_t i = 0; i < idx.size(); ++i) y(static_cast<Eigen::Index>(i)) = x(idx[i]);
-  return y;
-}
-
 }  // namespace
 
 Touchdown Touchdown::add(Nlp& nlp, const dynamics::Model& model, const OcpConfig& c,

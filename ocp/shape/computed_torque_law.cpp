@@ -80,25 +80,18 @@ ComputedTorqueLaw::ComputedTorqueLaw(std::string name, const Phase& variant, con
   }
 }
 
-Eigen::VectorXd ComputedTorqueLaw::gather(const Eigen::VectorXd& x, int p) const {
-  const std::vector<int>& idx = indices_[static_cast<size_t>(p)];
-  Eigen::VectorXd y(static_cast<Eigen::Index>(idx.size()));
-  for (size_t i = 0; i < idx.size(); ++i) y(static_cast<Eigen::Index>(i)) = x(idx[i]);
-  return y;
-}
-
 void ComputedTorqueLaw::values(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> g) const {
   const int m = residual_.rows();
   for (int p = 0; p < static_cast<int>(indices_.size()); ++p)
-    residual_.evaluate(gather(x, p), g.segment(p * m, m));
+    residual_.evaluate(gather(x, indices_[static_cast<size_t>(p)]), g.segment(p * m, m));
 }
 
 void ComputedTorqueLaw::jacobian(const Eigen::VectorXd& x, Triplets& out) const {
   const int m = residual_.rows();
   Eigen::MatrixXd jac(m, kBlocks * m);
   for (int p = 0; p < static_cast<int>(indices_.size()); ++p) {
-    residual_.jacobian(gather(x, p), jac);
     const std::vector<int>& idx = indices_[static_cast<size_t>(p)];
+    residual_.jacobian(gather(x, idx), jac);
     for (const auto& [r, c] : pattern_.jacobian)
       out.emplace_back(p * m + r, idx[static_cast<size_t>(c)], jac(r, c));
   }
@@ -109,8 +102,8 @@ void ComputedTorqueLaw::hessian(const Eigen::VectorXd& x, const Eigen::VectorXd&
   const int m = residual_.rows();
   Eigen::MatrixXd hess(kBlocks * m, kBlocks * m);
   for (int p = 0; p < static_cast<int>(indices_.size()); ++p) {
-    residual_.hessian(gather(x, p), lambda.segment(p * m, m), hess);
     const std::vector<int>& idx = indices_[static_cast<size_t>(p)];
+    residual_.hessian(gather(x, idx), lambda.segment(p * m, m), hess);
     for (const auto& [r, c] : pattern_.hessian) {  // r >= c in y; the NLP's lower triangle
       const int a = idx[static_cast<size_t>(r)], b = idx[static_cast<size_t>(c)];
       out.emplace_back(std::max(a, b), std::min(a, b), hess(r, c));

@@ -57,8 +57,6 @@ class ComputedTorqueLaw : public ConstraintSet {
   }
 
  private:
-  Eigen::VectorXd gather(const Eigen::VectorXd& x, int p) const;
-
   ComputedTorqueResidual residual_;
   PointPattern pattern_;                   // of the residual in y
   std::vector<std::vector<int>> indices_;  // per point: the NLP variables of y

@@ -38,18 +38,18 @@ class AutoDiffConstraint : public ConstraintSet {
   Eigen::VectorXd upperBounds() const override { return upper_; }
 
   void values(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> g) const override {
-    g = fn_(gather(x));
+    g = fn_(gather(x, indices_));
   }
 
   void jacobian(const Eigen::VectorXd& x, Triplets& out) const override {
-    const Eigen::MatrixXd jac = adJacobian(fn_, gather(x), rows());
+    const Eigen::MatrixXd jac = adJacobian(fn_, gather(x, indices_), rows());
     for (int r = 0; r < rows(); ++r)
       for (int c = 0; c < jac.cols(); ++c) out.emplace_back(r, indices_[c], jac(r, c));
   }
 
   void hessian(const Eigen::VectorXd& x, const Eigen::VectorXd& lambda,
                Triplets& out) const override {
-    const Eigen::MatrixXd h = adHessian(fn_, gather(x), lambda, nonlinear_);
+    const Eigen::MatrixXd h = adHessian(fn_, gather(x, indices_), lambda, nonlinear_);
     // Rows c < nonlinear hold every nonzero; emit each lower-triangle entry once.
     const int m = static_cast<int>(h.cols());
     for (int c = 0; c < nonlinear_; ++c)
@@ -61,11 +61,6 @@ class AutoDiffConstraint : public ConstraintSet {
   }
 
  private:
-  Eigen::VectorXd gather(const Eigen::VectorXd& x) const {
-    Eigen::VectorXd y(static_cast<Eigen::Index>(indices_.size()));
-    for (size_t i = 0; i < indices_.size(); ++i) y(static_cast<Eigen::Index>(i)) = x(indices_[i]);
-    return y;
-  }
   std::vector<int> indices_;
   int nonlinear_;
   Fn fn_;

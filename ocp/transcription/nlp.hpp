@@ -27,6 +27,14 @@ using Triplets = std::vector<Eigen::Triplet<double>>;
 /// std::numeric_limits<double>::infinity().
 inline constexpr double kInf = 1e20;
 
+/// x[indices]: the values of a few variables of the NLP, in the order given (the arguments of a
+/// set that reads scattered variables: a link constraint, a law between two phases).
+inline Eigen::VectorXd gather(const Eigen::VectorXd& x, const std::vector<int>& indices) {
+  Eigen::VectorXd y(static_cast<Eigen::Index>(indices.size()));
+  for (size_t i = 0; i < indices.size(); ++i) y(static_cast<Eigen::Index>(i)) = x(indices[i]);
+  return y;
+}
+
 /// The phase tag of sets and blocks that belong to no single phase (they link phases).
 inline constexpr const char* kLinkPhase = "link";
 
