@@ -50,9 +50,7 @@ class StageSolver {
   }
 
   ContinuationResult result(GaitProblem problem, SolveResult last) {
-    last.iterations = iterations_;
-    last.wall_time_s = wall_;
-    last.callback_time_s = callbacks_;
+    totals_.into(last);
     return {std::move(problem), std::move(last), std::move(stages_)};
   }
 
@@ -60,9 +58,7 @@ class StageSolver {
   SolveResult attempt(const GaitProblem& problem, const OcpConfig& config, double progress,
                       const SolverOptions& options, const WarmStart* start, const char* from) {
     SolveResult r = solveWithIpopt(problem.nlp, options, start);
-    iterations_ += r.iterations;
-    wall_ += r.wall_time_s;
-    callbacks_ += r.callback_time_s;
+    totals_.add(r);
     ContinuationStage s{progress,
                         pathParameters(config),
                         {},
@@ -88,8 +84,7 @@ class StageSolver {
   const OcpConfig& target_;
   const std::function<void(const ContinuationStage&)>& report_;
   std::vector<ContinuationStage> stages_;
-  int iterations_ = 0;
-  double wall_ = 0, callbacks_ = 0;
+  SolveTotals totals_;
 };
 
 /// `config` with each free phase duration where the solution `x` of `problem` put it, so that

@@ -65,13 +65,10 @@ GaitSolution solveGait(const dynamics::Model& model, OcpConfig config,
                        const gaits::Trajectory& guess,
                        const std::function<void(const MeshRound&)>& on_round) {
   GaitSolution s = firstRound(model, config, guess);
-  double wall = 0, callbacks = 0;
-  int iterations = 0;
+  SolveTotals totals;
   for (int round = 0;; ++round) {
     if (round > 0) s.result = solveWithIpopt(s.problem.nlp, warmStarted(config.solver));
-    wall += s.result.wall_time_s;
-    callbacks += s.result.callback_time_s;
-    iterations += s.result.iterations;
+    totals.add(s.result);
     std::vector<Eigen::VectorXd> errors;
     std::vector<double> all;
     for (const Phase* phase : s.problem.phases()) {
@@ -87,9 +84,7 @@ GaitSolution solveGait(const dynamics::Model& model, OcpConfig config,
     s.problem = buildGaitProblem(
         model, config, reconstructDense(s.problem, model, s.result.x, kRefinementResampleHz));
   }
-  s.result.wall_time_s = wall;
-  s.result.callback_time_s = callbacks;
-  s.result.iterations = iterations;
+  totals.into(s.result);
   return s;
 }
 

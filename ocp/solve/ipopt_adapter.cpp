@@ -13,6 +13,7 @@
 #include <IpSolveStatistics.hpp>
 #include <IpTNLP.hpp>
 
+#include "ocp/solve/kkt/kkt_statistics.hpp"
 #include "ocp/solve/kkt/pardiso_interface.hpp"
 
 namespace gaitopt::ocp {
@@ -35,10 +36,11 @@ class CallbackTimer {
   Clock::time_point start_;
 };
 
-/// Counts the numerical factorizations of the KKT matrix: Ipopt 3.11 has no counter, but its
-/// MUMPS interface announces each one on the linear-algebra journal ("Calling MUMPS-2 for
-/// numerical factorization ..."). Only that category at that level reaches this journal, and
-/// only the format string is inspected (nothing is formatted).
+/// Counts MUMPS's numerical factorizations of the KKT matrix with `linear_solver: mumps`: Ipopt
+/// 3.11 has no counter, but its MUMPS interface announces each one on the linear-algebra journal
+/// ("Calling MUMPS-2 for numerical factorization ..."). Only that category at that level reaches
+/// this journal, and only the format string is inspected (nothing is formatted). gaitopt's own
+/// KKT solver counts its factorizations itself (kkt_statistics.hpp).
 class FactorizationCounter : public Ipopt::Journal {
  public:
   explicit FactorizationCounter(int& count)
@@ -51,9 +53,7 @@ class FactorizationCounter : public Ipopt::Journal {
   void PrintImpl(Ipopt::EJournalCategory, Ipopt::EJournalLevel, const char*) override {}
   void PrintfImpl(Ipopt::EJournalCategory, Ipopt::EJournalLevel, const char* format,
                   va_list) override {
-    if (std::strstr(format, "Calling MUMPS-2 for numerical factorization") != nullptr ||
-        std::strstr(format, "Calling Pardiso for factorization") != nullptr)
-      ++count_;
+    if (std::strstr(format, "Calling MUMPS-2 for numerical factorization") != nullptr) ++count_;
   }
   void FlushBufferImpl() override {}
 
@@ -215,8 +215,10 @@ class Adapter : public Ipopt::TNLP {
   }
 
   bool intermediate_callback(Ipopt::AlgorithmMode, Index iter, Number obj, Number inf_pr,
-                             Number inf_du, Number, Number, Number, Number, Number, Index,
-                             const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
+                             Number inf_du, Number, Number, Number regularization, Number, Number,
+                             Index, const Ipopt::IpoptData*,
+                             Ipopt::IpoptCalculatedQuantities*) override {
+    if (regularization > 0) ++result_.profile.inertia_corrections;
     if (iterate_.size() == nlp_.variables()) {
       const CallbackTimer t(result_.callback_time_s);
       offerIterate(result_.best_iterate, iterate_,
@@ -346,10 +348,17 @@ SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options, const W
   // directory would override these settings unseen by summary.json.
   if (app->Initialize(std::string()) != Ipopt::Solve_Succeeded)
     throw std::runtime_error("Ipopt could not be initialised (check the solver options)");
-  app->Jnlst()->AddJournal(new FactorizationCounter(result.profile.factorizations));
+  if (options.linear_solver == "mumps")
+    app->Jnlst()->AddJournal(new FactorizationCounter(result.profile.factorizations));
   LeastViolation best;
   Ipopt::SmartPtr<Ipopt::TNLP> adapter = new Adapter(nlp, result, best, options, warm);
+  const kkt::KktStatistics before = kkt::threadKktStatistics();
   const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(adapter);
+  if (options.linear_solver == "ldl") {
+    const kkt::KktStatistics& after = kkt::threadKktStatistics();
+    result.profile.factorizations = after.factorizations - before.factorizations;
+    result.profile.mumps_fallbacks = after.mumps_fallbacks - before.mumps_fallbacks;
+  }
   if (status == Ipopt::Invalid_Option && options.linear_solver == "ldl")
     throw std::runtime_error(
         fmt::format("Ipopt could not load gaitopt's KKT solver {} (is it beside the program?)",
@@ -370,6 +379,24 @@ SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options, const W
   keepLeastViolated(result, best);
   result.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();
   return result;
+}
+
+void SolveTotals::add(const SolveResult& r) {
+  iterations += r.iterations;
+  wall_time_s += r.wall_time_s;
+  callback_time_s += r.callback_time_s;
+  factorizations += r.profile.factorizations;
+  mumps_fallbacks += r.profile.mumps_fallbacks;
+  inertia_corrections += r.profile.inertia_corrections;
+}
+
+void SolveTotals::into(SolveResult& r) const {
+  r.iterations = iterations;
+  r.wall_time_s = wall_time_s;
+  r.callback_time_s = callback_time_s;
+  r.profile.factorizations = factorizations;
+  r.profile.mumps_fallbacks = mumps_fallbacks;
+  r.profile.inertia_corrections = inertia_corrections;
 }
 
 SolverOptions warmStarted(SolverOptions options) {

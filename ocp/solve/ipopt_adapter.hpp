@@ -47,7 +47,17 @@ struct SolverOptions {
 
 /// Where a solve's time went and how large its linear systems were (bench/solve_profile.cpp).
 struct SolveProfile {
-  int factorizations = 0;           ///< numerical factorizations of the KKT matrix
+  /// Numerical factorizations of the KKT matrix: counted by gaitopt's KKT solver with
+  /// `linear_solver: ldl`; with "mumps" from Ipopt's MUMPS interface's journal, the only place
+  /// Ipopt 3.11 announces them.
+  int factorizations = 0;
+  /// Of those, the ones MUMPS made for gaitopt's KKT solver (ocp/solve/kkt/kkt_statistics.hpp);
+  /// 0 with "mumps".
+  int mumps_fallbacks = 0;
+  /// Iterations whose step needed Ipopt's inertia correction (a Hessian regularization
+  /// delta_w > 0, Waechter and Biegler 2006 sec. 3.1): a linear solver that miscounts the
+  /// inertia raises it.
+  int inertia_corrections = 0;
   double sparsity_time_s = 0;       ///< recording the Jacobian and Hessian patterns
   double linear_solver_time_s = 0;  ///< factorizations and back-solves of the KKT system (wall)
   /// The augmented system Ipopt factorises: variables, constraint rows and one slack per
@@ -90,6 +100,17 @@ struct SolveResult {
   double wall_time_s = 0;
   double callback_time_s = 0;  ///< time spent evaluating the Nlp (ours, not Ipopt's)
   SolveProfile profile;
+};
+
+/// The counts and times of several Ipopt solves (continuation stages, mesh rounds) summed.
+struct SolveTotals {
+  int iterations = 0;
+  double wall_time_s = 0, callback_time_s = 0;
+  int factorizations = 0, mumps_fallbacks = 0, inertia_corrections = 0;
+
+  void add(const SolveResult& r);
+  /// Writes the sums over `r`'s own counts and times.
+  void into(SolveResult& r) const;
 };
 
 /// A primal-dual start: Ipopt begins at x with these multipliers (its warm_start_init_point),

@@ -75,6 +75,16 @@ nlohmann::ordered_json pathParametersJson(const PathParameters& p) {
             {"cost_of_transport", p.cost.cost_of_transport}}}};
 }
 
+/// What the KKT solves of the whole solve (every stage and round) cost, as the solvers count it.
+nlohmann::ordered_json linearSolverJson(const SolverOptions& options, const SolveProfile& p) {
+  return {{"linear_solver", options.linear_solver},
+          {"factorizations", p.factorizations},
+          {"mumps_fallbacks", p.mumps_fallbacks},
+          {"mumps_fallback_share",
+           p.factorizations > 0 ? static_cast<double>(p.mumps_fallbacks) / p.factorizations : 0.0},
+          {"inertia_corrections", p.inertia_corrections}};
+}
+
 /// The continuation's settings and the path it took, one entry per Ipopt solve.
 nlohmann::ordered_json continuationJson(const ContinuationOptions& o,
                                         const std::vector<ContinuationStage>& path) {
@@ -259,6 +269,7 @@ nlohmann::ordered_json solutionSummary(const GaitResultOptions& o, const dynamic
   if (config.continuation.enabled)
     summary["continuation"] = continuationJson(config.continuation, solution.continuation);
   summary["solver"] = solverSettings(config);
+  summary["kkt"] = linearSolverJson(config.solver, solution.result.profile);
   return summary;
 }
 

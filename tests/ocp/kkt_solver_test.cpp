@@ -14,6 +14,7 @@
 #include "ocp/solve/kkt/block_ldl.hpp"
 #include "ocp/solve/kkt/kkt_pairs.hpp"
 #include "ocp/solve/kkt/kkt_solver.hpp"
+#include "ocp/solve/kkt/kkt_statistics.hpp"
 
 extern "C" {
 void pardisoinit(void* pt, const int* mtype, const int* solver, int* iparm, double* dparm,
@@ -211,8 +212,12 @@ TEST(KktSolver, AZeroStaticPivotIsMumpssToFactorize) {
   const AugmentedSystem a = randomAugmentedSystem(seed);
   const Lower l = lowerOf(a.dense);
   KktSolver solver(l.pattern);
+  const KktStatistics before = threadKktStatistics();
   solver.factorize(l.values.data());
   EXPECT_EQ(solver.fallbacks(), 1);
+  // What summary.json's kkt record reads (ocp/solve/ipopt_adapter.cpp): this thread's counts.
+  EXPECT_EQ(threadKktStatistics().factorizations - before.factorizations, 1);
+  EXPECT_EQ(threadKktStatistics().mumps_fallbacks - before.mumps_fallbacks, 1);
   EXPECT_EQ(solver.negativeEigenvalues(), negativeEigenvalues(a.dense));
   const Eigen::VectorXd b = Eigen::VectorXd::Random(a.n());
   Eigen::VectorXd x = b;

@@ -65,6 +65,14 @@ TEST(SolutionSummary, ImpactLossIsTheKineticEnergyTheImpactMapTakes) {
   EXPECT_EQ(summary.at("converged"), true);
   EXPECT_EQ(summary.at("nlp").at("segments"), std::vector<int>{4});
   EXPECT_EQ(summary.at("between_nodes").at("rate_hz"), 200.0);
+  // The KKT record holds the solve's own counts: at least one factorization per iteration.
+  const auto& kkt = summary.at("kkt");
+  EXPECT_EQ(kkt.at("linear_solver"), r.config.solver.linear_solver);
+  EXPECT_EQ(kkt.at("factorizations"), s.result.profile.factorizations);
+  EXPECT_GE(kkt.at("factorizations").get<int>(), s.result.iterations);
+  EXPECT_EQ(
+      kkt.at("mumps_fallback_share").get<double>(),
+      static_cast<double>(s.result.profile.mumps_fallbacks) / s.result.profile.factorizations);
 }
 
 /// Three SSP knots of RABBIT standing still, with the given ground forces at B.

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "ocp/solve/kkt/kkt_pairs.hpp"
+#include "ocp/solve/kkt/kkt_statistics.hpp"
 
 namespace gaitopt::ocp::kkt {
 
@@ -63,6 +64,7 @@ void KktSolver::analyse(const double* values) {
   for (const PivotPair& p : pairs) paired_[p.first] = paired_[p.second] = 1;
   ldl_ = std::make_unique<BlockLdl>(pattern_, pairs);
   ++analyses_;
+  ++threadKktStatistics().analyses;
 }
 
 bool KktSolver::lostADiagonal(const double* values) const {
@@ -72,6 +74,7 @@ bool KktSolver::lostADiagonal(const double* values) const {
 }
 
 void KktSolver::factorize(const double* values) {
+  ++threadKktStatistics().factorizations;
   if (!ldl_ || lostADiagonal(values)) analyse(values);
   ldl_->factorize(values, kTinyPivot * largestMagnitude(values, pattern_.nonZeros()));
   factor_ = Factor::kStatic;
@@ -89,6 +92,7 @@ void KktSolver::factorizeWithMumps(const double* values) {
   mumps_->factorize(values);
   factor_ = Factor::kMumps;
   ++fallbacks_;
+  ++threadKktStatistics().mumps_fallbacks;
 }
 
 int KktSolver::negativeEigenvalues() const {
