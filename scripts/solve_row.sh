@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # One `gaitopt optimize` of CONFIG, written to OUT (OUT.failed if it fails), as a CSV row:
 # the LABELs, then the solve's status, iterations, cost and wall time (summary.json's
-# wall_time_s, the solve without writing the folder). The row for the solver comparisons:
+# wall_time_s, the solve without writing the folder), then its KKT factorizations, how many of
+# them MUMPS made for gaitopt's KKT solver, and Ipopt's inertia corrections (summary.json's kkt). The row for the solver comparisons:
 # scripts/linear_solver_compare.sh, scripts/solver_robustness.sh.
 # Usage: scripts/solve_row.sh GAITOPT CONFIG OUT [LABEL ...]
 set -euo pipefail
@@ -21,5 +22,7 @@ rm -rf "$out" "$out.failed"
 import json, sys
 s = json.load(open(sys.argv[1]))
 labels = "".join(f"{label}," for label in sys.argv[2:])
-print(f"{labels}{s['status']},{s['iterations']},{s['cost']!r},{s['wall_time_s']:.4f}")
+k = s["kkt"]
+print(f"{labels}{s['status']},{s['iterations']},{s['cost']!r},{s['wall_time_s']:.4f},"
+      f"{k['factorizations']},{k['mumps_fallbacks']},{k['inertia_corrections']}")
 PY

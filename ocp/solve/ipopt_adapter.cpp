@@ -355,9 +355,8 @@ SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options, const W
   const kkt::KktStatistics before = kkt::threadKktStatistics();
   const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(adapter);
   if (options.linear_solver == "ldl") {
-    const kkt::KktStatistics& after = kkt::threadKktStatistics();
-    result.profile.factorizations = after.factorizations - before.factorizations;
-    result.profile.mumps_fallbacks = after.mumps_fallbacks - before.mumps_fallbacks;
+    result.profile.ldl = kkt::threadKktStatistics() - before;
+    result.profile.factorizations = result.profile.ldl.factorizations;
   }
   if (status == Ipopt::Invalid_Option && options.linear_solver == "ldl")
     throw std::runtime_error(
@@ -386,7 +385,7 @@ void SolveTotals::add(const SolveResult& r) {
   wall_time_s += r.wall_time_s;
   callback_time_s += r.callback_time_s;
   factorizations += r.profile.factorizations;
-  mumps_fallbacks += r.profile.mumps_fallbacks;
+  ldl += r.profile.ldl;
   inertia_corrections += r.profile.inertia_corrections;
 }
 
@@ -395,7 +394,7 @@ void SolveTotals::into(SolveResult& r) const {
   r.wall_time_s = wall_time_s;
   r.callback_time_s = callback_time_s;
   r.profile.factorizations = factorizations;
-  r.profile.mumps_fallbacks = mumps_fallbacks;
+  r.profile.ldl = ldl;
   r.profile.inertia_corrections = inertia_corrections;
 }
 

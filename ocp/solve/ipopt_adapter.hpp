@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include "ocp/solve/kkt/kkt_statistics.hpp"
 #include "ocp/transcription/nlp.hpp"
 
 namespace gaitopt::ocp {
@@ -51,9 +52,9 @@ struct SolveProfile {
   /// `linear_solver: ldl`; with "mumps" from Ipopt's MUMPS interface's journal, the only place
   /// Ipopt 3.11 announces them.
   int factorizations = 0;
-  /// Of those, the ones MUMPS made for gaitopt's KKT solver (ocp/solve/kkt/kkt_statistics.hpp);
-  /// 0 with "mumps".
-  int mumps_fallbacks = 0;
+  /// What gaitopt's KKT solver counted (ocp/solve/kkt/kkt_statistics.hpp): its factorizations
+  /// and those MUMPS made for it, by reason; all 0 with "mumps".
+  kkt::KktStatistics ldl;
   /// Iterations whose step needed Ipopt's inertia correction (a Hessian regularization
   /// delta_w > 0, Waechter and Biegler 2006 sec. 3.1): a linear solver that miscounts the
   /// inertia raises it.
@@ -106,7 +107,8 @@ struct SolveResult {
 struct SolveTotals {
   int iterations = 0;
   double wall_time_s = 0, callback_time_s = 0;
-  int factorizations = 0, mumps_fallbacks = 0, inertia_corrections = 0;
+  int factorizations = 0, inertia_corrections = 0;
+  kkt::KktStatistics ldl;
 
   void add(const SolveResult& r);
   /// Writes the sums over `r`'s own counts and times.

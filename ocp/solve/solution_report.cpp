@@ -77,12 +77,17 @@ nlohmann::ordered_json pathParametersJson(const PathParameters& p) {
 
 /// What the KKT solves of the whole solve (every stage and round) cost, as the solvers count it.
 nlohmann::ordered_json linearSolverJson(const SolverOptions& options, const SolveProfile& p) {
-  return {{"linear_solver", options.linear_solver},
-          {"factorizations", p.factorizations},
-          {"mumps_fallbacks", p.mumps_fallbacks},
-          {"mumps_fallback_share",
-           p.factorizations > 0 ? static_cast<double>(p.mumps_fallbacks) / p.factorizations : 0.0},
-          {"inertia_corrections", p.inertia_corrections}};
+  return {
+      {"linear_solver", options.linear_solver},
+      {"factorizations", p.factorizations},
+      {"mumps_fallbacks", p.ldl.mumps_fallbacks},
+      {"mumps_fallback_share",
+       p.factorizations > 0 ? static_cast<double>(p.ldl.mumps_fallbacks) / p.factorizations : 0.0},
+      {"fallbacks_by_reason",
+       {{"zero_pivot", p.ldl.zero_pivot_fallbacks},
+        {"inertia", p.ldl.inertia_fallbacks},
+        {"inexact_solve", p.ldl.inexact_fallbacks}}},
+      {"inertia_corrections", p.inertia_corrections}};
 }
 
 /// The continuation's settings and the path it took, one entry per Ipopt solve.

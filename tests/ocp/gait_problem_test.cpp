@@ -89,7 +89,7 @@ TEST_F(RabbitSolution, GaitoptsKktSolverFollowsMumpsToTheSameOptimum) {
   // Two counters of the same path: our solver's own (kkt_statistics.hpp) and Ipopt's MUMPS
   // journal; none of our factorizations went to MUMPS, and Ipopt corrected the same inertias.
   EXPECT_EQ(result_->profile.factorizations, mumps.profile.factorizations);
-  EXPECT_EQ(result_->profile.mumps_fallbacks, 0);
+  EXPECT_EQ(result_->profile.ldl.mumps_fallbacks, 0);
   EXPECT_EQ(result_->profile.inertia_corrections, mumps.profile.inertia_corrections);
   EXPECT_NEAR(result_->cost, mumps.cost, 1e-8 * mumps.cost);
   EXPECT_LT((result_->x - mumps.x).lpNorm<Eigen::Infinity>(), 1e-6);

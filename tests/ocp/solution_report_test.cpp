@@ -72,7 +72,7 @@ TEST(SolutionSummary, ImpactLossIsTheKineticEnergyTheImpactMapTakes) {
   EXPECT_GE(kkt.at("factorizations").get<int>(), s.result.iterations);
   EXPECT_EQ(
       kkt.at("mumps_fallback_share").get<double>(),
-      static_cast<double>(s.result.profile.mumps_fallbacks) / s.result.profile.factorizations);
+      static_cast<double>(s.result.profile.ldl.mumps_fallbacks) / s.result.profile.factorizations);
 }
 
 /// Three SSP knots of RABBIT standing still, with the given ground forces at B.

@@ -83,8 +83,14 @@ void KktSolver::factorize(const double* values) {
   // nonconvex W and regularises it; from static pivots it can be a small pivot's rounding, and
   // with Ipopt's finite-difference Jacobian on RABBIT it was, at every iteration (delta_w 1e4,
   // 500 iterations, where MUMPS needs none and converges in 35).
-  if (ldl_->perturbedPivots() > 0 || ldl_->negativeEigenvalues() != pattern_.n - constraintStart_)
-    factorizeWithMumps(values);  // a singular A goes to Ipopt
+  KktStatistics& counts = threadKktStatistics();
+  if (ldl_->perturbedPivots() > 0)
+    ++counts.zero_pivot_fallbacks;
+  else if (ldl_->negativeEigenvalues() != pattern_.n - constraintStart_)
+    ++counts.inertia_fallbacks;
+  else
+    return;
+  factorizeWithMumps(values);  // a singular A goes to Ipopt
 }
 
 void KktSolver::factorizeWithMumps(const double* values) {
@@ -133,6 +139,7 @@ int KktSolver::solve(const double* values, double* rhs, int refinementSteps) {
   const double ratio =
       solveAndRefine(values, rhs, std::max(refinementSteps, kOwnRefinementSteps), steps);
   if (ratio <= kResidualRatioMax || factor_ != Factor::kStatic) return steps;
+  ++threadKktStatistics().inexact_fallbacks;
   try {
     factorizeWithMumps(values);
   } catch (const SingularMatrix&) {

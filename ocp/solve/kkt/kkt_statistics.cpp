@@ -2,6 +2,26 @@
 
 namespace gaitopt::ocp::kkt {
 
+KktStatistics& operator+=(KktStatistics& a, const KktStatistics& b) {
+  a.analyses += b.analyses;
+  a.factorizations += b.factorizations;
+  a.mumps_fallbacks += b.mumps_fallbacks;
+  a.zero_pivot_fallbacks += b.zero_pivot_fallbacks;
+  a.inertia_fallbacks += b.inertia_fallbacks;
+  a.inexact_fallbacks += b.inexact_fallbacks;
+  return a;
+}
+
+KktStatistics operator-(KktStatistics a, const KktStatistics& b) {
+  a.analyses -= b.analyses;
+  a.factorizations -= b.factorizations;
+  a.mumps_fallbacks -= b.mumps_fallbacks;
+  a.zero_pivot_fallbacks -= b.zero_pivot_fallbacks;
+  a.inertia_fallbacks -= b.inertia_fallbacks;
+  a.inexact_fallbacks -= b.inexact_fallbacks;
+  return a;
+}
+
 KktStatistics& threadKktStatistics() {
   thread_local KktStatistics statistics;
   return statistics;

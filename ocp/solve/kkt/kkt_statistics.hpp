@@ -13,7 +13,14 @@ struct KktStatistics {
   /// Of those, the ones MUMPS made in place of the static pivots' (a zero pivot or a wrong
   /// inertia), plus the re-factorizations by MUMPS of a solve the static pivots left inexact.
   int mumps_fallbacks = 0;
+  /// Why, one count per fallback: a zero static pivot, an inertia other than a KKT matrix's, a
+  /// solve that refinement left inexact.
+  int zero_pivot_fallbacks = 0, inertia_fallbacks = 0, inexact_fallbacks = 0;
 };
+
+KktStatistics& operator+=(KktStatistics& a, const KktStatistics& b);
+/// The counts of what happened between two readings b (before) and a (after).
+KktStatistics operator-(KktStatistics a, const KktStatistics& b);
 
 /// This thread's counts since it started; a solve reports the difference.
 KktStatistics& threadKktStatistics();
