@@ -1,0 +1,150 @@
+#!/usr/bin/python3
+"""The cost-robustness front of the gait designed with model variants (scripts/ensemble_front.sh).
+
+Usage: ensemble_front_chart.py OUT_DIR
+OUT_DIR holds solves.csv (width_percent, "default" for the default optimum or an ensemble width W
+[%], then converged, cost and the posture in degrees) and walks.csv (width_percent, ground,
+controller, plant_mass, steps, ...; scripts/walk_row.py). Writes, printing their paths:
+  OUT_DIR/front.csv  one row per width: convergence, cost, its ratio to the default optimum's,
+                     posture (degrees) and, per ground and controller, the plant-mass interval
+                     walked 20 steps without a gap around the nominal (empty when the nominal fails)
+  OUT_DIR/front.md   the same as a table
+  OUT_DIR/front.png  cost ratio against the width of each interval, one line per ground and
+                     controller, the points labelled with the ensemble width
+A missing or malformed input ends the script with "error: <file>: ..." and exit code 1.
+"""
+import os
+
+import plot_io
+import plot_style as style
+from plot_io import InputError
+
+GROUNDS = ["rigid", "lcp", "dart"]
+CONTROLLERS = {"computed_torque": "computed torque", "mu_sliding_mode": "Mu's sliding mode"}
+POSTURE = ["max_torso_lean", "max_stance_knee_flexion", "max_swing_knee_flexion"]
+
+
+def interval(walks):
+    """(lowest, highest) plant mass of the run of 20-step walks that holds 1.0, or None."""
+    masses = sorted(walks)
+    if 1.0 not in walks or walks[1.0] < 20:
+        return None
+    i = j = masses.index(1.0)
+    while i > 0 and walks[masses[i - 1]] == 20:
+        i -= 1
+    while j + 1 < len(masses) and walks[masses[j + 1]] == 20:
+        j += 1
+    return masses[i], masses[j]
+
+
+def read_walks(path):
+    """{(width, ground, controller): {plant mass: steps}}"""
+    header, rows = plot_io.read_rows(path, "walk table")
+    plot_io.require_columns(path, header, ["width_percent", "ground", "controller", "plant_mass",
+                                           "steps"])
+    col = {name: header.index(name) for name in header}
+    walks = {}
+    for line, row in enumerate(rows, start=2):
+        try:
+            key = (int(row[col["width_percent"]]), row[col["ground"]], row[col["controller"]])
+            walks.setdefault(key, {})[float(row[col["plant_mass"]])] = int(row[col["steps"]])
+        except (ValueError, IndexError) as e:
+            raise InputError(f"{path}: line {line}: {e}") from None
+    return walks
+
+
+def read_solves(path):
+    """(default optimum's cost, {width: {converged, cost, posture...}})"""
+    header, rows = plot_io.read_rows(path, "solve table", min_rows=2)
+    plot_io.require_columns(path, header, ["width_percent", "converged", "cost", *POSTURE])
+    col = {name: header.index(name) for name in header}
+    default, widths = None, {}
+    for line, row in enumerate(rows, start=2):
+        try:
+            s = {"converged": row[col["converged"]] == "1", "cost": float(row[col["cost"]])}
+            s.update({k: float(row[col[k]]) if row[col[k]] else None for k in POSTURE})
+            if row[col["width_percent"]] == "default":
+                default = s["cost"]
+            else:
+                widths[int(row[col["width_percent"]])] = s
+        except (ValueError, IndexError) as e:
+            raise InputError(f"{path}: line {line}: {e}") from None
+    if default is None:
+        raise InputError(f"{path}: no row of the default optimum (width_percent 'default')")
+    return default, dict(sorted(widths.items()))
+
+
+def rows_of(widths, walks, default_cost):
+    rows = []
+    for width, s in widths.items():
+        row = {"width_percent": width, "converged": s["converged"], "cost": s["cost"],
+               "cost_ratio": s["cost"] / default_cost}
+        row.update({k: s[k] for k in POSTURE})
+        for ground in GROUNDS:
+            for controller in CONTROLLERS:
+                row[(ground, controller)] = interval(walks.get((width, ground, controller), {}))
+        rows.append(row)
+    return rows
+
+
+def fmt_interval(i):
+    if i is None:
+        return ""
+    return f"{i[0]:g} only" if i[0] == i[1] else f"{i[0]:g}-{i[1]:g}"
+
+
+def write_tables(rows, out):
+    keys = [(g, c) for g in GROUNDS for c in CONTROLLERS]
+    names = [f"{g}_{c}" for g, c in keys]
+    with open(os.path.join(out, "front.csv"), "w") as f:
+        f.write(",".join(["width_percent", "converged", "cost", "cost_ratio", *POSTURE, *names])
+                + "\n")
+        for r in rows:
+            posture = ["" if r[k] is None else f"{r[k]:.3g}" for k in POSTURE]
+            f.write(",".join([str(r["width_percent"]), str(int(r["converged"])), f"{r['cost']:.6g}",
+                              f"{r['cost_ratio']:.4g}", *posture,
+                              *[fmt_interval(r[k]) for k in keys]]) + "\n")
+    with open(os.path.join(out, "front.md"), "w") as f:
+        f.write("| copies ±W % | cost (× default) | torso, stance knee, swing knee [deg] | "
+                + " | ".join(f"{g}: {CONTROLLERS[c]}" for g, c in keys) + " |\n")
+        f.write("|---|---|---|" + "---|" * len(keys) + "\n")
+        for r in rows:
+            posture = ", ".join("—" if r[k] is None else f"{r[k]:.1f}" for k in POSTURE)
+            cost = f"{r['cost']:.1f} ({r['cost_ratio']:.2f})" + ("" if r["converged"] else
+                                                                 ", not converged")
+            cells = [fmt_interval(r[k]) or "falls at ×1" for k in keys]
+            f.write(f"| {r['width_percent']} | {cost} | {posture} | " + " | ".join(cells) + " |\n")
+
+
+def draw(rows, path):
+    plt = style.pyplot()
+    fig, axes = plt.subplots(1, len(CONTROLLERS), figsize=(9, 3.6), sharey=True)
+    converged = [r for r in rows if r["converged"]]
+    for ax, (controller, label) in zip(axes, CONTROLLERS.items()):
+        for ground, marker in zip(GROUNDS, "osD"):
+            spans = [(r["cost_ratio"], 0.0 if r[(ground, controller)] is None else
+                      r[(ground, controller)][1] - r[(ground, controller)][0], r["width_percent"])
+                     for r in converged]
+            ax.plot([s[1] for s in spans], [s[0] for s in spans], marker=marker, label=ground)
+            for ratio, span, width in spans:
+                ax.annotate(f"±{width}", (span, ratio), fontsize=7, xytext=(3, 3),
+                            textcoords="offset points")
+        style.finish(ax, "plant-mass interval walked 20 steps (width)", "cost / default optimum's",
+                     title=label)
+    fig.suptitle("Ensemble widths: cost against the mass interval walked (points: copies ±W %)",
+                 fontsize=9)
+    fig.tight_layout()
+    style.save(fig, path)
+
+
+def main(out):
+    default, widths = read_solves(os.path.join(out, "solves.csv"))
+    rows = rows_of(widths, read_walks(os.path.join(out, "walks.csv")), default)
+    write_tables(rows, out)
+    draw(rows, os.path.join(out, "front.png"))
+    for name in ("front.csv", "front.md", "front.png"):
+        print(os.path.join(out, name))
+
+
+if __name__ == "__main__":
+    plot_io.run_main(main, __doc__)
