@@ -135,7 +135,7 @@ Run solveOnce(const Problem& p, const Lever& lever, const std::string& out_dir) 
   const double solve_gait = since(t);
   r.mumps = bench::mumpsCalls();
   std::filesystem::create_directories(out_dir);
-  ocp::writeGaitResult({path, 1000, {}}, model, config, s, nullptr, out_dir);
+  ocp::writeGaitResult({path, 1000, {}, {}}, model, config, s, nullptr, out_dir);
   r.write = since(t);
   r.total = std::chrono::duration<double>(t - start).count();
   r.cpu = cpuSeconds() - cpu_start;

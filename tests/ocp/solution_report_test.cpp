@@ -51,7 +51,8 @@ TEST(SolutionSummary, ImpactLossIsTheKineticEnergyTheImpactMapTakes) {
   const GaitSolution& s = r.solution;
   ASSERT_TRUE(s.result.success) << s.result.status;
   const gaits::Trajectory dense = reconstructDense(s.problem, r.model, s.result.x, 200);
-  const auto summary = solutionSummary({"cfg.yaml", 200, {}}, r.model, r.config, s, nullptr, dense);
+  const auto summary =
+      solutionSummary({"cfg.yaml", 200, {}, {}}, r.model, r.config, s, nullptr, dense);
   // Before the strike the stance tip B is pinned; after a single impact E is pinned and B lifts
   // off, so the energy after is that of the relabelled chain pinned at E.
   const gaits::Knot strike = reconstruct(s.problem, r.model, s.result.x).knots().back();
