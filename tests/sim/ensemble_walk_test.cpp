@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <memory>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,10 @@ struct Plant {
   const char* ground;
   double mass_error;
 };
+
+void PrintTo(const Plant& p, std::ostream* os) {
+  *os << p.ground << " ground, plant mass x" << 1 + p.mass_error;
+}
 
 WalkResult walkOn(const Solved& s, const Plant& p) {
   const dynamics::Model plant =
