@@ -49,8 +49,9 @@ std::array<double, 3> basePoint(const ocp::OcpConfig& base) {
   return {base.step_length / duration, base.step_length, base.slope};
 }
 
-LibraryConfig loadLibraryConfig(const std::string& path) {
-  const auto root = YamlReader::fromFile(path);
+LibraryConfig loadLibraryConfig(const std::string& path,
+                                const std::vector<config::Override>& overrides) {
+  const auto root = YamlReader::fromFile(path, overrides);
   root.allowOnly({"name", "description", "ocp", "grid"});
   LibraryConfig c;
   c.name = root.string("name");

@@ -27,7 +27,9 @@ struct LibraryConfig {
 /// The base problem's own point: speed = step_length / (SSP + DSP duration).
 std::array<double, 3> basePoint(const ocp::OcpConfig& base);
 
-/// @throws config::ConfigError naming file, key and expectation.
-LibraryConfig loadLibraryConfig(const std::string& path);
+/// The library of the config file `path`, with `overrides` (`--set KEY=VALUE`) in place of its
+/// values. @throws config::ConfigError naming file, key and expectation.
+LibraryConfig loadLibraryConfig(const std::string& path,
+                                const std::vector<config::Override>& overrides = {});
 
 }  // namespace gaitopt::library

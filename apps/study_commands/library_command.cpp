@@ -12,6 +12,7 @@
 #include "apps/command_runner.hpp"
 #include "apps/option_checks.hpp"
 #include "config/config_error.hpp"
+#include "config/overrides.hpp"
 #include "gaits/export/gait_summary.hpp"
 #include "io/exit_code.hpp"
 #include "io/output/output_folder.hpp"
@@ -91,12 +92,15 @@ library::Grid makeGrid(const library::LibraryConfig& config, const std::string& 
 }  // namespace
 
 void runLibrary(const LibraryOptions& o) {
-  library::LibraryConfig config = library::loadLibraryConfig(o.config_path);
+  std::vector<config::Override> overrides;
+  for (const std::string& text : o.sets) overrides.push_back(config::parseOverride(text));
+  library::LibraryConfig config = library::loadLibraryConfig(o.config_path, overrides);
   library::Grid grid = makeGrid(config, o.config_path);
-  const library::LibrarySetup setup{std::move(config),
-                                    std::move(grid),
-                                    io::normaliseOutPath(o.out_dir, "--out"),
-                                    {o.config_path, o.rate_hz, report::gaitPictures(o.plots), {}}};
+  const library::LibrarySetup setup{
+      std::move(config),
+      std::move(grid),
+      io::normaliseOutPath(o.out_dir, "--out"),
+      {o.config_path, o.rate_hz, report::gaitPictures(o.plots), o.sets}};
   const bool under_mpi = parallel::launchedByMpi();
   // No more worker processes than points.
   const int jobs =
@@ -137,6 +141,10 @@ void registerLibraryCommand(CLI::App& app) {
       ->check(quantityRange(config::kSampleRate))
       ->default_val(250);
   cmd->add_flag("--plots", o->plots, "Pictures of every point (slow; the chart is always drawn)");
+  cmd->add_option("--set", o->sets,
+                  "Replace one value of the library config, e.g. --set grid.speed=[0.4,0.6] "
+                  "(repeatable; checked as the file is, recorded in each point's summary.json)")
+      ->option_text("KEY=VALUE");
   cmd->add_flag("--quiet", o->quiet, "No line per point");
   cmd->footer(
       "Under MPI (mpirun -np N gaitopt library ...), rank 0 schedules and every rank solves; "

@@ -5,6 +5,7 @@
 /// nearest solved point, on every core, or across the ranks of `mpirun -np N gaitopt library
 /// ...`; resumable. Writes DIR/points/<point>/, DIR/index.csv, DIR/index.json and a chart.
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -18,6 +19,7 @@ struct LibraryOptions {
   double rate_hz = 250;
   bool plots = false;  ///< pictures of every point (the library chart is always drawn)
   bool quiet = false;
+  std::vector<std::string> sets;  ///< --set KEY=VALUE on the library config
 };
 
 void runLibrary(const LibraryOptions& options);

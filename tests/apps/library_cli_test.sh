@@ -3,7 +3,8 @@
 # 3 speeds x 1 step length all converge and are indexed; a rerun has nothing to do; a lost row
 # and a torn last line are solved again, and only they; a failed point is skipped on rerun and
 # solved with --retry-failed; a solve that cannot converge is listed with its status and
-# folder; another grid in the same folder and a bad config exit 2; `gaitopt interpolate`
+# folder; another grid in the same folder and a bad config exit 2; --set replaces a value of the
+# library config and is recorded; `gaitopt interpolate`
 # blends two solved points and refuses a query off the grid.
 # With a third argument `mpi`: instead, the same library on two MPI ranks gives the same rows
 # as on one process.
@@ -205,4 +206,19 @@ run library --config "$TMP/bad.yaml" --out "$TMP/bad"
 run library --config "$TMP/missing.yaml" --out "$TMP/bad"
 [[ $RC -eq 2 ]] && grep -q "missing.yaml" "$TMP/err" || fail "(g) missing: $(cat "$TMP/err")"
 [[ ! -e "$TMP/bad" ]] || fail "(g) a bad config created its folder"
+
+# (h) --set replaces a value of the library config, checked as the file is and recorded in each
+# point's summary.json; a bad value exits 2 naming --set and creates nothing.
+run library --config "$TMP/tiny.yaml" --set "grid.speed=[0.7]" --out "$TMP/set" --jobs 1 --quiet
+[[ $RC -eq 0 ]] || fail "(h) exited $RC: $(cat "$TMP/err")"
+check_json "(h) index.json" "$TMP/set/index.json" <<'PY'
+assert d["points_total"] == 1 and d["axes"]["speed"] == [0.7], d["axes"]
+PY
+check_json "(h) point summary" "$TMP/set/points/v0.700_L0.500_s+0.000/summary.json" <<'PY'
+assert d["config_overrides"] == ["grid.speed=[0.7]"], d.get("config_overrides")
+PY
+run library --config "$TMP/tiny.yaml" --set "grid.speed=fast" --out "$TMP/set_bad"
+[[ $RC -eq 2 ]] && grep -q "(--set grid.speed=fast).*key 'grid.speed'" "$TMP/err" ||
+  fail "(h) bad value: $RC $(cat "$TMP/err")"
+[[ ! -e "$TMP/set_bad" ]] || fail "(h) a bad --set created its folder"
 echo "library CLI: all checks passed"
