@@ -67,6 +67,12 @@ Override parseOverride(const std::string& text) {
   return {text.substr(0, eq), text.substr(eq + 1)};
 }
 
+std::vector<Override> parseOverrides(const std::vector<std::string>& texts) {
+  std::vector<Override> overrides;
+  for (const std::string& text : texts) overrides.push_back(parseOverride(text));
+  return overrides;
+}
+
 void applyOverrides(YAML::Node& root, const std::vector<Override>& overrides) {
   for (const Override& o : overrides) {
     YAML::Node value;

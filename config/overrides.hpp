@@ -20,6 +20,9 @@ struct Override {
 /// KEY=VALUE. @throws ConfigError naming --set when there is no '=', no key or no value.
 Override parseOverride(const std::string& text);
 
+/// parseOverride of each text, in order (a command's repeated --set).
+std::vector<Override> parseOverrides(const std::vector<std::string>& texts);
+
 /// Sets each override's value in the document `root`, creating missing mappings on the way
 /// (the reader then refuses keys it does not know). @throws ConfigError naming --set and the
 /// key when the path runs through a value that is not a mapping, or past a list's end.

@@ -40,12 +40,6 @@ ocp::GaitResultOptions resultOptions(const OptimizeOptions& o) {
   return {o.config_path, o.output.rate_hz, report::gaitPictures(o.output.plots), o.sets};
 }
 
-std::vector<config::Override> overridesOf(const OptimizeOptions& o) {
-  std::vector<config::Override> overrides;
-  for (const std::string& text : o.sets) overrides.push_back(config::parseOverride(text));
-  return overrides;
-}
-
 /// A failed solve goes to OUT.failed and never touches a previous good result in OUT.
 /// @throws io::CommandError with the exit code.
 [[noreturn]] void reportFailure(const OptimizeOptions& o, const std::string& out_dir,
@@ -60,7 +54,7 @@ std::vector<config::Override> overridesOf(const OptimizeOptions& o) {
 }  // namespace
 
 void runOptimize(const OptimizeOptions& o) {
-  ocp::OcpConfig config = ocp::loadOcpConfig(o.config_path, overridesOf(o));
+  ocp::OcpConfig config = ocp::loadOcpConfig(o.config_path, config::parseOverrides(o.sets));
   std::vector<std::string> inputs = ocp::ocpInputs(config);
   inputs.insert(inputs.end(), {o.config_path, o.warm_start});
   const io::OutputFolder out(o.output.out_dir, inputs);

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "apps/command_runner.hpp"
+#include "config/overrides.hpp"
 #include "dynamics/model_variation.hpp"
 #include "dynamics/robot_files/robot_config.hpp"
 #include "gaits/export/gait_summary.hpp"
@@ -21,7 +22,8 @@ namespace gaitopt::apps {
 void runPoly(const PolyOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const io::OutputFolder out(options.output.out_dir, {options.robot_path, options.gait_path});
-  const gaits::GaitParams params = gaits::loadGait(options.gait_path);
+  const gaits::GaitParams params =
+      gaits::loadGait(options.gait_path, config::parseOverrides(options.sets));
   // The gait's ground slope rotates gravity (dynamics/model.hpp).
   const dynamics::Model model =
       dynamics::withSlope(dynamics::loadRobot(options.robot_path), params.slope);
@@ -42,6 +44,7 @@ void runPoly(const PolyOptions& options) {
 
   auto summary = gaits::gaitSummary(traj, model, {options.gait_path, "designed", 0, elapsed, 0});
   summary.update(gaits::designJson(params, search));
+  if (!options.sets.empty()) summary["config_overrides"] = options.sets;
   size_t samples = 0;
   out.write([&](const std::string& dir) {
     samples = ocp::writeGaitFiles(dir, traj, model, options.output.rate_hz, summary,
@@ -68,6 +71,10 @@ void registerPolyCommand(CLI::App& app) {
       ->required()
       ->option_text("FILE");
   addOutputOptions(cmd, options->output);
+  cmd->add_option("--set", options->sets,
+                  "Replace one value of the gait config, e.g. --set step_length=0.3 (repeatable; "
+                  "checked as the file is, recorded in summary.json)")
+      ->option_text("KEY=VALUE");
   cmd->footer(
       "Exit codes: 0 ok, 2 bad input file or usage, 3 gait cannot be realised (a leg "
       "cannot reach), 1 other failure.");

@@ -92,9 +92,8 @@ library::Grid makeGrid(const library::LibraryConfig& config, const std::string& 
 }  // namespace
 
 void runLibrary(const LibraryOptions& o) {
-  std::vector<config::Override> overrides;
-  for (const std::string& text : o.sets) overrides.push_back(config::parseOverride(text));
-  library::LibraryConfig config = library::loadLibraryConfig(o.config_path, overrides);
+  library::LibraryConfig config =
+      library::loadLibraryConfig(o.config_path, config::parseOverrides(o.sets));
   library::Grid grid = makeGrid(config, o.config_path);
   const library::LibrarySetup setup{
       std::move(config),

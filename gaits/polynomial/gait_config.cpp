@@ -6,10 +6,10 @@
 
 namespace gaitopt::gaits {
 
-GaitParams loadGait(const std::string& path) {
+GaitParams loadGait(const std::string& path, const std::vector<config::Override>& overrides) {
   using config::inRange;
   using config::positive;
-  const auto root = config::YamlReader::fromFile(path);
+  const auto root = config::YamlReader::fromFile(path, overrides);
   root.allowOnly({"name", "description", "step_length", "ssp_duration", "dsp_duration",
                   "swing_apex", "hip", "torso_angle", "knee", "slope"});
   GaitParams p;

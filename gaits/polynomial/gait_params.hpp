@@ -4,7 +4,9 @@
 /// (configs/gaits/*.yaml). Mu's S_L is 2 * step_length (docs/design.md#conventions).
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "config/overrides.hpp"
 #include "gaits/polynomial/leg_ik.hpp"
 
 namespace gaitopt::gaits {
@@ -32,7 +34,8 @@ struct GaitParams {
   double speed() const { return step_length / duration(); }
 };
 
-/// Loads and validates configs/gaits/*.yaml. @throws config::ConfigError.
-GaitParams loadGait(const std::string& path);
+/// Loads and validates configs/gaits/*.yaml, with `overrides` (`--set KEY=VALUE`) in place of
+/// its values. @throws config::ConfigError.
+GaitParams loadGait(const std::string& path, const std::vector<config::Override>& overrides = {});
 
 }  // namespace gaitopt::gaits

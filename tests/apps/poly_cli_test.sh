@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# End-to-end checks of `gaitopt poly`: outputs, summary values and exit codes.
+# End-to-end checks of `gaitopt poly`: outputs, summary values, exit codes and --set.
 # Usage: poly_cli_test.sh <path to gaitopt binary> <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
@@ -55,4 +55,18 @@ grep -q "leg cannot reach" "$TMP/err" || fail "(c) message: $(cat "$TMP/err")"
 # (d) a knee-less robot is refused clearly.
 run poly --robot "$ROOT/configs/robots/compass_gait.yaml" --gait "$GAIT" --out "$TMP/cg" --no-plots
 [[ $RC -ne 0 ]] && grep -q "needs legs of two links" "$TMP/err" || fail "(d) $(cat "$TMP/err")"
+# (e) --set replaces a value of the gait config, recorded in summary.json; the same height as
+# (c) on the command line is refused the same way, and a bad value exits 2 naming the --set.
+run poly --robot "$ROBOT" --gait "$GAIT" --set step_length=0.3 --out "$TMP/set" --no-plots
+[[ $RC -eq 0 ]] || fail "(e) exited $RC: $(cat "$TMP/err")"
+check_json "(e) summary" "$TMP/set/summary.json" <<'PY'
+assert abs(d["step_length"] - 0.3) < 1e-12, d["step_length"]
+assert d["config_overrides"] == ["step_length=0.3"], d.get("config_overrides")
+PY
+run poly --robot "$ROBOT" --gait "$GAIT" --set hip.height=0.70 --out "$TMP/set_high" --no-plots
+[[ $RC -eq 3 ]] && grep -q "leg cannot reach" "$TMP/err" || fail "(e) high: $RC $(cat "$TMP/err")"
+run poly --robot "$ROBOT" --gait "$GAIT" --set step_length=long --out "$TMP/set_bad" --no-plots
+[[ $RC -eq 2 ]] && grep -q "(--set step_length=long).*key 'step_length'" "$TMP/err" ||
+  fail "(e) bad value: $RC $(cat "$TMP/err")"
+[[ ! -e "$TMP/set_bad" ]] || fail "(e) a bad --set created its folder"
 echo "poly CLI: all checks passed"
