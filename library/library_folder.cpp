@@ -74,6 +74,9 @@ void claimLibraryFolder(const LibrarySetup& s) {
   if (!s.config.base.guess_gait_path.empty())
     claim["guess_gait_fnv1a"] = io::fileFingerprint(s.config.base.guess_gait_path);
   claim["rate_hz"] = s.result.rate_hz;
+  // Values set on the command line change the library config without changing its file. Keyed
+  // only when given, so a folder made without them still resumes.
+  if (!s.result.config_overrides.empty()) claim["config_overrides"] = s.result.config_overrides;
   io::claimSettings(s.out_dir + "/library.json", claim);
 }
 

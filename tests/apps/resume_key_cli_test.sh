@@ -143,6 +143,7 @@ first_run library LBASE l/index.csv
 LIBRARY_KEYED=(
   "--config|lib_other.yaml|library_config_fnv1a"
   "--rate|500|rate_hz"
+  "--set|description=another|config_overrides"
 )
 LIBRARY_FREE=("${COMMON_FREE[@]}"
   "--jobs|2|threads: each point is solved alone, the same on any thread"
