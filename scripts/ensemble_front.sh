@@ -11,13 +11,8 @@
 # (scripts/plots/ensemble_front_chart.py OUT).
 # Usage: scripts/ensemble_front.sh BUILD_DIR OUT_DIR   (from the repository root; about 8 minutes)
 set -euo pipefail
-build=${1:?usage: $0 BUILD_DIR OUT_DIR}
-out=${2:?usage: $0 BUILD_DIR OUT_DIR}
-bin="$build/apps/gaitopt"
-[[ -x "$bin" ]] || { echo "error: $bin not built" >&2; exit 1; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-mkdir -p "$out"
+# shellcheck source=scripts/study_setup.sh
+source "$(dirname "$0")/study_setup.sh" "$@"  # build, out, bin, work
 # A copy of configs/ whose relative paths resolve (the solver is the shipped config's own).
 bash scripts/solver_configs.sh "$work/configs" mumps
 # One row of OUT/solves.csv from a gait folder's summary.json.
