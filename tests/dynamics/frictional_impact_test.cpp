@@ -20,14 +20,6 @@ using dynamics::FrictionalImpact;
 using dynamics::Model;
 using dynamics::TipImpact;
 
-/// A random posture with the swing tip moving down (and either way along the ground).
-std::pair<VecD, VecD> preImpact(const Model& m, std::mt19937& rng) {
-  const VecD theta = randomPosture(rng, m);
-  VecD dtheta = randomVec(rng, m.nLinks(), -2, 2);
-  if ((dynamics::pointJacobian(m.tipWeights(), theta) * dtheta)(1) > 0) dtheta = -dtheta;
-  return {theta, dtheta};
-}
-
 double kinetic(const Model& m, const VecD& theta, const VecD& dtheta, const Vec2d& base) {
   return dynamics::kineticEnergy<double>(m, theta, dtheta, base);
 }

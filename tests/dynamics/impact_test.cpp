@@ -15,16 +15,6 @@ namespace {
 
 using dynamics::Model;
 
-/// Pre-impact state: a random posture and rates with the swing tip moving down and forward.
-std::pair<VecD, VecD> preImpact(const Model& m, std::mt19937& rng) {
-  const VecD theta = randomPosture(rng, m);
-  VecD dtheta = randomVec(rng, m.nLinks(), -2, 2);
-  const Mat2Xd jac = dynamics::pointJacobian(m.tipWeights(), theta);
-  const Vec2d v = jac * dtheta;
-  if (v(1) > 0) dtheta = -dtheta;
-  return {theta, dtheta};
-}
-
 /// Floating-base impulse problem: mass dq = J^T P, J q+ = 0 for the given contact rows.
 std::pair<Eigen::VectorXd, Eigen::VectorXd> floatingImpact(const Model& m, const VecD& theta,
                                                            const VecD& dtheta, bool both) {

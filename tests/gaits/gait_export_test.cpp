@@ -24,6 +24,7 @@
 #include "gaits/polynomial/polynomial_gait.hpp"
 #include "gaits/trajectory/trajectory_csv.hpp"
 #include "support/fixtures.hpp"
+#include "support/text_fields.hpp"
 
 namespace gaitopt::test {
 namespace {
@@ -33,13 +34,6 @@ using gaits::Phase;
 using gaits::Trajectory;
 
 constexpr double kRate = 128;  // Hz: 0.6 * 128 = 76.8 and 0.7 * 128 = 89.6, both off the grid
-
-std::vector<std::string> split(const std::string& text, char sep) {
-  std::vector<std::string> parts;
-  std::stringstream in(text);
-  for (std::string part; std::getline(in, part, sep);) parts.push_back(part);
-  return parts;
-}
 
 nlohmann::json readJson(const std::filesystem::path& path) {
   std::ifstream in(path);

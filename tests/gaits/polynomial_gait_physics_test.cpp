@@ -9,6 +9,7 @@
 
 #include "dynamics/dsp_dynamics.hpp"
 #include "dynamics/ground.hpp"
+#include "dynamics/model_variation.hpp"
 #include "dynamics/robot_files/robot_config.hpp"
 #include "dynamics/ssp_dynamics.hpp"
 #include "gaits/export/gait_export.hpp"
@@ -23,11 +24,6 @@ namespace gaitopt::test {
 namespace {
 
 using gaits::Phase;
-
-/// The five-link robot with another friction coefficient.
-dynamics::Model withFriction(const dynamics::Model& m, double mu) {
-  return dynamics::Model(m.name(), m.links(), m.joints(), m.gravity(), mu, m.foot());
-}
 
 class MuGaitPhysics : public ::testing::Test {
  protected:
@@ -81,7 +77,7 @@ TEST_F(MuGaitPhysics, FrictionCoefficientOfPointFourSuffices) {
   RecordProperty("max_friction_ratio", fmt::format("{:.4f}", ratio));
   EXPECT_LE(ratio, 0.4);
   // With mu = 0.4 in the robot, every DSP load share stays feasible.
-  const auto model04 = withFriction(*model_, 0.4);
+  const auto model04 = dynamics::withFriction(*model_, 0.4);
   for (const auto& k : traj_->knots()) {
     if (k.phase != Phase::kDsp) continue;
     EXPECT_TRUE(gaits::distributeDspForces(model04, k.theta, k.dtheta, k.ddtheta).feasible)

@@ -25,6 +25,7 @@
 #include "gaits/trajectory/trajectory_text.hpp"
 #include "support/fixtures.hpp"
 #include "support/same_knots.hpp"
+#include "support/text_fields.hpp"
 
 namespace gaitopt::test {
 namespace {
@@ -42,13 +43,6 @@ std::string readText(const std::string& path) {
 
 void writeText(const std::string& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
-}
-
-std::vector<std::string> split(const std::string& text, char sep) {
-  std::vector<std::string> parts;
-  std::stringstream in(text);
-  for (std::string part; std::getline(in, part, sep);) parts.push_back(part);
-  return parts;
 }
 
 std::string join(const std::vector<std::string>& parts, char sep) {

@@ -20,7 +20,8 @@ namespace {
 using test::shippedOcpConfig;
 
 /// The ConfigError text of loading configs/ocp/NAME.yaml with `overrides`, or "".
-std::string loadError(const std::string& name, const std::vector<config::Override>& overrides) {
+std::string continuationLoadError(const std::string& name,
+                                  const std::vector<config::Override>& overrides) {
   try {
     loadOcpConfig(shippedOcpConfig(name), overrides);
   } catch (const config::ConfigError& e) {
@@ -51,7 +52,7 @@ TEST(ContinuationConfig, SectionIsReadAndCheckedAgainstTheProblem) {
                   .continuation.parameters.empty());
 
   const auto fails = [](const std::vector<config::Override>& set, const std::string& expected) {
-    const std::string e = loadError("mu2004_walk", set);
+    const std::string e = continuationLoadError("mu2004_walk", set);
     EXPECT_NE(e.find(expected), std::string::npos) << "got: " << e;
   };
   fails({{"continuation.steps", "0"}}, "key 'continuation.steps'");

@@ -21,17 +21,17 @@
 namespace gaitopt::ocp {
 namespace {
 
-const std::string kConfig =
+const std::string kStrikeConfig =
     std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/mu2004_walk_strike.yaml";
 
 /// The message of loading the shipped strike config with `from` replaced by `to` ("" when it
 /// loads).
 std::string loadEdited(const std::string& from, const std::string& to) {
-  return test::loadEditedOcpConfig(kConfig, from, to);
+  return test::loadEditedOcpConfig(kStrikeConfig, from, to);
 }
 
 TEST(DesignedStrikeConfig, ReadsTheRangesInSiUnits) {
-  const OcpConfig c = loadOcpConfig(kConfig);
+  const OcpConfig c = loadOcpConfig(kStrikeConfig);
   ASSERT_TRUE(c.touchdown.enabled && c.touchdown.angle);
   EXPECT_EQ(c.touchdown.normal_min, 0.05);
   EXPECT_EQ(c.touchdown.normal_max, 0.3);
@@ -75,7 +75,7 @@ TEST(DesignedStrikeConfig, BadRangesAndUnknownKeysAreErrorsNamingFileAndKey) {
 
 class DesignedStrike : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() { solved_ = new test::SolvedConfig(loadOcpConfig(kConfig)); }
+  static void SetUpTestSuite() { solved_ = new test::SolvedConfig(loadOcpConfig(kStrikeConfig)); }
   static void TearDownTestSuite() { delete solved_; }
   /// The solution's strike state (last SSP point).
   static ChainState strikeState() {

@@ -124,7 +124,7 @@ struct DspSolve {
   SolveResult result;
 };
 
-DspSolve solveDefault(const dynamics::Model& model, bool reduced) {
+DspSolve solveDefaultDsp(const dynamics::Model& model, bool reduced) {
   auto c = reducedConfig("mu2004_walk.yaml");
   c.dsp_reduced_coordinates = reduced;
   c.phases.back().mesh = kGradedMesh;
@@ -135,7 +135,7 @@ DspSolve solveDefault(const dynamics::Model& model, bool reduced) {
 
 TEST(DspChart, DefaultOptimumsDenseExportHoldsTheTipAtThePointsAndBetweenThem) {
   const auto model = dynamics::loadRobot(loadOcpConfig(kDir + "mu2004_walk.yaml").robot_path);
-  const DspSolve s = solveDefault(model, true);
+  const DspSolve s = solveDefaultDsp(model, true);
   ASSERT_TRUE(s.result.success) << s.result.status;
   const double at_points = gaits::maxDspTipDrift(reconstruct(s.problem, model, s.result.x), model);
   const gaits::Trajectory dense = reconstructDense(s.problem, model, s.result.x, 1000.0);
@@ -152,7 +152,7 @@ TEST(DspChart, DefaultOptimumsDenseExportHoldsTheTipAtThePointsAndBetweenThem) {
   EXPECT_GT(gaits::minFootCopMargin(dense, model), 0.0);
 
   // Collocating theta misses both bounds: the test tells the two apart.
-  const DspSolve theta = solveDefault(model, false);
+  const DspSolve theta = solveDefaultDsp(model, false);
   ASSERT_TRUE(theta.result.success) << theta.result.status;
   EXPECT_GT(
       gaits::maxDspTipDrift(reconstructDense(theta.problem, model, theta.result.x, 1000.0), model),

@@ -26,10 +26,11 @@
 namespace gaitopt::ocp {
 namespace {
 
-const std::string kConfig = std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/mu2004_walk.yaml";
+const std::string kFiveLinkConfig =
+    std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/mu2004_walk.yaml";
 
 TEST(FiveLinkProblem, JacobianAndLagrangianHessianEqualCentralDifferences) {
-  auto c = loadOcpConfig(kConfig);
+  auto c = loadOcpConfig(kFiveLinkConfig);
   c.phases.front().segments = 2;  // small: every column is differenced
   c.phases.back().segments = 1;
   const auto model = dynamics::loadRobot(c.robot_path);
@@ -44,7 +45,7 @@ TEST(FiveLinkProblem, JacobianAndLagrangianHessianEqualCentralDifferences) {
 TEST(FiveLinkProblem, FreeDurationsUnequalMeshAndCostOfTransportHaveExactDerivatives) {
   // Free T makes the defects bilinear and scales every quadrature: the T rows and columns of
   // the Jacobian and Hessian, the step-duration link and the cost of transport are differenced.
-  auto c = loadOcpConfig(kConfig);
+  auto c = loadOcpConfig(kFiveLinkConfig);
   c.phases.front().segments = 2;
   c.phases.front().mesh = {0.0, 0.3, 1.0};
   c.phases.back().segments = 1;
@@ -66,7 +67,7 @@ TEST(FiveLinkProblem, FreeDurationsUnequalMeshAndCostOfTransportHaveExactDerivat
 class FiveLinkSolution : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    config_ = new OcpConfig(loadOcpConfig(kConfig));
+    config_ = new OcpConfig(loadOcpConfig(kFiveLinkConfig));
     model_ = new dynamics::Model(dynamics::loadRobot(config_->robot_path));
     guess_ = new gaits::Trajectory(polynomialGuess(*model_, *config_));
     problem_ = new GaitProblem(buildGaitProblem(*model_, *config_, *guess_));

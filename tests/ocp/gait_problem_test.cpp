@@ -22,10 +22,11 @@
 namespace gaitopt::ocp {
 namespace {
 
-const std::string kConfig = std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/rabbit_kelly2017.yaml";
+const std::string kRabbitConfig =
+    std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/rabbit_kelly2017.yaml";
 
 TEST(RabbitGaitProblem, JacobianAndLagrangianHessianEqualCentralDifferences) {
-  auto c = loadOcpConfig(kConfig);
+  auto c = loadOcpConfig(kRabbitConfig);
   c.phases.front().segments = 3;  // small: every column is differenced
   const auto model = dynamics::loadRobot(c.robot_path);
   const GaitProblem p = buildGaitProblem(model, c, polynomialGuess(model, c));
@@ -39,7 +40,7 @@ TEST(RabbitGaitProblem, JacobianAndLagrangianHessianEqualCentralDifferences) {
 class RabbitSolution : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    config_ = new OcpConfig(loadOcpConfig(kConfig));
+    config_ = new OcpConfig(loadOcpConfig(kRabbitConfig));
     model_ = new dynamics::Model(dynamics::loadRobot(config_->robot_path));
     problem_ =
         new GaitProblem(buildGaitProblem(*model_, *config_, polynomialGuess(*model_, *config_)));
@@ -129,7 +130,7 @@ TEST(RabbitKelly2017, ShortStepCostMatchesThePublishedGpopsValue) {
 #endif
   // Kelly (SIAM Review 2017, sec. 7) reports 263.70 for a 0.4 m step in 0.6 s (GPOPS-II);
   // an independent reproduction gave 263.44. Our Hermite-Simpson optimum within 0.5 %.
-  auto c = loadOcpConfig(kConfig);
+  auto c = loadOcpConfig(kRabbitConfig);
   c.step_length = 0.4;
   c.phases.front().duration = 0.6;
   c.solver.tolerance = 1e-8;
@@ -166,7 +167,7 @@ TEST_F(RabbitSolution, ForwardSimulationOfTheOptimalTorquesReproducesTheStates) 
 TEST(RabbitAbsoluteWork, DerivativesAreExactAndTheOptimumSpendsLessWork) {
   // The absolute-work cost (slack split of each joint's power) against the torque-squared
   // optimum of the same problem: exact derivatives, convergence, and less absolute work.
-  auto c = loadOcpConfig(kConfig);
+  auto c = loadOcpConfig(kRabbitConfig);
   c.cost = CostWeights{.torque_squared = 1e-3, .abs_work = 1.0};
   const auto model = dynamics::loadRobot(c.robot_path);
   const gaits::Trajectory guess = polynomialGuess(model, c);

@@ -24,7 +24,7 @@ struct JerkSolve {
   SolveResult result;
 };
 
-JerkSolve solveDefault(const dynamics::Model& model, double jerk) {
+JerkSolve solveDefaultJerk(const dynamics::Model& model, double jerk) {
   auto c = loadOcpConfig(std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/mu2004_walk.yaml");
   c.jerk_limit = jerk;
   JerkSolve s{buildGaitProblem(model, c, polynomialGuess(model, c)), {}};
@@ -51,7 +51,7 @@ double centralDifferenceError(const gaits::Trajectory& dense) {
 TEST(JerkLimit, BoundsThePointsAndMakesTheExportsDifferencesMeetItsRates) {
   const auto model = dynamics::loadRobot(std::string(GAITOPT_SOURCE_DIR) +
                                          "/configs/robots/mu2004_five_link.yaml");
-  const JerkSolve s = solveDefault(model, kJerk);
+  const JerkSolve s = solveDefaultJerk(model, kJerk);
   ASSERT_TRUE(s.result.success) << s.result.status;
   const gaits::Trajectory points = reconstruct(s.problem, model, s.result.x);
   double steepest = 0;
@@ -66,7 +66,7 @@ TEST(JerkLimit, BoundsThePointsAndMakesTheExportsDifferencesMeetItsRates) {
   const double bound = h * h * kJerk / 3;
   EXPECT_LT(centralDifferenceError(reconstructDense(s.problem, model, s.result.x, kRate)), bound);
 
-  const JerkSolve free = solveDefault(model, 0);
+  const JerkSolve free = solveDefaultJerk(model, 0);
   ASSERT_TRUE(free.result.success) << free.result.status;
   EXPECT_GT(centralDifferenceError(reconstructDense(free.problem, model, free.result.x, kRate)),
             2 * bound);

@@ -17,17 +17,17 @@
 namespace gaitopt::ocp {
 namespace {
 
-const std::string kConfig = test::shippedOcpConfig("mu2004_walk");
+const std::string kForceConfig = test::shippedOcpConfig("mu2004_walk");
 constexpr double kLeast = 100;  // [N]; the default optimum's least is about 61 N, so this binds
 
 TEST(LeastNormalForceConfig, NegativeOrWithoutGroundContactAreErrorsNamingTheKey) {
   const std::string fm = "friction_margin: 0.15";
-  EXPECT_EQ(test::loadEditedOcpConfig(kConfig, fm, fm + "\n  min_normal_force: 50"), "");
+  EXPECT_EQ(test::loadEditedOcpConfig(kForceConfig, fm, fm + "\n  min_normal_force: 50"), "");
   const std::string negative =
-      test::loadEditedOcpConfig(kConfig, fm, fm + "\n  min_normal_force: -1");
+      test::loadEditedOcpConfig(kForceConfig, fm, fm + "\n  min_normal_force: -1");
   EXPECT_NE(negative.find("key 'constraints.min_normal_force'"), std::string::npos) << negative;
   const std::string no_contact = test::loadEditedOcpConfig(
-      kConfig, "ground_contact: true", "ground_contact: false\n  min_normal_force: 50");
+      kForceConfig, "ground_contact: true", "ground_contact: false\n  min_normal_force: 50");
   EXPECT_NE(no_contact.find("key 'constraints.min_normal_force': a least normal force needs "
                             "ground_contact: true"),
             std::string::npos)
@@ -48,8 +48,8 @@ TEST(LeastNormalForce, EveryTipInContactKeepsItAtTheKnotsAndBetweenThem) {
 #ifndef NDEBUG
   GTEST_SKIP() << "two solves: optimised builds only";
 #endif
-  const test::SolvedConfig free(loadOcpConfig(kConfig));
-  OcpConfig c = loadOcpConfig(kConfig);
+  const test::SolvedConfig free(loadOcpConfig(kForceConfig));
+  OcpConfig c = loadOcpConfig(kForceConfig);
   c.min_normal_force = kLeast;
   const test::SolvedConfig held(c);
   ASSERT_EQ(free.result.status, "Solve_Succeeded");

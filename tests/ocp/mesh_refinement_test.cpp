@@ -11,10 +11,11 @@
 namespace gaitopt::ocp {
 namespace {
 
-const std::string kConfig = std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/mu2004_walk.yaml";
+const std::string kRefinedConfig =
+    std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/mu2004_walk.yaml";
 
 TEST(MeshRefinement, FiveLinkErrorFallsBelowToleranceAndTheCostConverges) {
-  OcpConfig c = loadOcpConfig(kConfig);
+  OcpConfig c = loadOcpConfig(kRefinedConfig);
   const auto model = dynamics::loadRobot(c.robot_path);
   const gaits::Trajectory guess = polynomialGuess(model, c);
   c.refinement = {.tolerance = 2e-3, .max_rounds = 4};

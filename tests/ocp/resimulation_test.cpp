@@ -18,7 +18,7 @@
 namespace gaitopt::ocp {
 namespace {
 
-struct Solved {
+struct ResimulatedSolve {
   GaitProblem problem;
   Eigen::VectorXd x;
 };
@@ -42,7 +42,7 @@ class RabbitResimulation : public ::testing::Test {
     delete model_;
     delete config_;
   }
-  static Solved solve(Scheme scheme, int segments) {
+  static ResimulatedSolve solve(Scheme scheme, int segments) {
     OcpConfig c = *config_;
     c.scheme = scheme;
     c.phases.front().segments = segments;
@@ -60,9 +60,9 @@ dynamics::Model* RabbitResimulation::model_ = nullptr;
 gaits::Trajectory* RabbitResimulation::guess_ = nullptr;
 
 TEST_F(RabbitResimulation, ErrorsFallWithTheSchemesOrder) {
-  const Solved coarse = solve(Scheme::kHermiteSimpson, 8);
-  const Solved fine = solve(Scheme::kHermiteSimpson, 16);
-  const Solved trapezoidal = solve(Scheme::kTrapezoidal, 16);
+  const ResimulatedSolve coarse = solve(Scheme::kHermiteSimpson, 8);
+  const ResimulatedSolve fine = solve(Scheme::kHermiteSimpson, 16);
+  const ResimulatedSolve trapezoidal = solve(Scheme::kTrapezoidal, 16);
   const StateError end8 = sspEndStateError(coarse.problem, *model_, coarse.x);
   const StateError end16 = sspEndStateError(fine.problem, *model_, fine.x);
   const StateError trap16 = sspEndStateError(trapezoidal.problem, *model_, trapezoidal.x);
@@ -89,7 +89,7 @@ TEST_F(RabbitResimulation, ErrorsFallWithTheSchemesOrder) {
 TEST_F(RabbitResimulation, MeasuresAgainstTheSolutionsStrikeState) {
   // Moving the solution's last SSP angles by 0.05 rad (the re-simulation starts from the first
   // point and uses the torques only) must show up as an end error of about 0.05 rad.
-  Solved s = solve(Scheme::kHermiteSimpson, 16);
+  ResimulatedSolve s = solve(Scheme::kHermiteSimpson, 16);
   const double before = sspEndStateError(s.problem, *model_, s.x).angle;
   const PhaseLayout& l = s.problem.ssp.layout;
   const int last = l.points() - 1;

@@ -24,7 +24,8 @@
 namespace gaitopt::ocp {
 namespace {
 
-const std::string kConfig = std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/rabbit_kelly2017.yaml";
+const std::string kSlopeConfig =
+    std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/rabbit_kelly2017.yaml";
 
 struct SlopeSolve {
   SolveResult result;
@@ -36,7 +37,7 @@ struct SlopeSolve {
 
 /// Solves RABBIT on `slope` with 10 Hermite-Simpson segments (guess built on the sloped model).
 SlopeSolve solveOnSlope(double slope) {
-  OcpConfig c = loadOcpConfig(kConfig);
+  OcpConfig c = loadOcpConfig(kSlopeConfig);
   c.slope = slope;
   c.phases.front().segments = 10;
   const dynamics::Model model = problemModel(c);
@@ -95,7 +96,7 @@ std::string configError(const std::string& line) {
   const auto path =
       std::filesystem::temp_directory_path() / fmt::format("gaitopt_ocp_slope_{}.yaml", ::getpid());
   {
-    std::ifstream in(kConfig);
+    std::ifstream in(kSlopeConfig);
     std::ofstream out(path);
     // Paths in the config are relative to its folder: make them absolute.
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -116,8 +117,8 @@ std::string configError(const std::string& line) {
 }
 
 TEST(OcpConfigSlope, DefaultsToLevelAndRejectsDegreesAndSteepSlopes) {
-  EXPECT_EQ(loadOcpConfig(kConfig).slope, 0.0);
-  EXPECT_EQ(problemModel(loadOcpConfig(kConfig)).slope(), 0.0);
+  EXPECT_EQ(loadOcpConfig(kSlopeConfig).slope, 0.0);
+  EXPECT_EQ(problemModel(loadOcpConfig(kSlopeConfig)).slope(), 0.0);
   EXPECT_EQ(configError("slope: 0.05"), "no error, slope 0.05");
   const std::string degrees = configError("slope: -3");
   EXPECT_NE(degrees.find("key 'slope': expected an angle in [-0.35, 0.35] [rad] (degrees? -3 deg "

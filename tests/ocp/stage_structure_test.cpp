@@ -149,7 +149,7 @@ TEST(StageStructure, VariantsCopyThePhasesAndMeetTheNominalAtItsStartEndAndClock
 }
 
 /// The message of loading the five-link config with `sets`, "" when it loads.
-std::string loadError(const std::vector<std::string>& sets) {
+std::string stageLoadError(const std::vector<std::string>& sets) {
   try {
     config("mu2004_walk", sets);
   } catch (const config::ConfigError& e) {
@@ -168,13 +168,13 @@ TEST(ShapeConfig, ReadsStepsAndVariantsAndRefusesAnIncompleteEnsemble) {
   EXPECT_EQ(c.shape.end_tolerance, 0.1);
   EXPECT_EQ(c.shape.spread, 1);
   EXPECT_EQ(config("mu2004_walk").shape.variantCount(), 1);
-  EXPECT_NE(loadError({"steps=1.5"}).find("key 'steps'"), std::string::npos);
+  EXPECT_NE(stageLoadError({"steps=1.5"}).find("key 'steps'"), std::string::npos);
   // A variant without the law would have free torques: the ensemble would say nothing.
-  const std::string no_law = loadError({"variants=[{mass_scale: 1.1}]"});
+  const std::string no_law = stageLoadError({"variants=[{mass_scale: 1.1}]"});
   EXPECT_NE(no_law.find("variant_feedback"), std::string::npos) << no_law;
-  const std::string stray = loadError({"variant_end_tolerance=0.1"});
+  const std::string stray = stageLoadError({"variant_end_tolerance=0.1"});
   EXPECT_NE(stray.find("only meaningful with `variants`"), std::string::npos) << stray;
-  EXPECT_NE(loadError({"variants=[{mass: 1.1}]"}).find("mass"), std::string::npos);
+  EXPECT_NE(stageLoadError({"variants=[{mass: 1.1}]"}).find("mass"), std::string::npos);
 }
 
 }  // namespace

@@ -75,12 +75,12 @@ TEST(StraightLegGuessInput, KneesAndDoubleSupportAreRefused) {
   EXPECT_THROW(straightLegGuess(problemModel(c), c), std::invalid_argument);
 }
 
-struct Solved {
+struct StraightLegSolve {
   dynamics::Model model;
   GaitSolution solution;
 };
 
-Solved solveShipped(const std::string& name) {
+StraightLegSolve solveShipped(const std::string& name) {
   const OcpConfig c = shipped(name);
   dynamics::Model model = problemModel(c);
   GaitSolution s = solveGait(model, c, initialGuess(model, c));
@@ -97,7 +97,7 @@ class ShippedStraightLegConfig : public ::testing::TestWithParam<std::string> {
 };
 
 TEST_P(ShippedStraightLegConfig, SolvesToAPeriodicGaitTheResimulationReproduces) {
-  const Solved s = solveShipped(GetParam());
+  const StraightLegSolve s = solveShipped(GetParam());
   const SolveResult& r = s.solution.result;
   const GaitProblem& p = s.solution.problem;
   ASSERT_TRUE(r.success) << r.status;
@@ -127,7 +127,7 @@ INSTANTIATE_TEST_SUITE_P(Robots, ShippedStraightLegConfig,
 class PassiveSlopeWalk : public ShippedStraightLegConfig {};
 
 TEST_F(PassiveSlopeWalk, NeedsNoTorqueAndRepeatsItselfWithout) {
-  const Solved s = solveShipped("compass_gait_passive");
+  const StraightLegSolve s = solveShipped("compass_gait_passive");
   const SolveResult& r = s.solution.result;
   const GaitProblem& p = s.solution.problem;
   ASSERT_TRUE(r.success) << r.status;

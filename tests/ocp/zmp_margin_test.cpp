@@ -17,29 +17,30 @@
 namespace gaitopt::ocp {
 namespace {
 
-const std::string kConfig = test::shippedOcpConfig("mu2004_walk");
+const std::string kMarginConfig = test::shippedOcpConfig("mu2004_walk");
 constexpr double kMargin = 0.07;  // [m]; the default optimum keeps 0.0497 m, so this binds
 
 TEST(ZmpMarginConfig, NegativeOrNoFootLeftOrWithoutZmpAreErrorsNamingTheKey) {
   const std::string fm = "friction_margin: 0.15";
-  EXPECT_EQ(test::loadEditedOcpConfig(kConfig, fm, fm + "\n  zmp_margin: 0.05"), "");
-  const std::string negative = test::loadEditedOcpConfig(kConfig, fm, fm + "\n  zmp_margin: -0.01");
+  EXPECT_EQ(test::loadEditedOcpConfig(kMarginConfig, fm, fm + "\n  zmp_margin: 0.05"), "");
+  const std::string negative =
+      test::loadEditedOcpConfig(kMarginConfig, fm, fm + "\n  zmp_margin: -0.01");
   EXPECT_NE(negative.find("key 'constraints.zmp_margin'"), std::string::npos) << negative;
   // The shipped foot is 0.05 m of heel and 0.15 m of toe: half of it is 0.1 m.
-  const std::string half = test::loadEditedOcpConfig(kConfig, fm, fm + "\n  zmp_margin: 0.1");
+  const std::string half = test::loadEditedOcpConfig(kMarginConfig, fm, fm + "\n  zmp_margin: 0.1");
   EXPECT_NE(half.find("key 'constraints.zmp_margin': expected less than half the robot's foot, "
                       "(heel 0.05 + toe 0.15) / 2 = 0.1 m, got 0.1 m"),
             std::string::npos)
       << half;
   const std::string no_zmp =
-      test::loadEditedOcpConfig(kConfig, "zmp: true", "zmp: false\n  zmp_margin: 0.02");
+      test::loadEditedOcpConfig(kMarginConfig, "zmp: true", "zmp: false\n  zmp_margin: 0.02");
   EXPECT_NE(no_zmp.find("key 'constraints.zmp_margin': a ZMP margin needs zmp: true"),
             std::string::npos)
       << no_zmp;
 }
 
 TEST(ZmpMarginConfig, AMarginSetInCodeThatLeavesNoFootThrows) {
-  OcpConfig c = loadOcpConfig(kConfig);
+  OcpConfig c = loadOcpConfig(kMarginConfig);
   const dynamics::Model model = problemModel(c);
   c.zmp_margin = 0.02;
   EXPECT_DOUBLE_EQ(marginFoot(model, c).heel, 0.03);
@@ -65,8 +66,8 @@ TEST(ZmpMargin, KeepsTheZmpAndFootBsCentreOfPressureThatFarInside) {
 #ifndef NDEBUG
   GTEST_SKIP() << "two solves: optimised builds only";
 #endif
-  const test::SolvedConfig free(loadOcpConfig(kConfig));
-  OcpConfig c = loadOcpConfig(kConfig);
+  const test::SolvedConfig free(loadOcpConfig(kMarginConfig));
+  OcpConfig c = loadOcpConfig(kMarginConfig);
   c.zmp_margin = kMargin;
   const test::SolvedConfig held(c);
   ASSERT_EQ(free.result.status, "Solve_Succeeded");

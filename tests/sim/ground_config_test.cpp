@@ -14,17 +14,17 @@
 namespace gaitopt::sim {
 namespace {
 
-std::string groundPath(const std::string& name) {
+std::string shippedGround(const std::string& name) {
   return std::string(GAITOPT_SOURCE_DIR) + "/configs/grounds/" + name + ".yaml";
 }
 
 TEST(GroundConfig, EveryShippedFileLoadsAsTheModelItNames) {
-  const auto rigid = loadGround(groundPath("rigid"));
+  const auto rigid = loadGround(shippedGround("rigid"));
   ASSERT_NE(rigid.getIf<RigidGround>(), nullptr);
   EXPECT_GT(rigid.getIf<RigidGround>()->integrator.step, 0);
   EXPECT_EQ(groundName(rigid), "rigid");
 
-  const auto impedance = loadGround(groundPath("impedance"));
+  const auto impedance = loadGround(shippedGround("impedance"));
   ASSERT_NE(impedance.getIf<CompliantGround>(), nullptr);
   const auto& compliant = *impedance.getIf<CompliantGround>();
   EXPECT_EQ(compliant.contact.exponent, 1.5);
@@ -32,7 +32,7 @@ TEST(GroundConfig, EveryShippedFileLoadsAsTheModelItNames) {
   EXPECT_GT(compliant.time_step, 0);
   EXPECT_EQ(groundName(impedance), "impedance");
 
-  const auto lcp = loadGround(groundPath("lcp"));
+  const auto lcp = loadGround(shippedGround("lcp"));
   ASSERT_NE(lcp.getIf<LcpGround>(), nullptr);
   EXPECT_GT(lcp.getIf<LcpGround>()->time_step, 0);
   EXPECT_EQ(groundName(lcp), "lcp");
@@ -42,7 +42,7 @@ TEST(GroundConfig, EveryShippedFileLoadsAsTheModelItNames) {
 class BadGroundFile : public ::testing::Test {
  protected:
   void write(const std::string& from, const std::string& to) {
-    std::ifstream in(groundPath("impedance"));
+    std::ifstream in(shippedGround("impedance"));
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const auto pos = text.find(from);
     ASSERT_NE(pos, std::string::npos) << "fixture text not found: " << from;

@@ -17,7 +17,7 @@ namespace {
 
 using sim::ImpedanceGround;
 
-constexpr double kMass = 1.0;  // [kg]
+constexpr double kPadMass = 1.0;  // [kg]
 
 /// Point mass with state (x, y, xdot, ydot) on the ground y = 0, and the tangential anchor.
 struct Body {
@@ -32,7 +32,7 @@ sim::ContactPointMotion motion(const Eigen::Vector4d& s) {
 Eigen::Vector4d derivative(const ImpedanceGround& ground, double g, const Eigen::Vector4d& s,
                            double anchor) {
   const sim::ImpedanceContactForce f = sim::impedanceContactForce(ground, motion(s), anchor);
-  return {s(2), s(3), f.tangential / kMass, f.normal / kMass - g};
+  return {s(2), s(3), f.tangential / kPadMass, f.normal / kPadMass - g};
 }
 
 /// Classical RK4 with the anchor of the last accepted step in every stage, then the anchor
@@ -53,14 +53,14 @@ ImpedanceGround hertzGround(double damping) {
           .damping = damping,
           .exponent = 1.5,
           .tangential_stiffness = 1e5,
-          .tangential_damping = 2 * std::sqrt(1e5 * kMass),
+          .tangential_damping = 2 * std::sqrt(1e5 * kPadMass),
           .friction = 0.4};
 }
 
 /// Mechanical energy including the elastic energy k delta^(n+1) / (n+1) stored in the ground.
 double energy(const ImpedanceGround& ground, double g, const Eigen::Vector4d& s) {
   const double delta = std::max(0.0, -s(1));
-  return kMass * (0.5 * s.tail<2>().squaredNorm() + g * s(1)) +
+  return kPadMass * (0.5 * s.tail<2>().squaredNorm() + g * s(1)) +
          ground.stiffness * std::pow(delta, ground.exponent + 1) / (ground.exponent + 1);
 }
 
@@ -88,7 +88,7 @@ TEST(ImpedanceContact, UndampedDropBouncesBackToItsHeight) {
 double restitution(const ImpedanceGround& ground, double speed) {
   const double n = ground.exponent;
   const double max_delta =
-      std::pow((n + 1) * kMass * speed * speed / (2 * ground.stiffness), 1 / (n + 1));
+      std::pow((n + 1) * kPadMass * speed * speed / (2 * ground.stiffness), 1 / (n + 1));
   const double dt = 3 * max_delta / speed / 4000;
   Body b;
   b.s(3) = -speed;
@@ -143,7 +143,7 @@ TEST(ImpedanceContact, SlidingBlockDeceleratesAtMuG) {
   const double v0 = 1.0;
   const double mu = ground.friction;
   Body b;
-  b.s(1) = -std::pow(kMass * g / ground.stiffness, 1 / ground.exponent);
+  b.s(1) = -std::pow(kPadMass * g / ground.stiffness, 1 / ground.exponent);
   b.s(2) = v0;
   const double dt = 1e-5;
   double v_early = 0;
@@ -157,7 +157,8 @@ TEST(ImpedanceContact, SlidingBlockDeceleratesAtMuG) {
     }
   }
   EXPECT_LT(std::abs(b.s(2)), 1e-6);  // stuck after 0.4 s
-  EXPECT_NEAR(b.s(0), v0 * v0 / (2 * mu * g), mu * kMass * g / ground.tangential_stiffness + 1e-5);
+  EXPECT_NEAR(b.s(0), v0 * v0 / (2 * mu * g),
+              mu * kPadMass * g / ground.tangential_stiffness + 1e-5);
 }
 
 TEST(ImpedanceContact, NormalForceNeverPulls) {

@@ -16,9 +16,9 @@ using sim::ContactRows;
 using sim::LcpStepResult;
 using sim::LemkeStatus;
 
-constexpr double kMass = 2.0;  // [kg]
-constexpr double kG = 9.81;    // [m/s^2]
-constexpr double kH = 1e-3;    // [s]
+constexpr double kBlockMass = 2.0;  // [kg]
+constexpr double kG = 9.81;         // [m/s^2]
+constexpr double kH = 1e-3;         // [s]
 
 /// Point mass (x, y) under gravity; ground y = 0 with normal +y and tangent +x.
 struct PointMass {
@@ -28,8 +28,9 @@ struct PointMass {
   /// One step with friction mu; positions by semi-implicit Euler.
   LcpStepResult step(double mu) {
     const ContactRows ground{Eigen::RowVector2d(0, 1), Eigen::RowVector2d(1, 0), q(1), mu};
-    const LcpStepResult r = sim::lcpContactStep(kMass * Eigen::Matrix2d::Identity(),
-                                                Eigen::Vector2d(0, -kMass * kG), v, kH, {ground});
+    const LcpStepResult r =
+        sim::lcpContactStep(kBlockMass * Eigen::Matrix2d::Identity(),
+                            Eigen::Vector2d(0, -kBlockMass * kG), v, kH, {ground});
     EXPECT_EQ(r.status, LemkeStatus::kSolved);
     v = r.velocity;
     q += kH * v;
@@ -41,7 +42,7 @@ TEST(LcpContactStep, RestingMassStaysAtRest) {
   PointMass p;
   for (int k = 0; k < 1000; ++k) {
     const LcpStepResult r = p.step(0.5);
-    ASSERT_NEAR(r.normal_impulse(0), kMass * kG * kH, 1e-12) << "step " << k;
+    ASSERT_NEAR(r.normal_impulse(0), kBlockMass * kG * kH, 1e-12) << "step " << k;
     ASSERT_NEAR(r.tangential_impulse(0), 0, 1e-12);
   }
   EXPECT_LT(p.q.lpNorm<Eigen::Infinity>(), 1e-12);
@@ -54,8 +55,8 @@ TEST(LcpContactStep, ImpactIsInelasticAndSticksWithLargeFriction) {
   PointMass p;
   p.v = Eigen::Vector2d(1, -2);
   const LcpStepResult r = p.step(1.0);
-  EXPECT_NEAR(r.normal_impulse(0), kMass * (2 + kG * kH), 1e-12);
-  EXPECT_NEAR(r.tangential_impulse(0), -kMass * 1.0, 1e-12);
+  EXPECT_NEAR(r.normal_impulse(0), kBlockMass * (2 + kG * kH), 1e-12);
+  EXPECT_NEAR(r.tangential_impulse(0), -kBlockMass * 1.0, 1e-12);
   EXPECT_LT(r.velocity.lpNorm<Eigen::Infinity>(), 1e-12);
 }
 
@@ -64,10 +65,10 @@ TEST(LcpContactStep, ImpactSlidesWithSmallFriction) {
   PointMass p;
   p.v = Eigen::Vector2d(1, -2);
   const LcpStepResult r = p.step(0.1);
-  const double pn = kMass * (2 + kG * kH);
+  const double pn = kBlockMass * (2 + kG * kH);
   EXPECT_NEAR(r.normal_impulse(0), pn, 1e-12);
   EXPECT_NEAR(r.tangential_impulse(0), -0.1 * pn, 1e-12);
-  EXPECT_NEAR(r.velocity(0), 1 - 0.1 * pn / kMass, 1e-12);
+  EXPECT_NEAR(r.velocity(0), 1 - 0.1 * pn / kBlockMass, 1e-12);
   EXPECT_NEAR(r.velocity(1), 0, 1e-12);
 }
 

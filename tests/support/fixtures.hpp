@@ -3,8 +3,10 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "dynamics/kinematics.hpp"
 #include "dynamics/model.hpp"
 #include "dynamics/robot_files/robot_config.hpp"
 
@@ -39,6 +41,15 @@ inline VecD randomPosture(std::mt19937& rng, const dynamics::Model& model) {
   for (int i = model.nLinks() - model.legLinks(); i < model.nLinks(); ++i)
     theta(i) += std::numbers::pi;
   return theta;
+}
+
+/// A pre-impact state: a random posture whose swing tip moves down (and either way along the
+/// ground).
+inline std::pair<VecD, VecD> preImpact(const dynamics::Model& m, std::mt19937& rng) {
+  const VecD theta = randomPosture(rng, m);
+  VecD dtheta = randomVec(rng, m.nLinks(), -2, 2);
+  if ((dynamics::pointJacobian(m.tipWeights(), theta) * dtheta)(1) > 0) dtheta = -dtheta;
+  return {theta, dtheta};
 }
 
 /// Relative error ||a - b|| / max(||b||, floor).
