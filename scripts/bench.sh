@@ -6,7 +6,8 @@
 # bench/solve_profile.cpp), every shipped config with MUMPS and with gaitopt's KKT solver
 # (scripts/linear_solver_compare.sh) and how often each converges on the five-link configs at
 # five meshes (scripts/solver_robustness.sh), how often every shipped problem converges over
-# meshes and starts (bench/convergence_bench.cpp), the double support in theta
+# meshes and starts (bench/convergence_bench.cpp), the ensemble's solve time with 1, 3 and 5
+# models (bench/ensemble_bench.cpp), the double support in theta
 # against reduced coordinates (bench/dsp_coordinates.cpp), then the
 # speed-against-accuracy table and chart
 # of the ground models (bench/ground_bench.cpp, scripts/plots/ground_chart.py).
@@ -91,6 +92,12 @@ conv="$1/bench/convergence_bench"
 [[ -x "$conv" ]] || { echo "error: $conv not built" >&2; exit 1; }
 "$conv" "$1/convergence.csv" 2>/dev/null | tee "$1/convergence.md"
 echo "(also in $1/convergence.{csv,md}; results/convergence.{csv,md} are copies)"
+
+echo
+ensemble="$1/bench/ensemble_bench"
+[[ -x "$ensemble" ]] || { echo "error: $ensemble not built" >&2; exit 1; }
+"$ensemble" 3 | tee "$1/ensemble_bench.md"
+echo "(also in $1/ensemble_bench.md; results/ensemble_bench.md is a copy)"
 
 echo
 dsp="$1/bench/dsp_coordinates"

@@ -1,0 +1,89 @@
+/// @file ensemble_bench.cpp
+/// What the ensemble costs in solve time: configs/ocp/mu2004_walk_ensemble.yaml solved whole
+/// (its continuation of the margins and the strike included) with K = 1, 3 and 5 models: the
+/// nominal alone, the shipped mass variants 0.9 and 1.1, and those plus 0.95 and 1.05. Each row
+/// is the median wall time of `repeats` solves from the polynomial guess, with its ratio to
+/// K = 1 and the optimum's cost. K = 1 and 3 take the config's whole path, its retries and
+/// halved steps included; at K = 5 a stage that Ipopt ends without success ends the solve (its
+/// rescue ran for more than ten minutes without an end). A solve longer than a minute is timed
+/// once.
+/// Usage: ensemble_bench [repeats]
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "bench/ocp_bench_common.hpp"
+#include "ocp/guess/initial_guess.hpp"
+#include "ocp/problem/gait_problem.hpp"
+#include "ocp/shape/shape_config.hpp"
+#include "ocp/solve/gait_solve.hpp"
+
+namespace {
+
+using namespace gaitopt;
+
+struct Ensemble {
+  std::vector<double> mass_scales;  ///< of the variants beside the nominal
+  bool rescued = true;              ///< the continuation's retries and halvings
+};
+
+const std::vector<Ensemble> kEnsembles = {
+    {{}, true}, {{0.9, 1.1}, true}, {{0.9, 0.95, 1.05, 1.1}, false}};
+
+struct Timed {
+  ocp::GaitSolution last;
+  double wall = 0;  ///< median [s]
+  int solves = 0;
+};
+
+Timed solveRepeated(const std::string& path, const Ensemble& e, int repeats) {
+  ocp::OcpConfig config = ocp::loadOcpConfig(path);
+  config.solver.progress = false;
+  if (!e.rescued) {
+    config.continuation.retries = 0;
+    config.continuation.halvings = 0;
+  }
+  config.shape.variants.clear();
+  for (const double scale : e.mass_scales) config.shape.variants.push_back({scale});
+  const dynamics::Model model = ocp::problemModel(config);
+  const gaits::Trajectory guess = ocp::initialGuess(model, config);
+  std::vector<double> wall;
+  Timed t;
+  for (int k = 0; k < repeats; ++k) {
+    t.last = ocp::solveGait(model, config, guess);
+    wall.push_back(t.last.result.wall_time_s);
+    if (t.last.result.wall_time_s > 60) break;
+  }
+  t.solves = static_cast<int>(wall.size());
+  t.wall = bench::median(wall);
+  return t;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 3;
+  const std::string path =
+      std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/mu2004_walk_ensemble.yaml";
+  fmt::print(
+      "mu2004_walk_ensemble, whole solve with its continuation, {} solves per row, "
+      "medians\n\n",
+      repeats);
+  fmt::print(
+      "| models K | retries | status | iterations | cost J | wall s | wall / K=1 | solves |\n"
+      "|---:|---|---|---:|---:|---:|---:|---:|\n");
+  double single = 0;
+  for (const Ensemble& e : kEnsembles) {
+    const Timed t = solveRepeated(path, e, repeats);
+    if (single == 0) single = t.wall;
+    const ocp::SolveResult& r = t.last.result;
+    fmt::print("| {} | {} | {} | {} | {:.2f} | {:.2f} | {:.2f} | {} |\n", e.mass_scales.size() + 1,
+               e.rescued ? "yes" : "no", r.status, r.iterations, r.cost, t.wall, t.wall / single,
+               t.solves);
+    std::fflush(stdout);
+  }
+  return 0;
+}
