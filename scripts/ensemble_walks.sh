@@ -5,9 +5,9 @@
 # 0.9, 1.0 and 1.1, a CoP beyond the model's foot a fall; in DART (a build with -DGAITOPT_DART=ON)
 # at 0.9 to 1.1, where the feet are bodies that tip by DART's own contact physics, the controller
 # clips its ankle torque to the foot (COP_LIMIT=saturate). Then the ensemble solved at 24 to
-# 36 SSP segments (its continuation, from the polynomial gait), with cost, iterations, time and
-# posture per mesh. Writes OUT/{rigid,lcp,dart}_walks.{csv,md}, OUT/meshes.{csv,md} and the
-# shipped mesh's (30 + 6) OUT/summary.json.
+# 36 SSP segments and its 8 DSP ones (its continuation, from the polynomial gait), with cost,
+# iterations, time and posture per mesh. Writes OUT/{rigid,lcp,dart}_walks.{csv,md},
+# OUT/meshes.{csv,md} and the shipped mesh's (30 + 8) OUT/summary.json.
 # Usage: scripts/ensemble_walks.sh BUILD_DIR OUT_DIR   (from the repository root)
 set -euo pipefail
 build=${1:?usage: $0 BUILD_DIR OUT_DIR}
@@ -22,8 +22,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 for ssp in 24 27 30 33 36; do
   "$build/apps/gaitopt" optimize --config configs/ocp/mu2004_walk_ensemble.yaml \
-    --out "$work/mesh_$ssp" --no-plots --quiet --set "phases[0].segments=$ssp" \
-    --set "phases[1].segments=$((ssp / 5))" >/dev/null || true
+    --out "$work/mesh_$ssp" --no-plots --quiet --set "phases[0].segments=$ssp" >/dev/null || true
 done
 /usr/bin/python3 - "$work" "$out" <<'PY'
 import json, os, sys
@@ -39,9 +38,10 @@ for ssp in (24, 27, 30, 33, 36):
     s = json.load(open(os.path.join(folder, "summary.json")))
     p = s["posture_deg"]
     angles = [p["max_torso_lean"], p["max_stance_knee_flexion"], p["max_swing_knee_flexion"]]
-    rows.append(f"{ssp},{ssp // 5},{s['status']},{s['iterations']},{s['cost']:.6g},"
+    dsp = s["mesh_history"][-1]["segments"][1]
+    rows.append(f"{ssp},{dsp},{s['status']},{s['iterations']},{s['cost']:.6g},"
                 f"{s['wall_time_s']:.3g}," + ",".join(f"{a:.3g}" for a in angles))
-    table.append(f"| {ssp} + {ssp // 5} | {s['status']} | {s['iterations']} | {s['cost']:.2f} | "
+    table.append(f"| {ssp} + {dsp} | {s['status']} | {s['iterations']} | {s['cost']:.2f} | "
                  f"{s['wall_time_s']:.1f} | " + ", ".join(f"{a:.1f}" for a in angles) + " |")
 open(os.path.join(out, "meshes.csv"), "w").write("\n".join(rows) + "\n")
 open(os.path.join(out, "meshes.md"), "w").write("\n".join(table) + "\n")
