@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Mu (2004) sec. 4.3's uncertainty cases in closed loop: the polynomial and the torque-squared
-# optimal five-link gait, walked 20 steps on rigid ground by computed torque, the boundary-layer
+# Mu (2004) sec. 4.3's uncertainty cases in closed loop: the polynomial gait, the torque-squared
+# optimal five-link gait and the two designed to be walked (mu2004_walk_robust, the ensemble
+# mu2004_walk_ensemble), walked 20 steps on rigid ground by computed torque, the boundary-layer
 # law (sliding_mode) and Mu's integral sliding mode (mu_sliding_mode), with the controller's
 # model off by case 1 (exact), 2 (+40 % m, I; +10 % l, d) or 3 (+100 %, +40 %); on the shipped
 # robot (5 cm heel: the stance ankle saturates where the CoP reaches the heel or the toe) and on
@@ -19,10 +20,12 @@ mkdir -p "$out"
 "$bin" optimize --config configs/ocp/mu2004_walk.yaml --out "$work/opt" --no-plots --quiet >/dev/null
 "$bin" optimize --config configs/ocp/mu2004_walk_robust.yaml --out "$work/opt_robust" --no-plots \
   --quiet >/dev/null
+"$bin" optimize --config configs/ocp/mu2004_walk_ensemble.yaml --out "$work/opt_ensemble" \
+  --no-plots --quiet >/dev/null
 declare -A robots=([shipped]=configs/robots/mu2004_five_link.yaml
   [long_heel]=tests/apps/mu2004_five_link_long_heel.yaml)
 echo "gait,robot,controller,case,steps,max_tracking_error_rad,max_slip_m,failure" >"$out/mu_cases.csv"
-for gait in poly opt opt_robust; do
+for gait in poly opt opt_robust opt_ensemble; do
   for robot in shipped long_heel; do
     for controller in computed_torque sliding_mode mu_sliding_mode; do
       for c in 1 2 3; do
