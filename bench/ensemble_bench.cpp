@@ -33,13 +33,8 @@ struct Ensemble {
 const std::vector<Ensemble> kEnsembles = {
     {{}, true}, {{0.9, 1.1}, true}, {{0.9, 0.95, 1.05, 1.1}, false}};
 
-struct Timed {
-  ocp::GaitSolution last;
-  double wall = 0;  ///< median [s]
-  int solves = 0;
-};
-
-Timed solveRepeated(const std::string& path, const Ensemble& e, int repeats) {
+/// The config with the ensemble's variants, solved whole from the polynomial guess.
+bench::TimedSolve solveRepeated(const std::string& path, const Ensemble& e, int repeats) {
   ocp::OcpConfig config = ocp::loadOcpConfig(path);
   config.solver.progress = false;
   if (!e.rescued) {
@@ -50,16 +45,8 @@ Timed solveRepeated(const std::string& path, const Ensemble& e, int repeats) {
   for (const double scale : e.mass_scales) config.shape.variants.push_back({scale});
   const dynamics::Model model = ocp::problemModel(config);
   const gaits::Trajectory guess = ocp::initialGuess(model, config);
-  std::vector<double> wall;
-  Timed t;
-  for (int k = 0; k < repeats; ++k) {
-    t.last = ocp::solveGait(model, config, guess);
-    wall.push_back(t.last.result.wall_time_s);
-    if (t.last.result.wall_time_s > 60) break;
-  }
-  t.solves = static_cast<int>(wall.size());
-  t.wall = bench::median(wall);
-  return t;
+  return bench::timeRepeated([&] { return ocp::solveGait(model, config, guess).result; }, repeats,
+                             60.0);
 }
 
 }  // namespace
@@ -77,9 +64,9 @@ int main(int argc, char** argv) {
       "|---:|---|---|---:|---:|---:|---:|---:|\n");
   double single = 0;
   for (const Ensemble& e : kEnsembles) {
-    const Timed t = solveRepeated(path, e, repeats);
+    const bench::TimedSolve t = solveRepeated(path, e, repeats);
     if (single == 0) single = t.wall;
-    const ocp::SolveResult& r = t.last.result;
+    const ocp::SolveResult& r = t.last;
     fmt::print("| {} | {} | {} | {} | {:.2f} | {:.2f} | {:.2f} | {} |\n", e.mass_scales.size() + 1,
                e.rescued ? "yes" : "no", r.status, r.iterations, r.cost, t.wall, t.wall / single,
                t.solves);

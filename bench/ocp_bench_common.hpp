@@ -33,14 +33,16 @@ struct TimedSolve {
   int solves = 0;         ///< how many solves the medians are of
 };
 
-/// Solves `nlp` `repeats` times, stopping early once one solve took longer than `long_solve_s`
-/// (a solve that slow is timed well enough once, and the iterations do not change).
-inline TimedSolve solveRepeated(const ocp::Nlp& nlp, const ocp::SolverOptions& options, int repeats,
-                                double long_solve_s = std::numeric_limits<double>::infinity()) {
+/// Runs `solve` (a callable returning ocp::SolveResult) `repeats` times, stopping early once one
+/// solve took longer than `long_solve_s` (a solve that slow is timed well enough once, and the
+/// iterations do not change).
+template <class Solve>
+TimedSolve timeRepeated(const Solve& solve, int repeats,
+                        double long_solve_s = std::numeric_limits<double>::infinity()) {
   std::vector<double> wall, callbacks;
   TimedSolve t;
   for (int k = 0; k < repeats; ++k) {
-    t.last = ocp::solveWithIpopt(nlp, options);
+    t.last = solve();
     wall.push_back(t.last.wall_time_s);
     callbacks.push_back(t.last.callback_time_s);
     if (t.last.wall_time_s > long_solve_s) break;
@@ -49,6 +51,12 @@ inline TimedSolve solveRepeated(const ocp::Nlp& nlp, const ocp::SolverOptions& o
   t.callbacks = median(callbacks);
   t.solves = static_cast<int>(wall.size());
   return t;
+}
+
+/// `nlp` solved by Ipopt, timed as timeRepeated.
+inline TimedSolve solveRepeated(const ocp::Nlp& nlp, const ocp::SolverOptions& options, int repeats,
+                                double long_solve_s = std::numeric_limits<double>::infinity()) {
+  return timeRepeated([&] { return ocp::solveWithIpopt(nlp, options); }, repeats, long_solve_s);
 }
 
 }  // namespace gaitopt::bench
