@@ -10,18 +10,16 @@
 # OUT/meshes.{csv,md} and the shipped mesh's (30 + 8) OUT/summary.json.
 # Usage: scripts/ensemble_walks.sh BUILD_DIR OUT_DIR   (from the repository root)
 set -euo pipefail
-build=${1:?usage: $0 BUILD_DIR OUT_DIR}
-out=${2:?usage: $0 BUILD_DIR OUT_DIR}
+# shellcheck source=scripts/study_setup.sh
+source "$(dirname "$0")/study_setup.sh" "$@"  # build, out, bin, work
 gaits=(mu2004_walk mu2004_walk_ensemble)
 bash scripts/walk_table.sh "$build" "$out" rigid_walks rigid "-0.2 -0.1 -0.05 0 0.05 0.1 0.2" \
   "${gaits[@]}"
 bash scripts/walk_table.sh "$build" "$out" lcp_walks lcp "-0.1 0 0.1" "${gaits[@]}"
 COP_LIMIT=saturate bash scripts/walk_table.sh "$build" "$out" dart_walks dart \
   "-0.1 -0.05 0 0.05 0.1" "${gaits[@]}"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 for ssp in 24 27 30 33 36; do
-  "$build/apps/gaitopt" optimize --config configs/ocp/mu2004_walk_ensemble.yaml \
+  "$bin" optimize --config configs/ocp/mu2004_walk_ensemble.yaml \
     --out "$work/mesh_$ssp" --no-plots --quiet --set "phases[0].segments=$ssp" >/dev/null || true
 done
 /usr/bin/python3 - "$work" "$out" <<'PY'

@@ -9,12 +9,8 @@
 # Writes OUT/mu_cases.csv and OUT/mu_cases.md.
 # Usage: scripts/mu_cases.sh BUILD_DIR OUT_DIR   (from the repository root)
 set -euo pipefail
-build=${1:?usage: $0 BUILD_DIR OUT_DIR}
-out=${2:?usage: $0 BUILD_DIR OUT_DIR}
-bin="$build/apps/gaitopt"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-mkdir -p "$out"
+# shellcheck source=scripts/study_setup.sh
+source "$(dirname "$0")/study_setup.sh" "$@"  # build, out, bin, work
 "$bin" poly --robot configs/robots/mu2004_five_link.yaml --gait configs/gaits/mu2004.yaml \
   --out "$work/poly" --no-plots >/dev/null
 "$bin" optimize --config configs/ocp/mu2004_walk.yaml --out "$work/opt" --no-plots --quiet >/dev/null
