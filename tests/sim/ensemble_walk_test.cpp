@@ -22,6 +22,7 @@
 #include "dynamics/model_variation.hpp"
 #include "dynamics/robot_files/robot_config.hpp"
 #include "gaits/export/export_checks.hpp"
+#include "gaits/export/metrics.hpp"
 #include "ocp/guess/initial_guess.hpp"
 #include "ocp/solve/gait_solve.hpp"
 #include "sim/contact/ground_config.hpp"
@@ -125,15 +126,8 @@ TEST_F(EnsembleExport, EveryModelOfTheEnsembleMeetsItsContactConditionsOnTheOneK
   for (int v = 0; v < problem.variants; ++v) {
     const gaits::Trajectory t =
         ocp::reconstructDense(problem, s.nominal, s.solution.result.x, 1000.0, 0, v);
-    double least_normal = INFINITY, worst_friction = 0;
-    for (const gaits::Knot& k : t.knots()) {
-      std::vector<Eigen::Vector2d> tips{k.force_stance};
-      if (k.phase == gaits::Phase::kDsp) tips.push_back(k.force_swing);
-      for (const Eigen::Vector2d& f : tips) {
-        least_normal = std::min(least_normal, f.y());
-        worst_friction = std::max(worst_friction, std::abs(f.x()) / f.y());
-      }
-    }
+    const double least_normal = gaits::minNormalForce(t);
+    const double worst_friction = gaits::maxFrictionRatio(t);
     const double cop = gaits::minFootCopMargin(t, s.nominal);
     const double clearance = gaits::minSwingClearance(t, s.nominal);
     const double drift = gaits::maxDspTipDrift(t, s.nominal);
@@ -151,7 +145,7 @@ TEST_F(EnsembleExport, EveryModelOfTheEnsembleMeetsItsContactConditionsOnTheOneK
   }
 }
 
-/// One instantiation, so that the two optima are solved once (SetUpTestSuite runs per suite).
+/// The plants of the walk test, one instantiation.
 std::vector<Plant> plants() {
   std::vector<Plant> p{{"rigid", -0.1}, {"rigid", 0.2}, {"lcp", 0.0}};
 #ifdef GAITOPT_HAS_DART
