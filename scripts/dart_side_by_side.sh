@@ -7,7 +7,8 @@
 # rigid ground and in DART (`gaitopt stability`). On every plant the controller clips its ankle
 # torque to the foot (--cop-limit saturate): in DART a foot tips by DART's own physics, and the
 # same rule keeps the grounds comparable. Writes OUT/walks.{csv,md} (steps, tracking error, slip,
-# least CoP margin, failure) and OUT/intervals.{csv,md} (the push and mass intervals walked).
+# least CoP margin, largest friction ratio |F_t|/F_n of a loaded tip, largest stance-foot tilt,
+# failure) and OUT/intervals.{csv,md} (the push and mass intervals walked).
 # Usage: scripts/dart_side_by_side.sh BUILD_DIR OUT_DIR   (from the repository root; ~5 minutes)
 set -euo pipefail
 # shellcheck source=scripts/study_setup.sh
@@ -21,7 +22,7 @@ done
 gaits=(poly mu2004_walk mu2004_walk_robust mu2004_walk_ensemble rabbit_kelly2017)
 controller_of() { [[ $1 == rabbit_kelly2017 ]] && echo hzd || echo computed_torque; }
 
-echo "gait,controller,ground,steps,max_tracking_error_rad,max_slip_m,min_cop_margin_m,failure" \
+echo "gait,controller,ground,steps,max_tracking_error_rad,max_slip_m,min_cop_margin_m,max_friction_ratio,max_foot_tilt_rad,failure" \
   >"$out/walks.csv"
 for gait in "${gaits[@]}"; do
   for ground in rigid lcp dart; do
@@ -35,7 +36,7 @@ s = json.load(open(sys.argv[1]))
 margin = s.get("min_cop_margin_m")
 print(",".join(sys.argv[2:]) + f",{s['steps_completed']},{s['max_tracking_error']:.3g},"
       f"{s.get('max_slip_m') or 0:.3g},{'' if margin is None else f'{margin:.3g}'},"
-      + s["failure"].replace(",", ";"))
+      f"{s['max_friction_ratio']:.3g},{s['max_foot_tilt_rad']:.3g}," + s["failure"].replace(",", ";"))
 PY
   done
 done
@@ -61,7 +62,7 @@ PY
 done
 
 /usr/bin/python3 - "$out" <<'PY'
-import csv, os, sys
+import csv, math, os, sys
 out = sys.argv[1]
 walks = list(csv.DictReader(open(os.path.join(out, "walks.csv"))))
 lines = ["| gait (controller) | rigid ground | LCP ground | DART |", "|---|---|---|---|"]
@@ -71,6 +72,9 @@ for gait in dict.fromkeys(r["gait"] for r in walks):
         text = f"{r['steps']} of 20, error {float(r['max_tracking_error_rad']):.2g} rad"
         if float(r["max_slip_m"]) > 0:
             text += f", slip {1000 * float(r['max_slip_m']):.2g} mm"
+        text += f", friction {float(r['max_friction_ratio']):.2f}"
+        if float(r["max_foot_tilt_rad"]) > 0:
+            text += f", foot tilt {math.degrees(float(r['max_foot_tilt_rad'])):.2g} deg"
         return text + (f" ({r['failure']})" if int(r["steps"]) < 20 else "")
     lines.append(f"| `{gait}` ({rows['rigid']['controller']}) | "
                  + " | ".join(cell(rows[g]) for g in ("rigid", "lcp", "dart")) + " |")

@@ -41,9 +41,11 @@ struct FootBody {
 };
 
 /// The feet `gaitopt export-urdf` writes: 50 g each, about 0.2% of the lightest shipped robot
-/// (10 kg), so that the walk's dynamics stay the model's; a 2 cm sole.
+/// (10 kg), so that the walk's dynamics stay the model's; a 2 cm sole. A point foot's ball has a
+/// 5 mm radius: a ball fixed to the shank rolls its centre r per radian the shank turns (2.2 mm
+/// per RABBIT step in DART, 8.7 mm with r = 2 cm, near the 1 cm slip limit of a walk).
 inline constexpr FootBody kExportFoot{
-    .mass = 0.05, .thickness = 0.02, .width = 0.1, .radius = 0.02};
+    .mass = 0.05, .thickness = 0.02, .width = 0.1, .radius = 0.005};
 
 /// Link names the URDF adds to the model's.
 inline constexpr const char* kStanceFootLink = "stance_foot";

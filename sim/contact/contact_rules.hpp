@@ -14,6 +14,7 @@
 ///                saturates: it rolls onto its toe as it unloads, which is walking, not a failure;
 ///   a pull       a stance tip (or the leading tip in double support) whose normal force would
 ///                have to pull on the ground: it lifts off.
+#include <cmath>
 #include <limits>
 #include <numbers>
 
@@ -62,6 +63,14 @@ inline double loadedCopMargin(double tau0, double force_y, const dynamics::Foot&
                               double weight) {
   if (force_y < kLoadedFoot * weight) return std::numeric_limits<double>::infinity();
   return dynamics::copMargin(dynamics::stanceCop(tau0, force_y), foot);
+}
+
+/// |F_t| / F_n of a tip carrying at least kLoadedFoot of `weight` [N], else 0: the share of
+/// Coulomb's cone the gait uses (a tip that only touches says nothing about slipping; on the
+/// compliant, LCP and DART grounds it is capped at mu, where the tip slides). What summary.json
+/// records as max_friction_ratio.
+inline double loadedFrictionRatio(const Eigen::Vector2d& force, double weight) {
+  return force.y() < kLoadedFoot * weight ? 0.0 : std::abs(force.x()) / force.y();
 }
 
 }  // namespace gaitopt::sim

@@ -39,9 +39,14 @@ double rateOf(const BodyNode* body) {
   return body->getAngularVelocity().y();
 }
 
+/// A point foot (heel = toe = 0) is exported as a sphere on the tip (urdf_export.hpp).
+bool pointFeet(const dynamics::Model& plant) {
+  return plant.foot().heel + plant.foot().toe <= 0;
+}
+
 /// How deep the sole lies below the tip (urdf_export.hpp) [m].
 double soleDepth(const dynamics::Model& plant, const dynamics::FootBody& foot) {
-  return plant.foot().heel + plant.foot().toe > 0 ? foot.thickness : foot.radius;
+  return pointFeet(plant) ? foot.radius : foot.thickness;
 }
 
 /// Coulomb friction mu along the walking plane (x) and none across it. The skeleton is planar, so
@@ -85,7 +90,9 @@ class DartPlant {
           true);
     world_->step();
     forces_ = contactForces();
-    ContactStep out{observe(), {}, ""};
+    // A point foot's ball turns with its locked ankle: it has no flat to tilt from.
+    const double tilt = pointFeet(plant_) ? 0.0 : angleOf(feet_[static_cast<size_t>(side_)]);
+    ContactStep out{observe(), {}, "", tilt};
     out.next.hip_force = s.hip_force;
     out.force = {forces_[static_cast<size_t>(side_)], forces_[static_cast<size_t>(1 - side_)]};
     return out;
@@ -132,14 +139,20 @@ class DartPlant {
     const VecD theta = s.q.tail(n), dtheta = s.v.tail(n);
     root_->setPositions(Eigen::Vector3d(s.q(1), s.q(0), 0));
     root_->setVelocities(Eigen::Vector3d(s.v(1), s.v(0), 0));
-    ankles_[0]->setPosition(theta(0));
-    ankles_[0]->setVelocity(dtheta(0));
+    if (pointFeet(plant_)) {
+      // The locked ankle turns the ball with the shank: the root carries the shank's rate.
+      root_->setPositions(Eigen::Vector3d(s.q(1), s.q(0), theta(0)));
+      root_->setVelocities(Eigen::Vector3d(s.v(1), s.v(0), dtheta(0)));
+    } else {
+      ankles_[0]->setPosition(theta(0));
+      ankles_[0]->setVelocity(dtheta(0));
+    }
     for (int j = 1; j < n; ++j) {
       joints_[static_cast<size_t>(j - 1)]->setPosition(theta(j - 1) - theta(j));
       joints_[static_cast<size_t>(j - 1)]->setVelocity(dtheta(j - 1) - dtheta(j));
     }
     ankles_[1]->setPosition(theta(n - 1) + std::numbers::pi);  // the swing foot level
-    ankles_[1]->setVelocity(dtheta(n - 1));
+    ankles_[1]->setVelocity(pointFeet(plant_) ? 0.0 : dtheta(n - 1));
     started_ = true;
   }
 
@@ -204,6 +217,10 @@ class DartPlant {
   /// loaded foot, a free hinge as the model's leading tip in double support (conventions.hpp).
   /// Set before the forces: DART applies a force joint's command, which setForces writes.
   void actuateAnkles() {
+    if (pointFeet(plant_)) {
+      for (auto* ankle : ankles_) ankle->getJoint()->setActuatorType(dart::dynamics::Joint::LOCKED);
+      return;
+    }
     ankles_[static_cast<size_t>(side_)]->getJoint()->setActuatorType(dart::dynamics::Joint::FORCE);
     ankles_[static_cast<size_t>(1 - side_)]->getJoint()->setActuatorType(
         swingServo() ? dart::dynamics::Joint::SERVO : dart::dynamics::Joint::FORCE);

@@ -19,6 +19,11 @@
 /// load: a velocity servo (DART's servo motor constraint, solved with the contacts) turns it back
 /// to level within a few time steps; loaded, the ankle is a free hinge, as the model's leading
 /// tip in double support (conventions.hpp).
+///
+/// Point feet (RABBIT) are balls on the tip whose ankles stay locked: the model's tip is a pivot,
+/// and a ball on a free hinge is a wheel (the stance tip rolled 9.8 mm in 51 ms under 0.1 N of
+/// floor traction). A locked ball rolls its centre by its radius per radian the shank turns,
+/// hence the small radius of kExportFoot.
 #include "sim/contact/ground_model.hpp"
 #include "sim/walk/free_base_walk.hpp"
 

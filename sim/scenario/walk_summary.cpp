@@ -85,6 +85,8 @@ nlohmann::ordered_json contactJson(const WalkResult& w) {
   else
     j["min_cop_margin_m"] = nullptr;
   j["cop_saturated_time_s"] = w.cop_saturated_time;
+  j["max_friction_ratio"] = w.max_friction_ratio;
+  j["max_foot_tilt_rad"] = w.max_foot_tilt;
   return j;
 }
 

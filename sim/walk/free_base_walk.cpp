@@ -35,8 +35,9 @@ struct StepRun {
   double b_x0 = 0;  ///< world x of the stance tip at the step start [m]
   double e_x0 = 0;  ///< world x of the swing tip at touchdown [m]
   TipForces force;
-  Eigen::VectorXd memory;  ///< the controller's, from phaseStartMemory at each phase start
-  PhaseStart start;        ///< the robot's departure faded out of the reference (SSP only)
+  double stance_foot_tilt = 0;  ///< ContactStep's [rad]
+  Eigen::VectorXd memory;       ///< the controller's, from phaseStartMemory at each phase start
+  PhaseStart start;             ///< the robot's departure faded out of the reference (SSP only)
 };
 
 /// The stance ankle's torque and what the foot can carry (contact_rules.hpp), at B's normal force
@@ -163,6 +164,12 @@ struct Walker {
     r.max_tracking_error =
         std::max(r.max_tracking_error, (theta - VecD(k.theta)).cwiseAbs().maxCoeff());
     r.slip = std::max(r.slip, slip(run));
+    const double weight = plant.totalMass() * plant.gravity();
+    r.max_friction_ratio = std::max({r.max_friction_ratio, loadedFrictionRatio(run.force.b, weight),
+                                     loadedFrictionRatio(run.force.e, weight)});
+    // The trailing foot rolling onto its toe in double support is walking (contact_rules.hpp).
+    if (run.phase == Phase::kSsp && run.force.b(1) >= kLoadedFoot * weight)
+      r.max_foot_tilt = std::max(r.max_foot_tilt, std::abs(run.stance_foot_tilt));
     const VecD tau = controller.torque(run.phase, theta, dtheta, k, run.memory);
     r.failure = recordAnkle(run, tau, ground.time_step, r);
     if (!log) return;
@@ -181,6 +188,7 @@ struct Walker {
     advanceMemory(run, run.s, h);
     run.s = cs.next;
     run.force = cs.force;
+    run.stance_foot_tilt = cs.stance_foot_tilt;
     run.clock += h;
     run.elapsed += h;
     run.b_unloaded = run.force.b(1) > 0 ? 0 : run.b_unloaded + h;

@@ -54,8 +54,9 @@ using TorqueFeedback =
 /// One time step of a contact law.
 struct ContactStep {
   FreeBaseState next;
-  TipForces force;      ///< at the end of the step, or its average over the step
-  std::string failure;  ///< "" unless the law could not take the step
+  TipForces force;              ///< at the end of the step, or its average over the step
+  std::string failure;          ///< "" unless the law could not take the step
+  double stance_foot_tilt = 0;  ///< B's foot's turn from flat: feet that are bodies (DART) [rad]
 };
 
 using ContactLaw = std::function<ContactStep(const FreeBaseState&, const TorqueFeedback&)>;

@@ -11,6 +11,8 @@ bool appendStep(WalkResult& walk, const StepResult& step) {
   walk.max_slip = std::max(walk.max_slip, step.slip);
   walk.min_cop_margin = std::min(walk.min_cop_margin, step.min_cop_margin);
   walk.cop_saturated_time += step.cop_saturated_time;
+  walk.max_friction_ratio = std::max(walk.max_friction_ratio, step.max_friction_ratio);
+  walk.max_foot_tilt = std::max(walk.max_foot_tilt, step.max_foot_tilt);
   walk.steps.push_back(step);
   if (!step.ok) {
     walk.fell = true;

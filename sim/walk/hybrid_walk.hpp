@@ -73,7 +73,11 @@ struct StepResult {
   /// loadedCopMargin); +inf without an actuated ankle [m].
   double min_cop_margin = std::numeric_limits<double>::infinity();
   double cop_saturated_time = 0;  ///< time the ankle torque was saturated [s]
-  double stance_velocity = 0;     ///< the new stance tip's sliding velocity at the next start [m/s]
+  double max_friction_ratio = 0;  ///< largest loadedFrictionRatio of a tip (contact_rules.hpp)
+  /// Largest turn of a loaded foot from flat [rad]: DART's feet are bodies; the other grounds'
+  /// feet are CoP bounds and never turn (their foot rotation is min_cop_margin < 0).
+  double max_foot_tilt = 0;
+  double stance_velocity = 0;  ///< the new stance tip's sliding velocity at the next start [m/s]
 };
 
 /// Simulates one step of `plant` under `controller` from the SSP start (theta0, dtheta0), B at
@@ -122,6 +126,8 @@ struct WalkResult {
   double max_slip = 0;            ///< largest StepResult::slip [m]
   double min_cop_margin = std::numeric_limits<double>::infinity();  ///< least of the steps' [m]
   double cop_saturated_time = 0;                                    ///< [s]
+  double max_friction_ratio = 0;  ///< largest StepResult::max_friction_ratio
+  double max_foot_tilt = 0;       ///< largest StepResult::max_foot_tilt [rad]
   std::vector<StepResult> steps;
 };
 

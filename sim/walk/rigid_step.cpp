@@ -90,6 +90,10 @@ struct StepRecorder {
       if (e_on_ground)
         result.slip = std::max(result.slip, std::abs(swingTipOf(c, x)(0) - e_anchor));
       result.min_cop_margin = std::min(result.min_cop_margin, s.cop_margin);
+      const double weight = c.plant.totalMass() * c.plant.gravity();
+      result.max_friction_ratio =
+          std::max({result.max_friction_ratio, loadedFrictionRatio(s.force_stance, weight),
+                    loadedFrictionRatio(s.force_swing, weight)});
       if (s.saturated && last) result.cop_saturated_time += t - *last;
       last = t;
       if (log)

@@ -38,7 +38,8 @@ class WalkRecorder {
 };
 
 /// steps.csv: step, ok, impact, ssp_duration, dsp_duration, advance, max_tracking_error, slip,
-/// min_cop_margin (inf without an actuated ankle), failure.
+/// min_cop_margin (inf without an actuated ankle), max_friction_ratio, max_foot_tilt [rad],
+/// failure.
 void writeStepsCsv(const WalkResult& walk, const std::string& path);
 
 }  // namespace gaitopt::sim

@@ -121,6 +121,28 @@ TEST(RigidSlip, ASlipBeyondTheLimitEndsTheWalk) {
   EXPECT_NE(w.failure.find(kSlip), std::string::npos) << w.failure;
 }
 
+// The share of Coulomb's cone a walk records (contact_rules.hpp loadedFrictionRatio) is near the
+// one its gait asks for while the tips stick, read off the gait's own knots; a tip that slides
+// uses the whole cone.
+TEST(FrictionRatio, AStickingWalkUsesTheShareItsGaitAsksAndASlidingOneTheWholeCone) {
+  const dynamics::Model& robot = test::longHeelRobot();
+  const double weight = robot.totalMass() * robot.gravity();
+  double asked = 0;
+  for (const gaits::Knot& k : test::polynomialGait().knots())
+    asked = std::max({asked, loadedFrictionRatio(k.force_stance, weight),
+                      loadedFrictionRatio(k.force_swing, weight)});
+  const WalkResult sticking = rigidWalk(1.0, 3);
+  ASSERT_EQ(sticking.steps_completed, 3) << sticking.failure;
+  // Measured 0.289 against the gait's 0.311, both at the double support's start: there the
+  // walk's tips take 33.8 and -39.0 N along the ground where the gait's take 30.5 and -42.0 N,
+  // at the same normal forces (154.5 and 135.0 N).
+  EXPECT_NEAR(sticking.max_friction_ratio, asked, 0.03);
+  // Below the 0.289 that walk used, a tip slides at the cone's edge until the slip ends the walk.
+  const WalkResult sliding = rigidWalk(0.25, 3);
+  ASSERT_NE(sliding.failure.find(kSlip), std::string::npos) << sliding.failure;
+  EXPECT_DOUBLE_EQ(sliding.max_friction_ratio, 0.25);
+}
+
 TEST(RigidSlip, AStanceTipLeftSlidingByAnImpactSlidesUntilItSticks) {
   const Reference ref(test::polynomialGait());
   const auto step = [&](double v, const ContactRules& rules) {

@@ -1,17 +1,21 @@
 // The polynomial gait of Mu (2004) under computed torque in DART (sim/contact/dart_walk.hpp): the
 // robot exported as a URDF, its box feet on DART's floor, the loop closed at 2 kHz. Single support
 // tracks the gait on DART's state, and the stance foot rests on the floor as on a rigid one: it
-// neither sinks nor slides while its force stays inside the friction cone. (Walks of several
-// steps, of the gait designed to be walked: dart_walk_full_test.cpp.)
+// neither sinks nor slides while its force stays inside the friction cone. RABBIT's point feet
+// pivot as the model's tips do. (Walks of several steps, of the gait designed to be walked:
+// dart_walk_full_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
+#include "dynamics/robot_files/urdf_export.hpp"
 #include "five_link_gait.hpp"
 #include "sim/contact/ground_config.hpp"
+#include "sim/controllers/hzd_controller.hpp"
 #include "sim/walk/walk.hpp"
+#include "support/solved_config.hpp"
 
 namespace gaitopt::sim {
 namespace {
@@ -35,7 +39,7 @@ TEST(DartWalk, SingleSupportTracksTheGaitWithTheStanceFootAtRest) {
     slide = std::max(slide, std::abs(s.stance_x - x0));
     friction_ratio = std::max(friction_ratio, std::abs(s.force_stance(0) / s.force_stance(1)));
   };
-  walk(plant, test::computedTorque(), ref, ground, {1, {}, {}}, log);
+  const WalkResult w = walk(plant, test::computedTorque(), ref, ground, {1, {}, {}}, log);
   EXPECT_EQ(samples, 900) << "the loop closes at 2 kHz through 0.05..0.5 s of single support";
   EXPECT_LT(error, 0.01) << "measured 0.0054 rad";
   EXPECT_LT(load, 0.1) << "the stance foot carries the weight (a swing foot of 0.05 kg aside)";
@@ -44,6 +48,48 @@ TEST(DartWalk, SingleSupportTracksTheGaitWithTheStanceFootAtRest) {
   EXPECT_LT(depth, 2e-5)
       << "measured 1.3e-6 m (3.7 mm with friction across the plane, dart_walk.cpp)";
   EXPECT_LT(slide, 1e-5) << "measured 8e-8 m";
+  EXPECT_LT(w.max_foot_tilt, 1e-3) << "the loaded foot lies flat";
+}
+
+// On the shipped 5 cm heel the same gait asks for a centre of pressure up to 0.197 m behind the
+// tip (five_link_gait.hpp): in DART the foot is a body, and it tips back onto its heel (measured
+// 0.37 rad) before the stance tip slides off its mark.
+TEST(DartWalk, AFootAskedForACentreOfPressureOffItTips) {
+  const GroundModel ground =
+      loadGround(std::string(GAITOPT_SOURCE_DIR) + "/configs/grounds/dart.yaml");
+  const WalkResult w = walk(test::fiveLinkRobot(), test::computedTorque(),
+                            Reference(test::polynomialGait()), ground, {1, {}, {}});
+  EXPECT_EQ(w.steps_completed, 0);
+  EXPECT_GT(w.max_foot_tilt, 0.2);
+}
+
+// A point foot is a ball on a locked ankle (dart_walk.hpp): the model's tip is a pivot, and the
+// ball only rolls its centre by its radius per radian the shank turns. Kelly's optimum for RABBIT
+// (configs/ocp/rabbit_kelly2017.yaml) under HZD walks 10 steps in DART with each stance tip
+// within that roll of where it landed. On a free ankle hinge the ball was a wheel: the stance
+// tip rolled 9.8 mm within 51 ms and the walk failed in step 1.
+TEST(DartWalk, PointFeetPivotAsTheModelsTipsDo) {
+  const gaitopt::test::SolvedConfig rabbit(
+      ocp::loadOcpConfig(gaitopt::test::shippedOcpConfig("rabbit_kelly2017")));
+  ASSERT_TRUE(rabbit.result.success) << rabbit.result.status;
+  const gaits::Trajectory gait =
+      ocp::reconstructDense(rabbit.problem, rabbit.model, rabbit.result.x, 1000.0);
+  const Reference ref(gait);
+  const auto controller =
+      makeHzdController(rabbit.model, ref, std::make_unique<PdLaw>(TrackingGains{}));
+  const GroundModel ground =
+      loadGround(std::string(GAITOPT_SOURCE_DIR) + "/configs/grounds/dart.yaml");
+  const WalkResult w = walk(rabbit.model, *controller, ref, ground, {10, {}, {}});
+  ASSERT_EQ(w.steps_completed, 10) << w.failure;
+  double lowest = INFINITY, highest = -INFINITY;  // the stance shank's sweep over a step
+  for (const gaits::Knot& k : gait.knots()) {
+    lowest = std::min(lowest, k.theta(0));
+    highest = std::max(highest, k.theta(0));
+  }
+  const double roll = dynamics::kExportFoot.radius * (highest - lowest);
+  EXPECT_LT(w.max_slip, roll + 2e-4) << "the ball's roll " << roll << " m; measured 2.162 mm of "
+                                     << "a 2.166 mm roll";
+  EXPECT_NEAR(completedTotals(w).distance / 10, gait.stepLength(), 1e-3);
 }
 
 }  // namespace
