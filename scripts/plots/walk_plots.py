@@ -32,7 +32,7 @@ import plot_io  # noqa: E402
 from plot_io import InputError  # noqa: E402
 
 PHASES = ("SSP", "DSP")
-IMPACTS = ("double", "single", "compliant", "lcp", "")
+IMPACTS = ("double", "single", "compliant", "lcp", "dart", "")
 WALK_TAIL = ["fb_x", "fb_y", "fe_x", "fe_y", "hip_x", "hip_y"]
 STEPS_COLUMNS = ["step", "ok", "impact", "ssp_duration", "dsp_duration", "advance",
                  "max_tracking_error", "failure"]

@@ -50,6 +50,25 @@ assert d["poincare_max_multiplier"] is None  # the return map is the rigid model
 PY
 done
 
+# (b2) in DART (a -DGAITOPT_DART=ON build): the same 2 steps on feet that are bodies, its
+# pictures drawn, and a report page that animates it like any other walk.
+run simulate --robot "$LONG_HEEL" --reference "$REF" --steps 2 --ground dart --no-poincare \
+  --out "$TMP/dart"
+if grep -q "needs a build with DART" "$TMP/err"; then
+  echo "note: (b2) skipped: this build has no DART"
+else
+  [[ $RC -eq 0 ]] || fail "(b2) dart exited $RC: $(cat "$TMP/err")"
+  grep -q "plotting failed" "$TMP/err" && fail "(b2) $(cat "$TMP/err")"
+  check_json "(b2) dart summary" "$TMP/dart/summary.json" <<'PY'
+assert d["steps_completed"] == 2 and not d["fell"], d["failure"]
+assert abs(d["mean_step_length"] - 0.35) < 5e-3, d["mean_step_length"]
+assert d["max_foot_tilt_rad"] < 1e-3, d["max_foot_tilt_rad"]  # 7.9e-5 rad measured
+PY
+  [[ -f "$TMP/dart/walk_overview.png" ]] || fail "(b2) no walk_overview.png"
+  run report "$TMP/dart" --no-gif
+  [[ $RC -eq 0 && -s "$TMP/dart/report.html" ]] || fail "(b2) report exited $RC: $(cat "$TMP/err")"
+fi
+
 # (c) Mu's uncertainty case 3 on the plant: the polynomial gait falls, which is a result.
 run simulate --robot "$LONG_HEEL" --reference "$REF" --steps 3 --uncertainty-case 3 --no-plots --out "$TMP/case3"
 [[ $RC -eq 0 ]] || fail "(c) a fall must exit 0, got $RC: $(cat "$TMP/err")"
