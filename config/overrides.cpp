@@ -5,6 +5,7 @@
 #include <utility>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "config/config_error.hpp"
 
@@ -70,6 +71,22 @@ Override parseOverride(const std::string& text) {
 std::vector<Override> parseOverrides(const std::vector<std::string>& texts) {
   std::vector<Override> overrides;
   for (const std::string& text : texts) overrides.push_back(parseOverride(text));
+  return overrides;
+}
+
+std::vector<Override> scopedOverrides(const std::vector<std::string>& texts,
+                                      const std::string& scope,
+                                      const std::vector<std::string>& scopes) {
+  std::vector<Override> overrides;
+  for (const Override& o : parseOverrides(texts)) {
+    const std::size_t dot = o.key.find('.');
+    const std::string prefix = o.key.substr(0, dot);
+    if (dot == std::string::npos || std::find(scopes.begin(), scopes.end(), prefix) == scopes.end())
+      throw ConfigError("--set", o.key, 0,
+                        fmt::format("'{}': the key starts with the file it sets: {}.KEY", o.text(),
+                                    fmt::join(scopes, ".KEY or ")));
+    if (prefix == scope) overrides.push_back({o.key.substr(dot + 1), o.value});
+  }
   return overrides;
 }
 

@@ -23,6 +23,13 @@ Override parseOverride(const std::string& text);
 /// parseOverride of each text, in order (a command's repeated --set).
 std::vector<Override> parseOverrides(const std::vector<std::string>& texts);
 
+/// The overrides of one of a command's several files: "robot.foot.heel=0.3" is key "foot.heel"
+/// of the file of scope "robot". @throws ConfigError naming --set and the scopes when a text
+/// starts with none of them.
+std::vector<Override> scopedOverrides(const std::vector<std::string>& texts,
+                                      const std::string& scope,
+                                      const std::vector<std::string>& scopes);
+
 /// Sets each override's value in the document `root`, creating missing mappings on the way
 /// (the reader then refuses keys it does not know). @throws ConfigError naming --set and the
 /// key when the path runs through a value that is not a mapping, or past a list's end.

@@ -32,7 +32,8 @@ const VecD& sized(const Model& model, const VecD& v, const char* name) {
 
 void bindRobot(py::module_& m) {
   py::class_<Model>(m, "Robot", "A planar biped loaded from a robot YAML (configs/robots/).")
-      .def(py::init(&dynamics::loadRobot), py::arg("path"),
+      .def(py::init([](const std::string& path) { return dynamics::loadRobot(path); }),
+           py::arg("path"),
            "Loads and checks a robot file; InputError names the file and key of a bad value.")
       .def_property_readonly("name", &Model::name)
       .def_property_readonly("n_links", &Model::nLinks)

@@ -87,6 +87,11 @@ void addScenarioOptions(CLI::App* cmd, sim::ScenarioSettings& o) {
   cmd->add_option("--gain-scale", o.gain_scale, "Controller bandwidth factor (kp by s^2, kd by s)")
       ->check(quantityRange(config::kGainScale))
       ->capture_default_str();
+  cmd->add_option("--set", o.sets,
+                  "Replace one value of the robot or ground file, e.g. --set robot.foot.heel=0.1 "
+                  "or --set ground.time_step=0.001 (repeatable; checked as the file is, recorded "
+                  "in summary.json)")
+      ->option_text("robot.KEY=VALUE|ground.KEY=VALUE");
   addContactOptions(cmd, o.rules);
 }
 

@@ -8,7 +8,7 @@
 namespace gaitopt::apps {
 
 /// Adds --reference, --robot, --controller, --ground, --steps, --uncertainty-case, --friction,
-/// --push, --gain-scale and --uncertainty-on.
+/// --push, --gain-scale, --uncertainty-on and --set.
 void addScenarioOptions(CLI::App* cmd, sim::ScenarioSettings& o);
 
 }  // namespace gaitopt::apps

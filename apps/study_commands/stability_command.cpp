@@ -180,8 +180,8 @@ void printRegion(const std::string& name, const nlohmann::ordered_json& j) {
 void runStability(const StabilityOptions& o) {
   if (o.sweeps.empty() && o.maps.empty())
     throw config::ConfigError("--sweep", "", 0, "nothing to do: give --sweep or --map");
-  const sim::ReferenceFolder ref =
-      sim::loadReferenceFolder(o.scenario.reference_dir, o.scenario.robot_path);
+  const sim::ReferenceFolder ref = sim::loadReferenceFolder(
+      o.scenario.reference_dir, o.scenario.robot_path, sim::robotOverrides(o.scenario));
   sim::requireControllerFits(o.scenario, ref.model);
   const sim::Reference reference(ref.step, ref.model);
   sim::Scenario base = sim::makeScenario(o.scenario);

@@ -41,8 +41,8 @@ Joint readJoint(const YamlReader& r) {
 
 }  // namespace
 
-Model loadRobot(const std::string& path) {
-  const YamlReader root = YamlReader::fromFile(path);
+Model loadRobot(const std::string& path, const std::vector<config::Override>& overrides) {
+  const YamlReader root = YamlReader::fromFile(path, overrides);
   root.allowOnly({"name", "description", "gravity", "friction", "foot", "links", "joints"});
   const std::string name = root.string("name");
   root.stringOr("description", "");

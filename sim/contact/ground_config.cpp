@@ -46,8 +46,9 @@ DartGround readDartGround(const YamlReader& root) {
   return DartGround{groundTimeStep(root)};
 }
 
-GroundModel loadGround(const std::string& yaml_path) {
-  const auto root = YamlReader::fromFile(yaml_path);
+GroundModel loadGround(const std::string& yaml_path,
+                       const std::vector<config::Override>& overrides) {
+  const auto root = YamlReader::fromFile(yaml_path, overrides);
   return groundEntry(root.choice("model", groundNames())).read(root);
 }
 

@@ -74,12 +74,14 @@ void requireGaitOf(const std::string& dir, const dynamics::Model& model) {
                     io::printable(json["robot"].get<std::string>()), model.name()));
 }
 
-ReferenceFolder loadReferenceFolder(const std::string& dir, const std::string& robot_path) {
+ReferenceFolder loadReferenceFolder(const std::string& dir, const std::string& robot_path,
+                                    const std::vector<config::Override>& robot_overrides) {
   if (!std::filesystem::is_directory(dir))
     throw config::ConfigError(dir, "", 0, "not a folder (expected a gait result folder)");
   const std::string robot = robot_path.empty() ? robotOfFolder(dir) : robot_path;
   // The plant and the controller's model walk on the slope the reference was designed for.
-  dynamics::Model model = dynamics::withSlope(dynamics::loadRobot(robot), slopeOfFolder(dir));
+  dynamics::Model model =
+      dynamics::withSlope(dynamics::loadRobot(robot, robot_overrides), slopeOfFolder(dir));
   requireGaitOf(dir, model);
   gaits::Trajectory step = gaits::readTrajectoryCsv(dir + "/trajectory.csv", model);
   if (step.knots().size() < 2)

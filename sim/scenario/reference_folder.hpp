@@ -3,6 +3,9 @@
 /// A gait result folder (from `gaitopt poly` or `gaitopt optimize`) as the input of the
 /// closed-loop commands: its robot and its one-step trajectory.csv.
 #include <string>
+#include <vector>
+
+#include "config/overrides.hpp"
 
 #include "dynamics/model.hpp"
 #include "gaits/trajectory/trajectory.hpp"
@@ -27,6 +30,8 @@ void requireGaitOf(const std::string& dir, const dynamics::Model& model);
 /// summary.json's "slope_rad" (0 when absent), so a simulation walks the reference's slope.
 /// @throws config::ConfigError naming the file and what is wrong (missing folder, unknown robot,
 ///         a trajectory that does not fit the robot).
-ReferenceFolder loadReferenceFolder(const std::string& dir, const std::string& robot_path);
+/// `robot_overrides` replace values of the robot file (a command's --set robot.KEY=V).
+ReferenceFolder loadReferenceFolder(const std::string& dir, const std::string& robot_path,
+                                    const std::vector<config::Override>& robot_overrides = {});
 
 }  // namespace gaitopt::sim

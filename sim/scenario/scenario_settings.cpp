@@ -35,11 +35,20 @@ std::string groundRecord(const std::string& ground) {
   return findGround(ground) ? "configs/grounds/" + ground + ".yaml" : ground;
 }
 
+namespace {
+const std::vector<std::string> kFileScopes{"robot", "ground"};
+}  // namespace
+
+std::vector<config::Override> robotOverrides(const ScenarioSettings& o) {
+  return config::scopedOverrides(o.sets, "robot", kFileScopes);
+}
+
 Scenario makeScenario(const ScenarioSettings& o) {
   Scenario s;
   s.controller = o.controller;
   s.steps = o.steps;
-  s.ground = loadGround(groundPath(o.ground));
+  s.ground =
+      loadGround(groundPath(o.ground), config::scopedOverrides(o.sets, "ground", kFileScopes));
   s.parameter_errors = dynamics::muUncertaintyCase(o.uncertainty_case);
   s.errors_on_controller = o.uncertainty_on == "controller";
   s.mu_gains = muTable42(o.uncertainty_case);
@@ -69,37 +78,39 @@ void requireControllerFits(const ScenarioSettings& o, const dynamics::Model& mod
 }
 
 nlohmann::ordered_json scenarioJson(const ScenarioSettings& o, const Scenario& s) {
-  return {{"reference", o.reference_dir},
-          {"controller", s.controller},
-          {"gain_scale", s.gain_scale},
-          {"ground", groundName(s.ground)},
-          {"ground_file", groundRecord(o.ground)},
-          {"uncertainty_case", o.uncertainty_case},
-          {"uncertainty_on", o.uncertainty_on},
-          {"parameter_errors",
-           {{"mass", s.parameter_errors.mass},
-            {"inertia", s.parameter_errors.inertia},
-            {"length", s.parameter_errors.length},
-            {"com", s.parameter_errors.com}}},
-          {"push_impulse_Ns", o.push},
-          {"mu_sliding_mode",
-           {{"gains_table_4_2",
-             {{"ssp_lambda", s.mu_gains.ssp_lambda},
-              {"ssp_gamma", s.mu_gains.ssp_gamma},
-              {"ssp_sigma", s.mu_gains.ssp_sigma},
-              {"dsp_lambda", s.mu_gains.dsp_lambda},
-              {"dsp_alpha", s.mu_gains.dsp_alpha},
-              {"dsp_sigma", s.mu_gains.dsp_sigma}}},
-            {"uncertainty_bound",
-             {{"mass", s.uncertainty_bound.mass},
-              {"inertia", s.uncertainty_bound.inertia},
-              {"length", s.uncertainty_bound.length},
-              {"com", s.uncertainty_bound.com}}},
-            {"uncertainty_side", muBoundSide(s) == BoundSide::kOverestimated
-                                     ? "model overestimates (Mu sec. 4.2)"
-                                     : "either way"}}},
-          {"steps_requested", s.steps},
-          {"contact_rules", contactRulesJson(s.rules)}};
+  nlohmann::ordered_json j{{"reference", o.reference_dir},
+                           {"controller", s.controller},
+                           {"gain_scale", s.gain_scale},
+                           {"ground", groundName(s.ground)},
+                           {"ground_file", groundRecord(o.ground)},
+                           {"uncertainty_case", o.uncertainty_case},
+                           {"uncertainty_on", o.uncertainty_on},
+                           {"parameter_errors",
+                            {{"mass", s.parameter_errors.mass},
+                             {"inertia", s.parameter_errors.inertia},
+                             {"length", s.parameter_errors.length},
+                             {"com", s.parameter_errors.com}}},
+                           {"push_impulse_Ns", o.push},
+                           {"mu_sliding_mode",
+                            {{"gains_table_4_2",
+                              {{"ssp_lambda", s.mu_gains.ssp_lambda},
+                               {"ssp_gamma", s.mu_gains.ssp_gamma},
+                               {"ssp_sigma", s.mu_gains.ssp_sigma},
+                               {"dsp_lambda", s.mu_gains.dsp_lambda},
+                               {"dsp_alpha", s.mu_gains.dsp_alpha},
+                               {"dsp_sigma", s.mu_gains.dsp_sigma}}},
+                             {"uncertainty_bound",
+                              {{"mass", s.uncertainty_bound.mass},
+                               {"inertia", s.uncertainty_bound.inertia},
+                               {"length", s.uncertainty_bound.length},
+                               {"com", s.uncertainty_bound.com}}},
+                             {"uncertainty_side", muBoundSide(s) == BoundSide::kOverestimated
+                                                      ? "model overestimates (Mu sec. 4.2)"
+                                                      : "either way"}}},
+                           {"steps_requested", s.steps},
+                           {"contact_rules", contactRulesJson(s.rules)}};
+  if (!o.sets.empty()) j["config_overrides"] = o.sets;
+  return j;
 }
 
 }  // namespace gaitopt::sim

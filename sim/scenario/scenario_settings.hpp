@@ -32,7 +32,13 @@ struct ScenarioSettings {
   std::optional<double> mass_error, length_error;
   double gain_scale = 1;
   ContactRules rules;  ///< slip, CoP and restitution settings (contact_rules.hpp)
+  /// --set robot.KEY=VALUE and ground.KEY=VALUE: values of the robot and ground files.
+  std::vector<std::string> sets;
 };
+
+/// The --set overrides of the robot file. @throws config::ConfigError for a key that names
+/// neither the robot nor the ground file.
+std::vector<config::Override> robotOverrides(const ScenarioSettings& o);
 
 /// The ground YAML `ground` names: a registered ground's configs/grounds/<name>.yaml or a file
 /// path. @throws config::ConfigError listing the registered grounds when it is neither.

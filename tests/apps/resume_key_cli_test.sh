@@ -119,6 +119,7 @@ STABILITY_KEYED=(
   "--sweep|push=0:1:3|sweeps"
   "--map|push,mass_error|maps"
   "--poincare||poincare"
+  "--set|robot.friction=0.5|config_overrides"
 )
 # OPTION|VALUE|why it does not shape a row ("-" as VALUE: not rerun).
 COMMON_FREE=(

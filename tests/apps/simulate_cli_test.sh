@@ -86,6 +86,21 @@ check_json "(c2) summary" "$TMP/point/summary.json" <<'PY'
 assert d["parameter_errors"] == {"mass": -0.05, "inertia": -0.05, "length": 0.025, "com": 0.025}, d
 PY
 
+# (c3) --set replaces values of the robot and ground files: the shipped robot given the long
+# heel on the command line walks the steps its 5 cm heel fails, and summary.json records it.
+run simulate --reference "$REF" --steps 2 --no-poincare --no-plots --out "$TMP/set" \
+  --set robot.foot.heel=0.30 --set robot.foot.toe=0.15 --set ground.time_step=0.0005
+[[ $RC -eq 0 ]] || fail "(c3) expected exit 0, got $RC: $(cat "$TMP/err")"
+check_json "(c3) summary" "$TMP/set/summary.json" <<'PY'
+assert d["steps_completed"] == 2 and not d["fell"], d["failure"]
+assert d["config_overrides"] == ["robot.foot.heel=0.30", "robot.foot.toe=0.15",
+                                 "ground.time_step=0.0005"], d["config_overrides"]
+PY
+run simulate --reference "$REF" --steps 2 --no-poincare --no-plots --out "$TMP/heel5"
+check_json "(c3) the shipped heel" "$TMP/heel5/summary.json" <<'PY'
+assert d["fell"] and d["steps_completed"] == 0, d["failure"]
+PY
+
 # (d) bad input: exit 2 with a message naming what is wrong, and the old result untouched.
 bad() {
   local name=$1 pattern=$2
@@ -98,6 +113,10 @@ bad "no folder" "not a folder" --reference "$TMP/nowhere"
 bad "unknown controller" "controller" --reference "$REF" --controller pid
 sed 's/^stiffness: .*/stiffness: -1/' configs/grounds/impedance.yaml >"$TMP/ground.yaml"
 bad "bad ground" "stiffness" --reference "$REF" --ground "$TMP/ground.yaml"
+bad "--set scope" "robot.KEY or ground.KEY" --reference "$REF" --set heel=0.3
+bad "--set robot range" "key 'foot.heel': expected a number >= 0" --reference "$REF" \
+  --set robot.foot.heel=-1
+bad "--set ground key" "key 'bogus': unknown key" --reference "$REF" --set ground.bogus=1
 bad "case 4" "uncertainty-case" --reference "$REF" --uncertainty-case 4
 bad "mass error below -50 %" "mass-error" --reference "$REF" --mass-error -0.9
 bad "hzd with a DSP" "controller hzd.*double support" --reference "$REF" --controller hzd

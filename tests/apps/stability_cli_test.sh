@@ -60,6 +60,14 @@ check_json "(d) summary" "$TMP/d/summary.json" <<'PY'
 assert d["sweeps"]["gain_scale"]["values"] == 8, d
 PY
 
+# (d2) --set replaces a value of the robot file: the sweep's nominal is the friction set.
+run stability "${ARGS[@]}" --sweep friction=0.3:0.5:2 --set robot.friction=0.45 --out "$TMP/d2"
+[[ $RC -eq 0 ]] || fail "(d2) stability exited $RC: $(cat "$TMP/err")"
+check_json "(d2) summary" "$TMP/d2/summary.json" <<'PY'
+assert d["sweeps"]["friction"]["nominal"] == 0.45, d["sweeps"]["friction"]
+assert d["config_overrides"] == ["robot.friction=0.45"], d.get("config_overrides")
+PY
+
 # (e) bad input: unknown parameter, malformed range, stiffness off the impedance ground.
 run stability "${ARGS[@]}" --sweep wind --out "$TMP/e"
 [[ $RC -eq 2 ]] && grep -q "unknown sweep parameter 'wind'" "$TMP/err" || fail "(e) $(cat "$TMP/err")"
