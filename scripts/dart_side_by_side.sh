@@ -8,7 +8,8 @@
 # torque to the foot (--cop-limit saturate): in DART a foot tips by DART's own physics, and the
 # same rule keeps the grounds comparable. Writes OUT/walks.{csv,md} (steps, tracking error, slip,
 # least CoP margin, largest friction ratio |F_t|/F_n of a loaded tip, largest stance-foot tilt,
-# failure) and OUT/intervals.{csv,md} (the push and mass intervals walked).
+# failure), OUT/intervals.{csv,md} (the push and mass intervals walked) and OUT/side_by_side.png
+# (scripts/plots/dart_side_by_side_chart.py: the steps and both intervals per gait and ground).
 # Usage: scripts/dart_side_by_side.sh BUILD_DIR OUT_DIR   (from the repository root; ~5 minutes)
 set -euo pipefail
 # shellcheck source=scripts/study_setup.sh
@@ -95,3 +96,4 @@ for gait in dict.fromkeys(r["gait"] for r in intervals):
 open(os.path.join(out, "intervals.md"), "w").write("\n".join(lines) + "\n")
 print(open(os.path.join(out, "walks.md")).read() + "\n" + open(os.path.join(out, "intervals.md")).read())
 PY
+/usr/bin/python3 scripts/plots/dart_side_by_side_chart.py "$out"
