@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "dynamics/robot_files/urdf_export.hpp"
@@ -63,33 +64,64 @@ TEST(DartWalk, AFootAskedForACentreOfPressureOffItTips) {
   EXPECT_GT(w.max_foot_tilt, 0.2);
 }
 
-// A point foot is a ball on a locked ankle (dart_walk.hpp): the model's tip is a pivot, and the
-// ball only rolls its centre by its radius per radian the shank turns. Kelly's optimum for RABBIT
-// (configs/ocp/rabbit_kelly2017.yaml) under HZD walks 10 steps in DART with each stance tip
-// within that roll of where it landed. On a free ankle hinge the ball was a wheel: the stance
-// tip rolled 9.8 mm within 51 ms and the walk failed in step 1.
-TEST(DartWalk, PointFeetPivotAsTheModelsTipsDo) {
-  const gaitopt::test::SolvedConfig rabbit(
-      ocp::loadOcpConfig(gaitopt::test::shippedOcpConfig("rabbit_kelly2017")));
-  ASSERT_TRUE(rabbit.result.success) << rabbit.result.status;
-  const gaits::Trajectory gait =
-      ocp::reconstructDense(rabbit.problem, rabbit.model, rabbit.result.x, 1000.0);
-  const Reference ref(gait);
-  const auto controller =
-      makeHzdController(rabbit.model, ref, std::make_unique<PdLaw>(TrackingGains{}));
+/// Kelly's optimum for RABBIT (configs/ocp/rabbit_kelly2017.yaml, about 0.1 s), solved once.
+struct RabbitOptimum {
+  dynamics::Model model;
+  gaits::Trajectory gait;
+};
+const RabbitOptimum& rabbitOptimum() {
+  static const RabbitOptimum optimum = [] {
+    const gaitopt::test::SolvedConfig rabbit(
+        ocp::loadOcpConfig(gaitopt::test::shippedOcpConfig("rabbit_kelly2017")));
+    if (!rabbit.result.success) throw std::runtime_error(rabbit.result.status);
+    return RabbitOptimum{
+        rabbit.model, ocp::reconstructDense(rabbit.problem, rabbit.model, rabbit.result.x, 1000.0)};
+  }();
+  return optimum;
+}
+
+/// RABBIT's optimum under HZD in DART along `plan`.
+WalkResult rabbitInDart(const WalkPlan& plan) {
+  const Reference ref(rabbitOptimum().gait);
+  const dynamics::Model& model = rabbitOptimum().model;
+  const auto controller = makeHzdController(model, ref, std::make_unique<PdLaw>(TrackingGains{}));
   const GroundModel ground =
       loadGround(std::string(GAITOPT_SOURCE_DIR) + "/configs/grounds/dart.yaml");
-  const WalkResult w = walk(rabbit.model, *controller, ref, ground, {10, {}, {}});
+  return walk(model, *controller, ref, ground, plan);
+}
+
+// A point foot is a ball on a locked ankle (dart_walk.hpp): the model's tip is a pivot, and the
+// ball only rolls its centre by its radius per radian the shank turns. RABBIT's optimum under
+// HZD walks 10 steps in DART with each stance tip within that roll of where it landed. On a
+// free ankle hinge the ball was a wheel: the stance tip rolled 9.8 mm within 51 ms and the walk
+// failed in step 1.
+TEST(DartWalk, PointFeetPivotAsTheModelsTipsDo) {
+  const WalkResult w = rabbitInDart({10, {}, {}});
   ASSERT_EQ(w.steps_completed, 10) << w.failure;
   double lowest = INFINITY, highest = -INFINITY;  // the stance shank's sweep over a step
-  for (const gaits::Knot& k : gait.knots()) {
+  for (const gaits::Knot& k : rabbitOptimum().gait.knots()) {
     lowest = std::min(lowest, k.theta(0));
     highest = std::max(highest, k.theta(0));
   }
   const double roll = dynamics::kExportFoot.radius * (highest - lowest);
   EXPECT_LT(w.max_slip, roll + 2e-4) << "the ball's roll " << roll << " m; measured 2.162 mm of "
                                      << "a 2.166 mm roll";
-  EXPECT_NEAR(completedTotals(w).distance / 10, gait.stepLength(), 1e-3);
+  EXPECT_NEAR(completedTotals(w).distance / 10, rabbitOptimum().gait.stepLength(), 1e-3);
+}
+
+// A push DART's walk cannot absorb: 40 N s forward on the hip (a 0.1 s pulse from mid single
+// support of step 2; 1.25 m/s on the robot's 32 kg) lifts the stance tip within a step of it,
+// where 4 N s is walked through.
+TEST(DartWalk, ALargePushMakesRabbitFall) {
+  const auto pushed = [](double impulse) {
+    return rabbitInDart({6, Push{.step = 2, .impulse = Vec2d(impulse, 0)}, {}});
+  };
+  const WalkResult small = pushed(4);
+  EXPECT_EQ(small.steps_completed, 6) << small.failure;
+  const WalkResult w = pushed(40);
+  EXPECT_GE(w.steps_completed, 1) << "the step before the push";
+  EXPECT_LE(w.steps_completed, 2) << w.failure;
+  EXPECT_NE(w.failure.find(kStanceLiftoff), std::string::npos) << w.failure;
 }
 
 }  // namespace
