@@ -8,6 +8,7 @@
 #include "dynamics/kinematics.hpp"
 #include "dynamics/model_variation.hpp"
 #include "dynamics/robot_files/robot_config.hpp"
+#include "dynamics/robot_files/urdf_export.hpp"
 #include "dynamics/ssp_dynamics.hpp"
 #include "python/bindings.hpp"
 
@@ -52,6 +53,10 @@ void bindRobot(py::module_& m) {
                                for (int i = 0; i < r.nLinks(); ++i) l(i) = r.link(i).length;
                                return l;
                              })
+      .def(
+          "urdf", [](const Model& r) { return dynamics::urdfText(r, dynamics::kExportFoot); },
+          "The robot as URDF text, as `gaitopt export-urdf` writes it "
+          "(dynamics/robot_files/urdf_export.hpp: planar in x-z, feet of 0.05 kg added).")
       .def("with_slope", &dynamics::withSlope, py::arg("slope"),
            "The same robot on a slope [rad] (gravity rotated).")
       .def(

@@ -1,5 +1,7 @@
 """Robot and dynamics from Python: D symmetric positive definite, the energy identities of the
 Lagrangian form (Mu 2.35 to 2.38), forward and inverse dynamics inverse to each other."""
+from xml.etree import ElementTree
+
 import numpy as np
 import pytest
 
@@ -85,3 +87,14 @@ def test_wrong_sizes_and_bad_files_are_input_errors(robot, tmp_path):
     assert info.value.exit_code == 2 and str(bad) in str(info.value)
     with pytest.raises(gaitopt.InputError):
         gaitopt.Robot(str(tmp_path / "missing.yaml"))
+
+
+def test_urdf_holds_the_links_with_their_masses_and_the_joints(robot):
+    # The URDF of export-urdf: every link with its mass, two feet of 0.05 kg, and a revolute
+    # joint per link (the stance ankle, the n - 1 chain joints, the swing ankle).
+    root = ElementTree.fromstring(robot.urdf())
+    masses = {link.get("name"): float(link.find("inertial/mass").get("value"))
+              for link in root.iter("link")}
+    assert sum(masses.values()) == pytest.approx(robot.total_mass + 2 * 0.05, abs=1e-12)
+    assert set(robot.link_names) <= set(masses) and len(masses) == robot.n_links + 2
+    assert len(list(root.iter("joint"))) == robot.n_links + 1
