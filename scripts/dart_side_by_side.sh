@@ -8,7 +8,8 @@
 # torque to the foot (--cop-limit saturate): in DART a foot tips by DART's own physics, and the
 # same rule keeps the grounds comparable. Writes OUT/walks.{csv,md} (steps, tracking error, slip,
 # least CoP margin, largest friction ratio |F_t|/F_n of a loaded tip, largest stance-foot tilt,
-# failure), OUT/intervals.{csv,md} (the push and mass intervals walked) and OUT/side_by_side.png
+# failure), OUT/intervals.{csv,md} (the push and mass intervals walked), OUT/interval_ends.{csv,md}
+# (the failure just outside each interval) and OUT/side_by_side.png
 # (scripts/plots/dart_side_by_side_chart.py: the steps and both intervals per gait and ground).
 # Usage: scripts/dart_side_by_side.sh BUILD_DIR OUT_DIR   (from the repository root; ~5 minutes)
 set -euo pipefail
@@ -43,21 +44,31 @@ PY
 done
 
 echo "gait,controller,ground,push_from_Ns,push_to_Ns,mass_from,mass_to" >"$out/intervals.csv"
+echo "gait,controller,ground,sweep,side,value,failure" >"$out/interval_ends.csv"
 for gait in "${gaits[@]}"; do
   for ground in rigid dart; do
     "$bin" stability --reference "$work/$gait" --ground "$ground" \
       --controller "$(controller_of "$gait")" --cop-limit saturate --steps 20 \
       --sweep push=-3:3:13 --sweep mass_error=-0.2:0.2:9 --out "$work/stability_${gait}_$ground" \
       --no-plots --quiet >/dev/null
-    /usr/bin/python3 - "$work/stability_${gait}_$ground/summary.json" "$gait" \
-      "$(controller_of "$gait")" "$ground" >>"$out/intervals.csv" <<'PY'
-import json, sys
+    /usr/bin/python3 - "$work/stability_${gait}_$ground/summary.json" "$out" "$gait" \
+      "$(controller_of "$gait")" "$ground" <<'PY'
+import json, os, sys
 sweeps = json.load(open(sys.argv[1]))["sweeps"]
-cells = []
+row = sys.argv[3:]
+cells, ends = [], []
 for name, offset in (("push", 0.0), ("mass_error", 1.0)):
     lo, hi = sweeps[name]["walks_from"], sweeps[name]["walks_to"]
     cells += ["", ""] if lo is None else [f"{lo + offset:g}", f"{hi + offset:g}"]
-print(",".join(sys.argv[2:] + cells))
+    for side in ("fails_below", "fails_above"):
+        end = sweeps[name].get(side)
+        if end:
+            failure = end["failure"].replace(",", ";")
+            ends.append(",".join(row + [name, side, f"{end['value'] + offset:g}", failure]))
+with open(os.path.join(sys.argv[2], "intervals.csv"), "a") as f:
+    f.write(",".join(row + cells) + "\n")
+with open(os.path.join(sys.argv[2], "interval_ends.csv"), "a") as f:
+    f.writelines(line + "\n" for line in ends)
 PY
   done
 done
@@ -94,6 +105,20 @@ for gait in dict.fromkeys(r["gait"] for r in intervals):
                               for q, u in (("push", "_Ns"), ("mass", "")) for g in ("rigid", "dart"))
                  + " |")
 open(os.path.join(out, "intervals.md"), "w").write("\n".join(lines) + "\n")
+ends = list(csv.DictReader(open(os.path.join(out, "interval_ends.csv"))))
+lines = ["| gait | plant | sweep | first value that falls below / above the interval |",
+         "|---|---|---|---|"]
+for gait in dict.fromkeys(r["gait"] for r in ends):
+    for ground in ("rigid", "dart"):
+        for sweep, unit in (("push", " N s"), ("mass_error", "")):
+            found = {r["side"]: r for r in ends
+                     if (r["gait"], r["ground"], r["sweep"]) == (gait, ground, sweep)}
+            text = " / ".join(f"{found[s]['value']}{unit}: {found[s]['failure']}"
+                              for s in ("fails_below", "fails_above") if s in found)
+            if text:
+                name = "mass" if sweep == "mass_error" else sweep
+                lines.append(f"| `{gait}` | {ground} | {name} | {text} |")
+open(os.path.join(out, "interval_ends.md"), "w").write("\n".join(lines) + "\n")
 print(open(os.path.join(out, "walks.md")).read() + "\n" + open(os.path.join(out, "intervals.md")).read())
 PY
 /usr/bin/python3 scripts/plots/dart_side_by_side_chart.py "$out"
