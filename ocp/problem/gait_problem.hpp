@@ -47,6 +47,8 @@ struct GaitProblem {
   StageStructure stages;          ///< the stages of the NLP and their couplings
   /// The variants' models, which the sets point to ([0], the caller's, is not owned).
   std::vector<std::shared_ptr<const dynamics::Model>> models;
+  /// The models the variants' computed-torque laws compute with (GaitShape::controllers).
+  std::vector<std::shared_ptr<const dynamics::Model>> controllers;
 
   /// The nominal's first step in time order (SSP, then the DSP if any).
   std::vector<const Phase*> phases() const {

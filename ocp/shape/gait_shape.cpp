@@ -22,6 +22,14 @@ std::shared_ptr<const dynamics::Model> variantModel(const dynamics::Model& nomin
       dynamics::perturbedModel(nominal, {.mass = e, .inertia = e}));
 }
 
+/// The model variant v's computed-torque law computes with: the nominal, or off by Mu's case.
+std::shared_ptr<const dynamics::Model> controllerModel(
+    const std::shared_ptr<const dynamics::Model>& nominal, const VariantConfig& v) {
+  if (v.controller_case == 1) return nominal;
+  return std::make_shared<const dynamics::Model>(
+      dynamics::perturbedModel(*nominal, dynamics::muUncertaintyCase(v.controller_case)));
+}
+
 /// One step's phases of one variant, with the continuity from the touchdown into the DSP.
 void addStep(GaitShape& shape, const OcpConfig& config, int step, int variant) {
   const std::string copy = copyPrefix(step, variant);
@@ -78,8 +86,11 @@ GaitShape describeGait(const dynamics::Model& model, const OcpConfig& config) {
   shape.spread = config.shape.spread;
   // The caller owns the nominal model: a shared pointer that does not own it.
   shape.models.emplace_back(std::shared_ptr<const dynamics::Model>(), &model);
-  for (const VariantConfig& v : config.shape.variants)
+  shape.controllers.push_back(shape.models.front());
+  for (const VariantConfig& v : config.shape.variants) {
     shape.models.push_back(variantModel(model, v));
+    shape.controllers.push_back(controllerModel(shape.models.front(), v));
+  }
   for (int variant = 0; variant < shape.variants; ++variant) {
     for (int step = 0; step < shape.steps; ++step) addStep(shape, config, step, variant);
     const int first = shape.find(0, variant, gaits::Phase::kSsp);

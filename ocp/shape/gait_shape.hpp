@@ -59,6 +59,8 @@ struct GaitShape {
   std::vector<TransitionSpec> transitions;
   /// Per variant; [0] the nominal the caller owns, the others held here.
   std::vector<std::shared_ptr<const dynamics::Model>> models;
+  /// Per variant, the model its computed-torque law computes with (VariantConfig).
+  std::vector<std::shared_ptr<const dynamics::Model>> controllers;
   FeedbackGains feedback;
   double spread = 0;  ///< weight of each variant phase's spread cost (variant_sets.hpp)
   int steps = 1;

@@ -76,7 +76,8 @@ class Builder {
       p_.nlp.addConstraint(std::make_unique<FeedbackLaw>(name, b.phase, reference, *b.model, law));
     else if (!b.phase.doubleSupport())
       p_.nlp.addConstraint(std::make_unique<ComputedTorqueLaw>(
-          b.phase.name() + "_computed_torque", b.phase, reference, *shape_.models[0], law));
+          b.phase.name() + "_computed_torque", b.phase, reference,
+          *shape_.controllers[static_cast<size_t>(spec.variant)], law));
     else
       p_.nlp.addConstraint(std::make_unique<FeedbackLaw>(
           name, b.phase, reference, *b.model, FeedbackGains{{}, law.dsp_kp, law.dsp_kd}));
@@ -221,6 +222,7 @@ GaitProblem assembleGaitProblem(const GaitShape& shape, const OcpConfig& config,
   p.steps = shape.steps;
   p.variants = shape.variants;
   p.models = shape.models;
+  p.controllers = shape.controllers;
   Builder builder(p, shape, config, guesses);
   for (int i = 0; i < static_cast<int>(shape.phases.size()); ++i) {
     builder.emitPhase(i);

@@ -12,9 +12,13 @@
 namespace gaitopt::ocp {
 
 /// One model variant: the nominal robot with every link's mass and inertia scaled together (a
-/// denser or lighter build of the same shape, as sim/scenario/scenario.cpp's plant mass error).
+/// denser or lighter build of the same shape, as sim/scenario/scenario.cpp's plant mass error),
+/// and the model the computed-torque law computes with: the nominal, or the nominal off by Mu's
+/// uncertainty case 2 or 3 (sec. 4.3, dynamics/model_variation.hpp muUncertaintyCase), the
+/// plant then the variant's own, as `simulate --uncertainty-on controller` walks it.
 struct VariantConfig {
   double mass_scale = 1;
+  int controller_case = 1;  ///< 1: the controller computes with the nominal model
 };
 
 /// The law that drives every variant around the reference, the same gains on every joint.

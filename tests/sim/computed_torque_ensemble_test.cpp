@@ -1,15 +1,17 @@
 // Model variants driven by the closed loop's own computed-torque law (variant_feedback: {law:
 // computed_torque}, ocp/shape/computed_torque_law.hpp). At the solution of a small ensemble,
 // every single-support torque of the variant is recomputed by the controller the walks use
-// (sim::TrackingController with its PD law): the optimiser's law and the controller's must be
-// the same function. The variant's points satisfy its own (heavier) model's dynamics, so the
-// pair is the closed loop on that plant, collocated. Config errors name their key.
+// (sim::TrackingController with its PD law, on the nominal model or on one off by Mu's case):
+// the optimiser's law and the controller's must be the same function. The variant's points satisfy
+// its own (heavier) model's dynamics, so the pair is the closed loop on that plant, collocated.
+// Config errors name their key.
 #include <gtest/gtest.h>
 
 #include <memory>
 
 #include <fmt/format.h>
 
+#include "dynamics/model_variation.hpp"
 #include "dynamics/ssp_dynamics.hpp"
 #include "ocp/shape/computed_torque_law.hpp"
 #include "sim/controllers/tracking_controller.hpp"
@@ -21,10 +23,11 @@ namespace {
 
 constexpr double kKp = 400, kKd = 40;  // the tracking law's defaults [1/s^2], [1/s]
 
-std::vector<config::Override> ensemble(const std::string& feedback) {
+std::vector<config::Override> ensemble(const std::string& feedback,
+                                       const std::string& variant = "{mass_scale: 1.1}") {
   std::vector<config::Override> o;
   for (const std::string& s :
-       {std::string("variants=[{mass_scale: 1.1}]"), "variant_feedback=" + feedback,
+       {"variants=[" + variant + "]", "variant_feedback=" + feedback,
         std::string("variant_end_tolerance=0.05"), std::string("phases[0].segments=15"),
         std::string("phases[1].segments=3"), std::string("solver.linear_solver=mumps")})
     o.push_back(config::parseOverride(s));
@@ -33,9 +36,10 @@ std::vector<config::Override> ensemble(const std::string& feedback) {
 
 const std::string kLaw = "{law: computed_torque, kp: 400, kd: 40, dsp_kp: 300, dsp_kd: 30}";
 
-std::string loadError(const std::string& feedback) {
+std::string loadError(const std::string& feedback,
+                      const std::string& variant = "{mass_scale: 1.1}") {
   try {
-    loadOcpConfig(test::shippedOcpConfig("mu2004_walk"), ensemble(feedback));
+    loadOcpConfig(test::shippedOcpConfig("mu2004_walk"), ensemble(feedback, variant));
   } catch (const std::exception& e) {
     return e.what();
   }
@@ -61,14 +65,32 @@ TEST(ComputedTorqueVariantConfig, APassiveJointIsRefused) {
   EXPECT_THROW(ComputedTorqueResidual(rabbit, g), std::invalid_argument);
 }
 
-TEST(ComputedTorqueVariant, TorquesAreTheTrackingControllersOnTheNominalModel) {
+/// A variant (shape_config.hpp VariantConfig), its plant's mass scale and the controller's case.
+struct VariantCase {
+  std::string yaml;
+  double mass_scale;
+  int controller_case;
+};
+
+class ComputedTorqueVariant : public ::testing::TestWithParam<VariantCase> {};
+
+// The 10 % heavier plant under the controller's nominal model, and the nominal plant under a
+// controller whose model is off by Mu's case 2 (+40 % masses and inertias, +10 % lengths).
+TEST_P(ComputedTorqueVariant, TorquesAreTheTrackingControllersOnItsModel) {
 #ifndef NDEBUG
   GTEST_SKIP() << "a solve: optimised builds only";
 #endif
-  const test::SolvedConfig s(loadOcpConfig(test::shippedOcpConfig("mu2004_walk"), ensemble(kLaw)));
+  const VariantCase& c = GetParam();
+  const test::SolvedConfig s(
+      loadOcpConfig(test::shippedOcpConfig("mu2004_walk"), ensemble(kLaw, c.yaml)));
   ASSERT_TRUE(s.result.success) << s.result.status;
-  const sim::TrackingController controller(s.model, std::make_shared<sim::PdLaw>(kKp, kKd));
-  const dynamics::Model& plant = *s.problem.models[1];
+  const dynamics::Model model =
+      c.controller_case == 1
+          ? s.model
+          : dynamics::perturbedModel(s.model, dynamics::muUncertaintyCase(c.controller_case));
+  const sim::TrackingController controller(model, std::make_shared<sim::PdLaw>(kKp, kKd));
+  const dynamics::Model plant =
+      dynamics::perturbedModel(s.model, {.mass = c.mass_scale - 1, .inertia = c.mass_scale - 1});
   const Phase& variant = *s.problem.phasesOf(0, 1)[0];
   const Phase& reference = *s.problem.phasesOf(0, 0)[0];
   const PointLayout& l = variant.point;
@@ -92,8 +114,20 @@ TEST(ComputedTorqueVariant, TorquesAreTheTrackingControllersOnTheNominalModel) {
   RecordProperty("largest_law_error_Nm", fmt::format("{:.3g}", law_error));
   RecordProperty("largest_correction_Nm", fmt::format("{:.3g}", correction));
   EXPECT_LT(law_error, 1e-6);  // the controller's torque, to the solver's tolerance
-  EXPECT_LT(own_model, 1e-6);  // on the 10 % heavier plant's dynamics
+  EXPECT_LT(own_model, 1e-6);  // on the plant's dynamics
   EXPECT_GT(correction, 1.0);  // and it is not the reference's feed-forward
+}
+
+INSTANTIATE_TEST_SUITE_P(PlantOrController, ComputedTorqueVariant,
+                         ::testing::Values(VariantCase{"{mass_scale: 1.1}", 1.1, 1},
+                                           VariantCase{"{controller_case: 2}", 1.0, 2}));
+
+TEST(ComputedTorqueVariantConfig, AVariantIsReadStrictly) {
+  EXPECT_EQ(loadError(kLaw, "{mass_scale: 0.9, controller_case: 3}"), "");
+  EXPECT_NE(loadError(kLaw, "{controller_case: 4}").find("controller_case"), std::string::npos);
+  EXPECT_NE(loadError(kLaw, "{controller_case: 2.5}").find("controller_case"), std::string::npos);
+  EXPECT_NE(loadError(kLaw, "{controller_case: 1}").find("differs from the nominal"),
+            std::string::npos);
 }
 
 }  // namespace
