@@ -137,13 +137,11 @@ class DartPlant {
   void start(const FreeBaseState& s) {
     const int n = plant_.nLinks();
     const VecD theta = s.q.tail(n), dtheta = s.v.tail(n);
-    root_->setPositions(Eigen::Vector3d(s.q(1), s.q(0), 0));
-    root_->setVelocities(Eigen::Vector3d(s.v(1), s.v(0), 0));
-    if (pointFeet(plant_)) {
-      // The locked ankle turns the ball with the shank: the root carries the shank's rate.
-      root_->setPositions(Eigen::Vector3d(s.q(1), s.q(0), theta(0)));
-      root_->setVelocities(Eigen::Vector3d(s.v(1), s.v(0), dtheta(0)));
-    } else {
+    // A locked ankle (point feet) turns the ball with the shank: the root carries its angle.
+    const bool point = pointFeet(plant_);
+    root_->setPositions(Eigen::Vector3d(s.q(1), s.q(0), point ? theta(0) : 0.0));
+    root_->setVelocities(Eigen::Vector3d(s.v(1), s.v(0), point ? dtheta(0) : 0.0));
+    if (!point) {
       ankles_[0]->setPosition(theta(0));
       ankles_[0]->setVelocity(dtheta(0));
     }
@@ -152,7 +150,7 @@ class DartPlant {
       joints_[static_cast<size_t>(j - 1)]->setVelocity(dtheta(j - 1) - dtheta(j));
     }
     ankles_[1]->setPosition(theta(n - 1) + std::numbers::pi);  // the swing foot level
-    ankles_[1]->setVelocity(pointFeet(plant_) ? 0.0 : dtheta(n - 1));
+    ankles_[1]->setVelocity(point ? 0.0 : dtheta(n - 1));
     started_ = true;
   }
 
