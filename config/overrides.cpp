@@ -85,7 +85,7 @@ std::vector<Override> scopedOverrides(const std::vector<std::string>& texts,
       throw ConfigError("--set", o.key, 0,
                         fmt::format("'{}': the key starts with the file it sets: {}.KEY", o.text(),
                                     fmt::join(scopes, ".KEY or ")));
-    if (prefix == scope) overrides.push_back({o.key.substr(dot + 1), o.value});
+    if (prefix == scope) overrides.push_back({o.key.substr(dot + 1), o.value, prefix + "."});
   }
   return overrides;
 }

@@ -12,9 +12,11 @@
 namespace gaitopt::config {
 
 struct Override {
-  std::string key;    ///< e.g. "constraints.friction_margin", "phases[0].segments"
-  std::string value;  ///< YAML text: a number, a word, a list "[0.1, 0.2]", ...
-  std::string text() const { return key + "=" + value; }
+  std::string key;         ///< e.g. "constraints.friction_margin", "phases[0].segments"
+  std::string value;       ///< YAML text: a number, a word, a list "[0.1, 0.2]", ...
+  std::string scope = "";  ///< the file a scoped --set named ("robot.", scopedOverrides)
+  /// As the user wrote it, for messages.
+  std::string text() const { return scope + key + "=" + value; }
 };
 
 /// KEY=VALUE. @throws ConfigError naming --set when there is no '=', no key or no value.

@@ -117,6 +117,7 @@ bad "--set scope" "robot.KEY or ground.KEY" --reference "$REF" --set heel=0.3
 bad "--set robot range" "key 'foot.heel': expected a number >= 0" --reference "$REF" \
   --set robot.foot.heel=-1
 bad "--set ground key" "key 'bogus': unknown key" --reference "$REF" --set ground.bogus=1
+grep -q -- "--set ground.bogus=1" "$TMP/err" || fail "(--set) the message names what was typed: $(cat "$TMP/err")"
 bad "case 4" "uncertainty-case" --reference "$REF" --uncertainty-case 4
 bad "mass error below -50 %" "mass-error" --reference "$REF" --mass-error -0.9
 bad "hzd with a DSP" "controller hzd.*double support" --reference "$REF" --controller hzd

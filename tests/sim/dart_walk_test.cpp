@@ -114,7 +114,9 @@ TEST(DartWalk, PointFeetPivotAsTheModelsTipsDo) {
 // where 4 N s is walked through.
 TEST(DartWalk, ALargePushMakesRabbitFall) {
   const auto pushed = [](double impulse) {
-    return rabbitInDart({6, Push{.step = 2, .impulse = Vec2d(impulse, 0)}, {}});
+    Push push;  // step 2, from mid single support, 0.1 s
+    push.impulse = Vec2d(impulse, 0);
+    return rabbitInDart({6, push, {}});
   };
   const WalkResult small = pushed(4);
   EXPECT_EQ(small.steps_completed, 6) << small.failure;
