@@ -85,8 +85,9 @@ nlohmann::ordered_json linearSolverJson(const SolverOptions& options, const Solv
        p.factorizations > 0 ? static_cast<double>(p.ldl.mumps_fallbacks) / p.factorizations : 0.0},
       {"fallbacks_by_reason",
        {{"zero_pivot", p.ldl.zero_pivot_fallbacks},
-        {"inertia", p.ldl.inertia_fallbacks},
         {"inexact_solve", p.ldl.inexact_fallbacks}}},
+      {"delayed_pivots", p.ldl.delayed_pivots},
+      {"inexact_refactorizations", p.ldl.inexact_refactorizations},
       {"inertia_corrections", p.inertia_corrections}};
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 /// @file kkt_pairs.hpp
-/// Which rows of Ipopt's augmented system become 2x2 pivots of BlockLdl.
+/// Which rows of Ipopt's augmented system pair_order.hpp keeps together, as 2x2 pivots.
 /// Ipopt factorizes (IpStdAugSystemSolver.cpp)
 ///   [ W + Sigma_x + dw I      0         J_c^T   J_d^T ]   rows x
 ///   [        0          Sigma_s + dw I    0      -I   ]   rows s
@@ -13,10 +13,10 @@
 /// zero once their constraint rows are eliminated) are matched first, and an augmenting path
 /// never unmatches a row. One of them the constraints cannot take pairs with the strongest free
 /// variable it couples to through W. A zero-diagonal row left without a partner is eliminated
-/// alone: its pivot may come out zero, which BlockLdl clamps and counts.
+/// alone in the order, and the factorization finds it a pivot (MultifrontalLdl).
 #include <vector>
 
-#include "ocp/solve/kkt/block_ldl.hpp"
+#include "ocp/solve/kkt/pair_order.hpp"
 #include "ocp/solve/kkt/symmetric_pattern.hpp"
 
 namespace gaitopt::ocp::kkt {

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "ocp/solve/kkt/kkt_pairs.hpp"
+#include "ocp/solve/kkt/pair_order.hpp"
 #include "ocp/solve/kkt/kkt_statistics.hpp"
 
 namespace gaitopt::ocp::kkt {
@@ -21,18 +22,20 @@ namespace {
 constexpr double kTinyPivot = 1e-30;
 
 // Ipopt's residual_ratio_max (IpPDFullSpaceSolver.cpp): a solution whose residual ratio is above
-// it is refined. One that KktSolver's own refinement leaves above it is solved again by MUMPS:
-// static pivots chosen at the analysis can lose every digit once the barrier parameter is small
-// (the compass-gait walk's ratio reached 0.4 at mu = 3e-8, and Ipopt's refinement stalled at
-// 0.16); MUMPS's threshold pivoting does not. Measured on the five-link configs at five meshes
-// (scripts/solver_robustness.sh): with the fallback on zero pivots only, 17 of 25 solves
-// converged; with this and the inertia check, 19, against MUMPS's own 20 and 19 under its two
-// orders (results/solve_profile.md).
+// it is refined. One that KktSolver's own refinement leaves above it is factorized again with a
+// larger pivot threshold, and by MUMPS if the largest one does not reach it either.
 constexpr double kResidualRatioMax = 1e-10;
-// Refinement steps before giving up on the static pivots: two are enough on every shipped config
-// at its own mesh (no fallback on the five-link default or RABBIT); without them half the
-// five-link default's solves went to MUMPS.
+// Refinement steps before raising the threshold: two, as with the static pivots before, where
+// without them half the five-link default's solves went to MUMPS.
 constexpr int kOwnRefinementSteps = 2;
+// The pivot threshold u (front_ldl.hpp): Ipopt's default pivot tolerance for MUMPS
+// (mumps_pivtol) to start with, raised a hundredfold per inexact solve up to MUMPS's own default
+// (CNTL(1) = 0.01), and kept for the later matrices, as Ipopt keeps a raised mumps_pivtol. On
+// the five-link default, u = 0.01 from the start delays 4 500 rows per factorization and takes
+// 2.5 times as long; u = 1e-6 delays 9.
+constexpr double kFirstThreshold = 1e-6;
+constexpr double kLargestThreshold = 0.01;
+constexpr double kThresholdStep = 100;
 
 /// Ipopt's measure of a solution's accuracy (PDFullSpaceSolver::ComputeResidualRatio).
 double residualRatio(const Eigen::VectorXd& residual, const Eigen::VectorXd& x,
@@ -51,7 +54,9 @@ double largestMagnitude(const double* values, int count) {
 }  // namespace
 
 KktSolver::KktSolver(SymmetricPattern pattern)
-    : pattern_(std::move(pattern)), constraintStart_(constraintRowsStart(pattern_)) {}
+    : pattern_(std::move(pattern)),
+      constraintStart_(constraintRowsStart(pattern_)),
+      threshold_(kFirstThreshold) {}
 
 void KktSolver::analyse(const double* values) {
   mustPair_.resize(pattern_.n, 0);
@@ -62,7 +67,7 @@ void KktSolver::analyse(const double* values) {
   const std::vector<PivotPair> pairs = kktPivotPairs(pattern_, values, constraintStart_, rows);
   paired_.assign(pattern_.n, 0);
   for (const PivotPair& p : pairs) paired_[p.first] = paired_[p.second] = 1;
-  ldl_ = std::make_unique<BlockLdl>(pattern_, pairs);
+  ldl_ = std::make_unique<MultifrontalLdl>(pattern_, pairedMinimumDegreeOrder(pattern_, pairs));
   ++analyses_;
   ++threadKktStatistics().analyses;
 }
@@ -76,21 +81,20 @@ bool KktSolver::lostADiagonal(const double* values) const {
 void KktSolver::factorize(const double* values) {
   ++threadKktStatistics().factorizations;
   if (!ldl_ || lostADiagonal(values)) analyse(values);
-  ldl_->factorize(values, kTinyPivot * largestMagnitude(values, pattern_.nonZeros()));
-  factor_ = Factor::kStatic;
-  // A zero static pivot, or an inertia other than a KKT matrix's (one negative eigenvalue per
-  // constraint row): MUMPS's threshold pivoting decides. Ipopt takes a wrong inertia for a
-  // nonconvex W and regularises it; from static pivots it can be a small pivot's rounding, and
-  // with Ipopt's finite-difference Jacobian on RABBIT it was, at every iteration (delta_w 1e4,
-  // 500 iterations, where MUMPS needs none and converges in 35).
+  factorizeOwn(values);
+}
+
+// A pivot below tiny, which only a (nearly) singular matrix leaves: MUMPS decides whether A is
+// singular (Ipopt then regularises the constraints) and factorizes it if not.
+void KktSolver::factorizeOwn(const double* values) {
+  ldl_->factorize(values,
+                  {threshold_, kTinyPivot * largestMagnitude(values, pattern_.nonZeros())});
+  factor_ = Factor::kOwn;
   KktStatistics& counts = threadKktStatistics();
-  if (ldl_->perturbedPivots() > 0)
-    ++counts.zero_pivot_fallbacks;
-  else if (ldl_->negativeEigenvalues() != pattern_.n - constraintStart_)
-    ++counts.inertia_fallbacks;
-  else
-    return;
-  factorizeWithMumps(values);  // a singular A goes to Ipopt
+  counts.delayed_pivots += ldl_->delayedPivots();
+  if (ldl_->perturbedPivots() == 0) return;
+  ++counts.zero_pivot_fallbacks;
+  factorizeWithMumps(values);
 }
 
 void KktSolver::factorizeWithMumps(const double* values) {
@@ -135,21 +139,29 @@ double KktSolver::solveAndRefine(const double* values, double* rhs, int refineme
 
 int KktSolver::solve(const double* values, double* rhs, int refinementSteps) {
   const std::vector<double> b(rhs, rhs + pattern_.n);
+  const int allowed = std::max(refinementSteps, kOwnRefinementSteps);
   int steps = 0;
-  const double ratio =
-      solveAndRefine(values, rhs, std::max(refinementSteps, kOwnRefinementSteps), steps);
-  if (ratio <= kResidualRatioMax || factor_ != Factor::kStatic) return steps;
-  ++threadKktStatistics().inexact_fallbacks;
   try {
-    factorizeWithMumps(values);
+    double ratio = solveAndRefine(values, rhs, allowed, steps);
+    while (ratio > kResidualRatioMax && factor_ == Factor::kOwn) {
+      ++threadKktStatistics().inexact_refactorizations;
+      if (threshold_ < kLargestThreshold) {
+        threshold_ = std::min(kLargestThreshold, threshold_ * kThresholdStep);
+        factorizeOwn(values);
+      } else {
+        ++threadKktStatistics().inexact_fallbacks;
+        factorizeWithMumps(values);
+      }
+      std::copy(b.begin(), b.end(), rhs);
+      ratio = solveAndRefine(values, rhs, allowed, steps);
+    }
   } catch (const SingularMatrix&) {
-    // Too late to tell Ipopt (it takes a solve's failure for an internal error): keep this
-    // solution, whose residual Ipopt's own refinement then measures.
-    factor_ = Factor::kStaticMumpsRefused;
-    return steps;
+    // Too late to tell Ipopt (it takes a solve's failure for an internal error): keep the own
+    // factors' solution, whose residual Ipopt's own refinement then measures.
+    factor_ = Factor::kOwnMumpsRefused;
+    std::copy(b.begin(), b.end(), rhs);
+    solveAndRefine(values, rhs, allowed, steps);
   }
-  std::copy(b.begin(), b.end(), rhs);
-  solveAndRefine(values, rhs, refinementSteps, steps);
   return steps;
 }
 

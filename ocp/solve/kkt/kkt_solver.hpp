@@ -1,22 +1,23 @@
 #pragma once
 /// @file kkt_solver.hpp
-/// Ipopt's augmented system solved by BlockLdl with pairs from kkt_pairs.hpp: what Pardiso's
-/// phases 11 (analyse), 22 (factorize) and 33 (solve) do for Ipopt (pardiso_interface.cpp).
+/// Ipopt's augmented system solved by MultifrontalLdl, in the order pair_order.hpp gives the
+/// pairs of kkt_pairs.hpp: what Pardiso's phases 11 (analyse), 22 (factorize) and 33 (solve) do
+/// for Ipopt (pardiso_interface.cpp).
 /// Why not MUMPS: on these problems (4 000 rows, 26 000 entries) MUMPS spends 3.7 ms on a
 /// factorization of 2.7 Mflop, its bookkeeping per front rather than arithmetic, and two thirds
 /// of a whole solve (results/solve_profile.md); Debian ships no other solver Ipopt can load.
-/// What static pivots cost: no pivoting inside the elimination, so the pairs can leave a zero
-/// pivot, or a small one that loses the solution's digits or flips the inertia's count. Such a
-/// matrix is factorized by MUMPS instead (mumps_factor.hpp), as `linear_solver: mumps` would
-/// have: a zero pivot, or an inertia other than a KKT matrix's, at once; lost digits when
-/// refinement cannot recover them. Before, the zero pivot was clamped, which gave another
-/// inertia, the lost digits were Ipopt's to refine, which stalled, and a flipped count made
-/// Ipopt regularise a matrix that needed none.
+/// The pivots are chosen inside the factorization with a threshold test, so the inertia it counts
+/// is the matrix's (Sylvester's law) and Ipopt's to act on, as MUMPS's is. MUMPS
+/// (mumps_factor.hpp) still takes the rare matrix this leaves with a pivot below `tiny`, a
+/// (nearly) singular one, for MUMPS to call singular or not, and a solve that refinement leaves
+/// less accurate than Ipopt asks. Before, the pairs were static 2x2 pivots fixed at the analysis:
+/// a zero pivot, a flipped inertia count or lost digits sent 174 of 192 factorizations of the
+/// cost-of-transport solve to MUMPS (results/linear_solver_compare.csv of then).
 #include <memory>
 #include <vector>
 
-#include "ocp/solve/kkt/block_ldl.hpp"
 #include "ocp/solve/kkt/mumps_factor.hpp"
+#include "ocp/solve/kkt/multifrontal_ldl.hpp"
 #include "ocp/solve/kkt/symmetric_pattern.hpp"
 
 namespace gaitopt::ocp::kkt {
@@ -25,26 +26,27 @@ class KktSolver {
  public:
   explicit KktSolver(SymmetricPattern pattern);
 
-  /// Pairs the rows by these values and orders the blocks.
+  /// Pairs the rows by these values, orders the pairs and analyses the assembly tree.
   void analyse(const double* values);
   /// Factorizes A(values); analyses again first if a variable row's diagonal has become zero
   /// since (Ipopt's first matrix, for the least-squares multipliers, has an identity there).
-  /// On a zero static pivot, or an inertia other than one negative eigenvalue per constraint
-  /// row, MUMPS factorizes A instead. @throws SingularMatrix from MUMPS.
+  /// On a pivot below `tiny`, MUMPS factorizes A instead. @throws SingularMatrix from MUMPS.
   void factorize(const double* values);
   /// rhs := A^{-1} rhs, refined against A(values) while Ipopt's residual ratio is missed, at most
-  /// max(2, refinementSteps) steps; if it is still missed, MUMPS factorizes A and solves again.
+  /// max(2, refinementSteps) steps; if it is still missed, A is factorized again with a larger
+  /// pivot threshold (kept for later matrices), and by MUMPS past the largest, and solved again.
   /// Returns the refinement steps of the last solution.
   int solve(const double* values, double* rhs, int refinementSteps);
 
   /// A's negative eigenvalues, by the last factorization.
   int negativeEigenvalues() const;
   int analyses() const { return analyses_; }
-  /// The factorizations MUMPS made in place of the static pivots'.
+  /// The factorizations MUMPS made in place of gaitopt's.
   int fallbacks() const { return fallbacks_; }
 
  private:
   bool lostADiagonal(const double* values) const;
+  void factorizeOwn(const double* values);
   void factorizeWithMumps(const double* values);
   void applyInverse(double* x) const;
   /// Solves and refines in place; returns the residual ratio reached and sets the steps taken.
@@ -53,15 +55,16 @@ class KktSolver {
   SymmetricPattern pattern_;
   int constraintStart_;
   std::vector<char> mustPair_;  // row -> a variable row seen with a zero diagonal
-  std::vector<char> paired_;    // row -> in a 2x2 pivot
-  std::unique_ptr<BlockLdl> ldl_;
+  std::vector<char> paired_;    // row -> in a pair
+  std::unique_ptr<MultifrontalLdl> ldl_;
   std::unique_ptr<MumpsFactor> mumps_;  // made at the first fallback
-  /// Whose factors of the last factorized A the solves use: the static pivots', MUMPS's, or the
-  /// static pivots' after MUMPS found A singular in a solve (not to be asked again).
-  enum class Factor { kStatic, kMumps, kStaticMumpsRefused };
-  Factor factor_ = Factor::kStatic;
+  /// Whose factors of the last factorized A the solves use: gaitopt's, MUMPS's, or gaitopt's
+  /// after MUMPS found A singular in a solve (not to be asked again).
+  enum class Factor { kOwn, kMumps, kOwnMumpsRefused };
+  Factor factor_ = Factor::kOwn;
   int analyses_ = 0;
   int fallbacks_ = 0;
+  double threshold_;  // the pivot test's u; kkt_solver.cpp says how it moves
 };
 
 }  // namespace gaitopt::ocp::kkt

@@ -7,8 +7,9 @@ KktStatistics& operator+=(KktStatistics& a, const KktStatistics& b) {
   a.factorizations += b.factorizations;
   a.mumps_fallbacks += b.mumps_fallbacks;
   a.zero_pivot_fallbacks += b.zero_pivot_fallbacks;
-  a.inertia_fallbacks += b.inertia_fallbacks;
+  a.delayed_pivots += b.delayed_pivots;
   a.inexact_fallbacks += b.inexact_fallbacks;
+  a.inexact_refactorizations += b.inexact_refactorizations;
   return a;
 }
 
@@ -17,8 +18,9 @@ KktStatistics operator-(KktStatistics a, const KktStatistics& b) {
   a.factorizations -= b.factorizations;
   a.mumps_fallbacks -= b.mumps_fallbacks;
   a.zero_pivot_fallbacks -= b.zero_pivot_fallbacks;
-  a.inertia_fallbacks -= b.inertia_fallbacks;
+  a.delayed_pivots -= b.delayed_pivots;
   a.inexact_fallbacks -= b.inexact_fallbacks;
+  a.inexact_refactorizations -= b.inexact_refactorizations;
   return a;
 }
 

@@ -10,12 +10,18 @@ namespace gaitopt::ocp::kkt {
 struct KktStatistics {
   int analyses = 0;        ///< row pairings and block orders (KktSolver::analyse)
   int factorizations = 0;  ///< numerical factorizations asked for by Ipopt
-  /// Of those, the ones MUMPS made in place of the static pivots' (a zero pivot or a wrong
-  /// inertia), plus the re-factorizations by MUMPS of a solve the static pivots left inexact.
+  /// Of those, the ones MUMPS made in place of gaitopt's (a pivot below tiny), plus the
+  /// re-factorizations by MUMPS of a solve gaitopt's factors left inexact.
   int mumps_fallbacks = 0;
-  /// Why, one count per fallback: a zero static pivot, an inertia other than a KKT matrix's, a
-  /// solve that refinement left inexact.
-  int zero_pivot_fallbacks = 0, inertia_fallbacks = 0, inexact_fallbacks = 0;
+  /// Why, one count per fallback: a pivot below tiny, a solve that refinement left inexact
+  /// under the largest pivot threshold.
+  int zero_pivot_fallbacks = 0, inexact_fallbacks = 0;
+  /// Solves refinement left inexact, each followed by a factorization with a larger pivot
+  /// threshold (or by MUMPS, past the largest).
+  int inexact_refactorizations = 0;
+  /// Rows eliminated in a later front than the order put them in (MultifrontalLdl), summed over
+  /// the factorizations: the work the pivoting added to the order's plan.
+  long delayed_pivots = 0;
 };
 
 KktStatistics& operator+=(KktStatistics& a, const KktStatistics& b);

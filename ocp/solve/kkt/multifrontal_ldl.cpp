@@ -1,0 +1,141 @@
+#include "ocp/solve/kkt/multifrontal_ldl.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+
+#include "ocp/solve/kkt/front_ldl.hpp"
+
+namespace gaitopt::ocp::kkt {
+
+MultifrontalLdl::MultifrontalLdl(const SymmetricPattern& pattern, const EliminationOrder& order,
+                                 int mergeBelow)
+    : pattern_(pattern),
+      tree_(analyseAssemblyTree(pattern, order, mergeBelow)),
+      columnOf_(pattern.nonZeros()),
+      children_(tree_.supernodes()),
+      factors_(tree_.supernodes()),
+      contributions_(tree_.supernodes()),
+      place_(pattern.n, -1) {
+  for (int c = 0; c < pattern.n; ++c)
+    for (int k = pattern.outer[c]; k < pattern.outer[c + 1]; ++k) columnOf_[k] = c;
+  for (int s = 0; s < tree_.supernodes(); ++s)
+    if (tree_.parent[s] >= 0) children_[tree_.parent[s]].push_back(s);
+}
+
+void MultifrontalLdl::factorize(const double* values, const PivotTest& test) {
+  negative_ = perturbed_ = delayed_ = 0;
+  for (int s = 0; s < tree_.supernodes(); ++s) factorizeFront(s, values, test);
+  if (getenv("MFDEBUG")) {
+    long big = 0; int maxm = 0; std::vector<int> hist(8);
+    for (auto& f : factors_) { maxm = std::max<int>(maxm, f.rows.size()); big += (long)f.rows.size()*f.rows.size();
+      int np=f.pivots; hist[np>=7?7:np]++; }
+    fprintf(stderr, "n %d fronts %d delayed %d maxm %d sum m^2 %ld piv-hist %d %d %d %d %d %d %d %d\n", pattern_.n, tree_.supernodes(), delayed_, maxm, big, hist[0],hist[1],hist[2],hist[3],hist[4],hist[5],hist[6],hist[7]);
+  }
+}
+
+// The front's rows: its own columns, the rows its children delayed, then L's rows below it.
+// Sums A's entries of its own columns and its children's contribution blocks into front_ (the
+// fully summed block whole, the rest by its lower triangle); returns the fully summed count.
+int MultifrontalLdl::assemble(int s, const double* values) {
+  std::vector<int>& rows = factors_[s].rows;
+  const auto own = tree_.columns.begin();
+  rows.clear();
+  for (auto j = own + tree_.columnStart[s]; j != own + tree_.columnStart[s + 1]; ++j)
+    rows.push_back(tree_.order[*j]);
+  for (int c : children_[s]) {
+    const Contribution& child = contributions_[c];
+    rows.insert(rows.end(), child.rows.begin(), child.rows.begin() + child.delayed);
+  }
+  const int fullySummed = static_cast<int>(rows.size());
+  rows.insert(rows.end(), tree_.rows.begin() + tree_.rowStart[s],
+              tree_.rows.begin() + tree_.rowStart[s + 1]);
+  const int m = static_cast<int>(rows.size());
+  for (int i = 0; i < m; ++i) place_[rows[i]] = i;
+  front_.resize(m, m);
+  for (int j = 0; j < m; ++j) front_.col(j).tail(m - j).setZero();  // the lower triangle
+  auto add = [&](int a, int b, double v) { front_(std::max(a, b), std::min(a, b)) += v; };
+  for (auto j = own + tree_.columnStart[s]; j != own + tree_.columnStart[s + 1]; ++j)
+    for (int q = tree_.entryStart[*j]; q < tree_.entryStart[*j + 1]; ++q) {
+      const int k = tree_.entries[q];
+      add(place_[pattern_.inner[k]], place_[columnOf_[k]], values[k]);
+    }
+  for (int c : children_[s]) {
+    const Contribution& child = contributions_[c];
+    const int mc = static_cast<int>(child.rows.size());
+    const double* v = child.lower.data();
+    for (int j = 0; j < mc; ++j) {
+      const int b = place_[child.rows[j]];
+      for (int i = j; i < mc; ++i) add(place_[child.rows[i]], b, *v++);
+    }
+  }
+  auto summed = front_.topLeftCorner(fullySummed, fullySummed);
+  summed.triangularView<Eigen::StrictlyUpper>() = summed.transpose();
+  return fullySummed;
+}
+
+void MultifrontalLdl::factorizeFront(int s, const double* values, const PivotTest& test) {
+  const int fullySummed = assemble(s, values);
+  const bool root = tree_.parent[s] < 0;
+  FrontPivots& pivots = pivots_;
+  factorFront(front_, fullySummed, root, test, pivots, workspace_);
+  FrontFactor& factor = factors_[s];
+  const std::vector<int> rows = factor.rows;
+  for (size_t i = 0; i < rows.size(); ++i) factor.rows[i] = rows[pivots.permutation[i]];
+  const int m = static_cast<int>(rows.size()), eliminated = pivots.pivots;
+  factor.pivots = eliminated;
+  factor.l = front_.leftCols(eliminated);
+  factor.inverseDiagonal.swap(pivots.inverseDiagonal);
+  factor.inverseOffDiagonal.swap(pivots.inverseOffDiagonal);
+  negative_ += pivots.negative;
+  perturbed_ += pivots.perturbed;
+  delayed_ += fullySummed - eliminated;
+  if (root) return;
+  Contribution& out = contributions_[s];
+  out.rows.assign(factor.rows.begin() + eliminated, factor.rows.end());
+  out.delayed = fullySummed - eliminated;
+  out.lower.clear();
+  for (int j = eliminated; j < m; ++j)
+    out.lower.insert(out.lower.end(), front_.col(j).data() + j, front_.col(j).data() + m);
+}
+
+void MultifrontalLdl::solve(double* x) const {
+  const int nf = tree_.supernodes();
+  for (int s = 0; s < nf; ++s) {  // L y = x, front by front
+    const FrontFactor& f = factors_[s];
+    const int np = f.pivots, below = static_cast<int>(f.rows.size()) - np;
+    work_.resize(f.rows.size());
+    Eigen::Map<Eigen::VectorXd> y(work_.data(), np), z(work_.data() + np, below);
+    for (int i = 0; i < np; ++i) y[i] = x[f.rows[i]];
+    f.l.topRows(np).triangularView<Eigen::UnitLower>().solveInPlace(y);
+    z.noalias() = f.l.bottomRows(below) * y;
+    for (int i = 0; i < np; ++i) x[f.rows[i]] = y[i];
+    for (int i = 0; i < below; ++i) x[f.rows[np + i]] -= z[i];
+  }
+  for (const FrontFactor& f : factors_) {  // D z = y
+    for (int i = 0; i < f.pivots; ++i) {
+      const double off = f.inverseOffDiagonal[i];
+      if (off == 0.0) {
+        x[f.rows[i]] *= f.inverseDiagonal[i];
+        continue;
+      }
+      const double a = x[f.rows[i]], b = x[f.rows[i + 1]];
+      x[f.rows[i]] = f.inverseDiagonal[i] * a + off * b;
+      x[f.rows[i + 1]] = off * a + f.inverseDiagonal[i + 1] * b;
+      ++i;
+    }
+  }
+  for (int s = nf - 1; s >= 0; --s) {  // L^T x = z
+    const FrontFactor& f = factors_[s];
+    const int np = f.pivots, below = static_cast<int>(f.rows.size()) - np;
+    work_.resize(f.rows.size());
+    Eigen::Map<Eigen::VectorXd> y(work_.data(), np), z(work_.data() + np, below);
+    for (int i = 0; i < np; ++i) y[i] = x[f.rows[i]];
+    for (int i = 0; i < below; ++i) z[i] = x[f.rows[np + i]];
+    y.noalias() -= f.l.bottomRows(below).transpose() * z;
+    f.l.topRows(np).triangularView<Eigen::UnitLower>().transpose().solveInPlace(y);
+    for (int i = 0; i < np; ++i) x[f.rows[i]] = y[i];
+  }
+}
+
+}  // namespace gaitopt::ocp::kkt

@@ -1,0 +1,75 @@
+#pragma once
+/// @file multifrontal_ldl.hpp
+/// Sparse LDL^T of a symmetric indefinite matrix, P A P^T = L D L^T with D of 1x1 and 2x2
+/// blocks, by the multifrontal method with the pivots chosen during the factorization (Duff and
+/// Reid, "The multifrontal solution of indefinite sparse symmetric linear equations", ACM TOMS
+/// 9, 1983): each supernode of the assembly tree (assembly_tree.hpp) is a dense front that sums
+/// its rows of A and its children's contribution blocks and eliminates its fully summed rows
+/// with threshold pivoting (front_ldl.hpp); a row no stable pivot takes is delayed to the parent
+/// front. The order is a starting point, not a promise: a zero or small diagonal is skipped over
+/// inside its front instead of being clamped. By Sylvester's law of inertia the eigenvalues of D
+/// count A's negative eigenvalues, which Ipopt's inertia correction asks of its linear solver.
+#include <Eigen/Core>
+#include <vector>
+
+#include "ocp/solve/kkt/assembly_tree.hpp"
+#include "ocp/solve/kkt/front_ldl.hpp"
+#include "ocp/solve/kkt/symmetric_pattern.hpp"
+
+namespace gaitopt::ocp::kkt {
+
+class MultifrontalLdl {
+ public:
+  /// The symbolic analysis: the assembly tree of this pattern under this order, supernodes
+  /// below `mergeBelow` columns merged (analyseAssemblyTree).
+  MultifrontalLdl(const SymmetricPattern& pattern, const EliminationOrder& order,
+                  int mergeBelow = kAmalgamationColumns);
+
+  /// Numerical factorization of the matrix with this pattern and `values` (same order as the
+  /// pattern's entries), its pivots chosen by `test` (front_ldl.hpp). A pivot eigenvalue below
+  /// test.tiny in magnitude, which only a (nearly) singular matrix leaves, is moved to +-tiny
+  /// and counted.
+  void factorize(const double* values, const PivotTest& test);
+  /// x := A^{-1} x for the last factorized A (up to the perturbed pivots).
+  void solve(double* x) const;
+
+  int negativeEigenvalues() const { return negative_; }
+  int perturbedPivots() const { return perturbed_; }
+  /// Rows eliminated in a later front than the order put them in, counted once per front passed.
+  int delayedPivots() const { return delayed_; }
+  int supernodes() const { return tree_.supernodes(); }
+
+ private:
+  /// One front's share of the factors: its rows (eliminated ones first), L's columns for the
+  /// eliminated rows, and D^{-1}.
+  struct FrontFactor {
+    std::vector<int> rows;
+    int pivots = 0;
+    Eigen::MatrixXd l;
+    std::vector<double> inverseDiagonal, inverseOffDiagonal;
+  };
+  /// What a front hands its parent: the Schur complement on its uneliminated rows, the
+  /// delayed ones first, its lower triangle packed by columns.
+  struct Contribution {
+    std::vector<int> rows;
+    int delayed = 0;
+    std::vector<double> lower;
+  };
+
+  int assemble(int s, const double* values);
+  void factorizeFront(int s, const double* values, const PivotTest& test);
+
+  SymmetricPattern pattern_;
+  AssemblyTree tree_;
+  std::vector<int> columnOf_;  // column of each stored entry
+  std::vector<std::vector<int>> children_;
+  std::vector<FrontFactor> factors_;
+  std::vector<Contribution> contributions_;
+  std::vector<int> place_;  // row -> its place in the front being assembled
+  Eigen::MatrixXd front_, workspace_;  // the front being factorized, and factorFront's
+  FrontPivots pivots_;
+  mutable std::vector<double> work_;
+  int negative_ = 0, perturbed_ = 0, delayed_ = 0;
+};
+
+}  // namespace gaitopt::ocp::kkt
