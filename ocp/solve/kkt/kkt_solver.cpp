@@ -13,12 +13,11 @@ namespace gaitopt::ocp::kkt {
 
 namespace {
 
-// A pivot this much smaller than the largest entry is taken for zero: it is moved to +-tiny (and
-// counted) instead of divided by. Far below 1e-16 because the diagonal of Ipopt's matrix spans
-// twenty decades near the optimum (Sigma = z / s from 1e-11 to 1e10 on the five-link problem):
-// at 1e-20 the slack rows' true pivots are clamped, the solves lose their digits and the
-// five-link solve does not converge in 500 iterations; at 1e-30 it takes MUMPS's 15
-// (results/solve_profile.md).
+// A pivot this much smaller than the largest entry of the equilibrated matrix
+// (multifrontal_ldl.cpp) is taken for zero: it is moved to +-tiny (and counted) and MUMPS
+// decides. Unscaled, the diagonal of Ipopt's matrix spans twenty decades near the optimum
+// (Sigma = z / s from 1e-11 to 1e15), which is why the bound was set this low; equilibrated,
+// 1e-20 and 1e-30 gave the same solves on the five-link default, strike and work configs.
 constexpr double kTinyPivot = 1e-30;
 
 // Ipopt's residual_ratio_max (IpPDFullSpaceSolver.cpp): a solution whose residual ratio is above
@@ -45,11 +44,6 @@ double residualRatio(const Eigen::VectorXd& residual, const Eigen::VectorXd& x,
          (std::min(x.lpNorm<Eigen::Infinity>(), 1e6 * rhs) + rhs);
 }
 
-double largestMagnitude(const double* values, int count) {
-  double largest = 0;
-  for (int k = 0; k < count; ++k) largest = std::max(largest, std::abs(values[k]));
-  return largest;
-}
 
 }  // namespace
 
@@ -87,8 +81,7 @@ void KktSolver::factorize(const double* values) {
 // A pivot below tiny, which only a (nearly) singular matrix leaves: MUMPS decides whether A is
 // singular (Ipopt then regularises the constraints) and factorizes it if not.
 void KktSolver::factorizeOwn(const double* values) {
-  ldl_->factorize(values,
-                  {threshold_, kTinyPivot * largestMagnitude(values, pattern_.nonZeros())});
+  ldl_->factorize(values, {threshold_, kTinyPivot});
   factor_ = Factor::kOwn;
   KktStatistics& counts = threadKktStatistics();
   counts.delayed_pivots += ldl_->delayedPivots();

@@ -18,6 +18,10 @@
 
 namespace gaitopt::ocp::kkt {
 
+/// Passes of the symmetric equilibration: a few bring every row's largest entry within a factor
+/// of two or so of 1 (Ruiz 2001 converges linearly with rate 1/2).
+inline constexpr int kEquilibrationPasses = 3;
+
 class MultifrontalLdl {
  public:
   /// The symbolic analysis: the assembly tree of this pattern under this order, supernodes
@@ -26,8 +30,9 @@ class MultifrontalLdl {
                   int mergeBelow = kAmalgamationColumns);
 
   /// Numerical factorization of the matrix with this pattern and `values` (same order as the
-  /// pattern's entries), its pivots chosen by `test` (front_ldl.hpp). A pivot eigenvalue below
-  /// test.tiny in magnitude, which only a (nearly) singular matrix leaves, is moved to +-tiny
+  /// pattern's entries), equilibrated (S A S, multifrontal_ldl.cpp), its pivots chosen by `test`
+  /// (front_ldl.hpp) with test.tiny relative to the largest entry of S A S: a pivot eigenvalue
+  /// below it in magnitude, which only a (nearly) singular matrix leaves, is moved to +-tiny
   /// and counted.
   void factorize(const double* values, const PivotTest& test);
   /// x := A^{-1} x for the last factorized A (up to the perturbed pivots).
@@ -56,6 +61,7 @@ class MultifrontalLdl {
     std::vector<double> lower;
   };
 
+  void equilibrate(const double* values);
   int assemble(int s, const double* values);
   void factorizeFront(int s, const double* values, const PivotTest& test);
 
@@ -66,6 +72,7 @@ class MultifrontalLdl {
   std::vector<FrontFactor> factors_;
   std::vector<Contribution> contributions_;
   std::vector<int> place_;  // row -> its place in the front being assembled
+  std::vector<double> scale_, scaled_;  // S, and the values of S A S
   Eigen::MatrixXd front_, workspace_;  // the front being factorized, and factorFront's
   FrontPivots pivots_;
   mutable std::vector<double> work_;
