@@ -80,6 +80,7 @@ nlohmann::ordered_json linearSolverJson(const SolverOptions& options, const Solv
   return {
       {"linear_solver", options.linear_solver},
       {"factorizations", p.factorizations},
+      {"pivoting_factorizations", p.ldl.pivoting_factorizations},
       {"mumps_fallbacks", p.ldl.mumps_fallbacks},
       {"mumps_fallback_share",
        p.factorizations > 0 ? static_cast<double>(p.ldl.mumps_fallbacks) / p.factorizations : 0.0},

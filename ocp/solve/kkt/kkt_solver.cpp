@@ -13,22 +13,25 @@ namespace gaitopt::ocp::kkt {
 
 namespace {
 
-// A pivot this much smaller than the largest entry of the equilibrated matrix
-// (multifrontal_ldl.cpp) is taken for zero: it is moved to +-tiny (and counted) and MUMPS
-// decides. Unscaled, the diagonal of Ipopt's matrix spans twenty decades near the optimum
-// (Sigma = z / s from 1e-11 to 1e15), which is why the bound was set this low; equilibrated,
-// 1e-20 and 1e-30 gave the same solves on the five-link default, strike and work configs.
+// A pivot this much smaller than the largest entry (of A for the static pivots, of the
+// equilibrated S A S for the pivoting ones, multifrontal_ldl.cpp) is taken for zero: it is moved
+// to +-tiny (and counted), and the matrix goes to the pivoting factorization or to MUMPS. Far
+// below 1e-16 because the diagonal of Ipopt's matrix spans twenty decades near the optimum
+// (Sigma = z / s from 1e-11 to 1e15 on the five-link problem): at 1e-20 the static pivots clamped
+// the slack rows' true pivots and the five-link solve did not converge in 500 iterations.
 constexpr double kTinyPivot = 1e-30;
 
 // Ipopt's residual_ratio_max (IpPDFullSpaceSolver.cpp): a solution whose residual ratio is above
-// it is refined. One that KktSolver's own refinement leaves above it is factorized again with a
+// it is refined. One that KktSolver's own refinement leaves above it is factorized again: with
+// pivoting if it came from the static pivots (which can lose every digit once the barrier
+// parameter is small: the compass-gait walk's ratio reached 0.4 at mu = 3e-8), else with a
 // larger pivot threshold, and by MUMPS if the largest one does not reach it either.
 constexpr double kResidualRatioMax = 1e-10;
-// Refinement steps before raising the threshold: two, as with the static pivots before, where
-// without them half the five-link default's solves went to MUMPS.
-constexpr int kOwnRefinementSteps = 2;
-// The pivot threshold u (front_ldl.hpp): Ipopt's default pivot tolerance for MUMPS
-// (mumps_pivtol) to start with, raised a hundredfold per inexact solve up to MUMPS's own default
+// Refinement steps before turning from the static pivots to pivoting, or raising the threshold:
+// two; without them half the five-link default's solves left the static pivots.
+constexpr int kRefinementSteps = 2;
+// The pivoting factorization's threshold u (front_ldl.hpp): Ipopt's default pivot tolerance
+// for MUMPS (mumps_pivtol) to start with, raised a hundredfold per inexact solve up to MUMPS's own default
 // (CNTL(1) = 0.01), and kept for the later matrices, as Ipopt keeps a raised mumps_pivtol. On
 // the five-link default, u = 0.01 from the start delays 4 500 rows per factorization and takes
 // 2.5 times as long; u = 1e-6 delays 9.
@@ -44,6 +47,12 @@ double residualRatio(const Eigen::VectorXd& residual, const Eigen::VectorXd& x,
          (std::min(x.lpNorm<Eigen::Infinity>(), 1e6 * rhs) + rhs);
 }
 
+
+double largestMagnitude(const double* values, int count) {
+  double largest = 0;
+  for (int k = 0; k < count; ++k) largest = std::max(largest, std::abs(values[k]));
+  return largest;
+}
 
 }  // namespace
 
@@ -61,7 +70,9 @@ void KktSolver::analyse(const double* values) {
   const std::vector<PivotPair> pairs = kktPivotPairs(pattern_, values, constraintStart_, rows);
   paired_.assign(pattern_.n, 0);
   for (const PivotPair& p : pairs) paired_[p.first] = paired_[p.second] = 1;
-  ldl_ = std::make_unique<MultifrontalLdl>(pattern_, pairedMinimumDegreeOrder(pattern_, pairs));
+  order_ = pairedMinimumDegreeOrder(pattern_, pairs);
+  static_ = std::make_unique<BlockLdl>(pattern_, order_);
+  pivoting_.reset();
   ++analyses_;
   ++threadKktStatistics().analyses;
 }
@@ -72,20 +83,36 @@ bool KktSolver::lostADiagonal(const double* values) const {
   return false;
 }
 
+// The static pivots first, while they hold: a zero pivot, or an inertia other than a KKT
+// matrix's (one negative eigenvalue per constraint row), which from static pivots can be a
+// small pivot's rounding, turns this solver to pivoting for the rest of its matrices. With
+// Ipopt's finite-difference Jacobian on RABBIT the static count was off at every iteration
+// (delta_w 1e4, 500 iterations, where a pivoting solver needs no regularisation and converges
+// in 35).
 void KktSolver::factorize(const double* values) {
   ++threadKktStatistics().factorizations;
-  if (!ldl_ || lostADiagonal(values)) analyse(values);
-  factorizeOwn(values);
+  if (!static_ || lostADiagonal(values)) analyse(values);
+  if (!usePivoting_) {
+    static_->factorize(values, kTinyPivot * largestMagnitude(values, pattern_.nonZeros()));
+    factor_ = Factor::kStatic;
+    if (static_->perturbedPivots() == 0 &&
+        static_->negativeEigenvalues() == pattern_.n - constraintStart_)
+      return;
+    usePivoting_ = true;
+  }
+  factorizePivoting(values);
 }
 
 // A pivot below tiny, which only a (nearly) singular matrix leaves: MUMPS decides whether A is
 // singular (Ipopt then regularises the constraints) and factorizes it if not.
-void KktSolver::factorizeOwn(const double* values) {
-  ldl_->factorize(values, {threshold_, kTinyPivot});
-  factor_ = Factor::kOwn;
+void KktSolver::factorizePivoting(const double* values) {
+  if (!pivoting_) pivoting_ = std::make_unique<MultifrontalLdl>(pattern_, order_);
+  pivoting_->factorize(values, {threshold_, kTinyPivot});
+  factor_ = Factor::kPivoting;
   KktStatistics& counts = threadKktStatistics();
-  counts.delayed_pivots += ldl_->delayedPivots();
-  if (ldl_->perturbedPivots() == 0) return;
+  ++counts.pivoting_factorizations;
+  counts.delayed_pivots += pivoting_->delayedPivots();
+  if (pivoting_->perturbedPivots() == 0) return;
   ++counts.zero_pivot_fallbacks;
   factorizeWithMumps(values);
 }
@@ -99,14 +126,25 @@ void KktSolver::factorizeWithMumps(const double* values) {
 }
 
 int KktSolver::negativeEigenvalues() const {
-  return factor_ == Factor::kMumps ? mumps_->negativeEigenvalues() : ldl_->negativeEigenvalues();
+  switch (factor_) {
+    case Factor::kStatic:
+      return static_->negativeEigenvalues();
+    case Factor::kMumps:
+      return mumps_->negativeEigenvalues();
+    default:
+      return pivoting_->negativeEigenvalues();
+  }
 }
 
 void KktSolver::applyInverse(double* x) const {
-  if (factor_ == Factor::kMumps)
-    mumps_->solve(x);
-  else
-    ldl_->solve(x);
+  switch (factor_) {
+    case Factor::kStatic:
+      return static_->solve(x);
+    case Factor::kMumps:
+      return mumps_->solve(x);
+    default:
+      return pivoting_->solve(x);
+  }
 }
 
 double KktSolver::solveAndRefine(const double* values, double* rhs, int refinementSteps,
@@ -132,15 +170,19 @@ double KktSolver::solveAndRefine(const double* values, double* rhs, int refineme
 
 int KktSolver::solve(const double* values, double* rhs, int refinementSteps) {
   const std::vector<double> b(rhs, rhs + pattern_.n);
-  const int allowed = std::max(refinementSteps, kOwnRefinementSteps);
+  const int allowed = std::max(refinementSteps, kRefinementSteps);
   int steps = 0;
   try {
     double ratio = solveAndRefine(values, rhs, allowed, steps);
-    while (ratio > kResidualRatioMax && factor_ == Factor::kOwn) {
+    while (ratio > kResidualRatioMax &&
+           (factor_ == Factor::kStatic || factor_ == Factor::kPivoting)) {
       ++threadKktStatistics().inexact_refactorizations;
-      if (threshold_ < kLargestThreshold) {
+      if (factor_ == Factor::kStatic) {
+        usePivoting_ = true;
+        factorizePivoting(values);
+      } else if (threshold_ < kLargestThreshold) {
         threshold_ = std::min(kLargestThreshold, threshold_ * kThresholdStep);
-        factorizeOwn(values);
+        factorizePivoting(values);
       } else {
         ++threadKktStatistics().inexact_fallbacks;
         factorizeWithMumps(values);
@@ -149,9 +191,9 @@ int KktSolver::solve(const double* values, double* rhs, int refinementSteps) {
       ratio = solveAndRefine(values, rhs, allowed, steps);
     }
   } catch (const SingularMatrix&) {
-    // Too late to tell Ipopt (it takes a solve's failure for an internal error): keep the own
-    // factors' solution, whose residual Ipopt's own refinement then measures.
-    factor_ = Factor::kOwnMumpsRefused;
+    // Too late to tell Ipopt (it takes a solve's failure for an internal error): keep the
+    // pivoting factors' solution, whose residual Ipopt's own refinement then measures.
+    factor_ = Factor::kPivotingMumpsRefused;
     std::copy(b.begin(), b.end(), rhs);
     solveAndRefine(values, rhs, allowed, steps);
   }

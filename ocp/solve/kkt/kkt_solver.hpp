@@ -1,23 +1,27 @@
 #pragma once
 /// @file kkt_solver.hpp
-/// Ipopt's augmented system solved by MultifrontalLdl, in the order pair_order.hpp gives the
-/// pairs of kkt_pairs.hpp: what Pardiso's phases 11 (analyse), 22 (factorize) and 33 (solve) do
-/// for Ipopt (pardiso_interface.cpp).
+/// Ipopt's augmented system solved in the order pair_order.hpp gives the pairs of
+/// kkt_pairs.hpp: what Pardiso's phases 11 (analyse), 22 (factorize) and 33 (solve) do for Ipopt
+/// (pardiso_interface.cpp). Two factorizations share that order: BlockLdl's static 2x2 pivots,
+/// fast (no pivot search, no dense fronts) and enough for the five-link default and RABBIT at
+/// every iteration, and MultifrontalLdl, which chooses its pivots inside the factorization and
+/// takes over, for the rest of the solve, at the first matrix the static pivots fail on.
 /// Why not MUMPS: on these problems (4 000 rows, 26 000 entries) MUMPS spends 3.7 ms on a
 /// factorization of 2.7 Mflop, its bookkeeping per front rather than arithmetic, and two thirds
 /// of a whole solve (results/solve_profile.md); Debian ships no other solver Ipopt can load.
-/// The pivots are chosen inside the factorization with a threshold test, so the inertia it counts
-/// is the matrix's (Sylvester's law) and Ipopt's to act on, as MUMPS's is. MUMPS
-/// (mumps_factor.hpp) still takes the rare matrix this leaves with a pivot below `tiny`, a
-/// (nearly) singular one, for MUMPS to call singular or not, and a solve that refinement leaves
-/// less accurate than Ipopt asks. Before, the pairs were static 2x2 pivots fixed at the analysis:
-/// a zero pivot, a flipped inertia count or lost digits sent 174 of 192 factorizations of the
-/// cost-of-transport solve to MUMPS (results/linear_solver_compare.csv of then).
+/// The pivoting factorization's inertia is the matrix's (Sylvester's law) and Ipopt's to act on,
+/// as MUMPS's is. MUMPS (mumps_factor.hpp) still takes the rare matrix it leaves with a pivot
+/// below `tiny`, a (nearly) singular one, for MUMPS to call singular or not, and a solve that
+/// refinement leaves less accurate than Ipopt asks under the largest pivot threshold. Before the
+/// pivoting factorization, every matrix the static pivots failed on went to MUMPS: 803 of 1005
+/// factorizations of the cost-of-transport solve (results/linear_solver_compare.csv of then).
 #include <memory>
 #include <vector>
 
+#include "ocp/solve/kkt/block_ldl.hpp"
 #include "ocp/solve/kkt/mumps_factor.hpp"
 #include "ocp/solve/kkt/multifrontal_ldl.hpp"
+#include "ocp/solve/kkt/pair_order.hpp"
 #include "ocp/solve/kkt/symmetric_pattern.hpp"
 
 namespace gaitopt::ocp::kkt {
@@ -30,7 +34,8 @@ class KktSolver {
   void analyse(const double* values);
   /// Factorizes A(values); analyses again first if a variable row's diagonal has become zero
   /// since (Ipopt's first matrix, for the least-squares multipliers, has an identity there).
-  /// On a pivot below `tiny`, MUMPS factorizes A instead. @throws SingularMatrix from MUMPS.
+  /// The static pivots while they hold, then pivoting (kkt_solver.cpp says when); on a pivot
+  /// below `tiny` there, MUMPS factorizes A instead. @throws SingularMatrix from MUMPS.
   void factorize(const double* values);
   /// rhs := A^{-1} rhs, refined against A(values) while Ipopt's residual ratio is missed, at most
   /// max(2, refinementSteps) steps; if it is still missed, A is factorized again with a larger
@@ -46,7 +51,7 @@ class KktSolver {
 
  private:
   bool lostADiagonal(const double* values) const;
-  void factorizeOwn(const double* values);
+  void factorizePivoting(const double* values);
   void factorizeWithMumps(const double* values);
   void applyInverse(double* x) const;
   /// Solves and refines in place; returns the residual ratio reached and sets the steps taken.
@@ -56,12 +61,16 @@ class KktSolver {
   int constraintStart_;
   std::vector<char> mustPair_;  // row -> a variable row seen with a zero diagonal
   std::vector<char> paired_;    // row -> in a pair
-  std::unique_ptr<MultifrontalLdl> ldl_;
+  EliminationOrder order_;
+  std::unique_ptr<BlockLdl> static_;
+  std::unique_ptr<MultifrontalLdl> pivoting_;  // made at the first matrix the static pivots fail
+  bool usePivoting_ = false;
   std::unique_ptr<MumpsFactor> mumps_;  // made at the first fallback
-  /// Whose factors of the last factorized A the solves use: gaitopt's, MUMPS's, or gaitopt's
-  /// after MUMPS found A singular in a solve (not to be asked again).
-  enum class Factor { kOwn, kMumps, kOwnMumpsRefused };
-  Factor factor_ = Factor::kOwn;
+  /// Whose factors of the last factorized A the solves use: the static pivots', the pivoting
+  /// ones', MUMPS's, or the pivoting ones' after MUMPS found A singular in a solve (not to be
+  /// asked again).
+  enum class Factor { kStatic, kPivoting, kMumps, kPivotingMumpsRefused };
+  Factor factor_ = Factor::kStatic;
   int analyses_ = 0;
   int fallbacks_ = 0;
   double threshold_;  // the pivot test's u; kkt_solver.cpp says how it moves

@@ -14,7 +14,6 @@ MultifrontalLdl::MultifrontalLdl(const SymmetricPattern& pattern, const Eliminat
       columnOf_(pattern.nonZeros()),
       children_(tree_.supernodes()),
       factors_(tree_.supernodes()),
-      contributions_(tree_.supernodes()),
       place_(pattern.n, -1) {
   for (int c = 0; c < pattern.n; ++c)
     for (int k = pattern.outer[c]; k < pattern.outer[c + 1]; ++k) columnOf_[k] = c;
@@ -57,68 +56,62 @@ void MultifrontalLdl::factorize(const double* values, const PivotTest& test) {
 }
 
 // The front's rows: its own columns, the rows its children delayed, then L's rows below it.
-// Sums A's entries of its own columns and its children's contribution blocks into front_ (the
-// fully summed block whole, the rest by its lower triangle); returns the fully summed count.
+// Sums A's entries of its own columns and its children's contribution blocks (read in place,
+// below their eliminated rows) into its matrix (the fully summed block whole, the rest by its
+// lower triangle); returns the fully summed count.
 int MultifrontalLdl::assemble(int s, const double* values) {
-  std::vector<int>& rows = factors_[s].rows;
+  FrontFactor& front = factors_[s];
+  std::vector<int>& rows = front.rows;
   const auto own = tree_.columns.begin();
   rows.clear();
   for (auto j = own + tree_.columnStart[s]; j != own + tree_.columnStart[s + 1]; ++j)
     rows.push_back(tree_.order[*j]);
   for (int c : children_[s]) {
-    const Contribution& child = contributions_[c];
-    rows.insert(rows.end(), child.rows.begin(), child.rows.begin() + child.delayed);
+    const FrontFactor& child = factors_[c];
+    rows.insert(rows.end(), child.rows.begin() + child.pivots,
+                child.rows.begin() + child.fullySummed);
   }
   const int fullySummed = static_cast<int>(rows.size());
   rows.insert(rows.end(), tree_.rows.begin() + tree_.rowStart[s],
               tree_.rows.begin() + tree_.rowStart[s + 1]);
   const int m = static_cast<int>(rows.size());
   for (int i = 0; i < m; ++i) place_[rows[i]] = i;
-  front_.resize(m, m);
-  for (int j = 0; j < m; ++j) front_.col(j).tail(m - j).setZero();  // the lower triangle
-  auto add = [&](int a, int b, double v) { front_(std::max(a, b), std::min(a, b)) += v; };
+  Eigen::MatrixXd& f = front.matrix;
+  f.resize(m, m);
+  for (int j = 0; j < m; ++j) f.col(j).tail(m - j).setZero();  // the lower triangle
+  auto add = [&f](int a, int b, double v) { f(std::max(a, b), std::min(a, b)) += v; };
   for (auto j = own + tree_.columnStart[s]; j != own + tree_.columnStart[s + 1]; ++j)
     for (int q = tree_.entryStart[*j]; q < tree_.entryStart[*j + 1]; ++q) {
       const int k = tree_.entries[q];
       add(place_[pattern_.inner[k]], place_[columnOf_[k]], values[k]);
     }
   for (int c : children_[s]) {
-    const Contribution& child = contributions_[c];
+    const FrontFactor& child = factors_[c];
     const int mc = static_cast<int>(child.rows.size());
-    const double* v = child.lower.data();
-    for (int j = 0; j < mc; ++j) {
+    for (int j = child.pivots; j < mc; ++j) {
       const int b = place_[child.rows[j]];
-      for (int i = j; i < mc; ++i) add(place_[child.rows[i]], b, *v++);
+      const double* v = child.matrix.col(j).data();
+      for (int i = j; i < mc; ++i) add(place_[child.rows[i]], b, v[i]);
     }
   }
-  auto summed = front_.topLeftCorner(fullySummed, fullySummed);
+  auto summed = f.topLeftCorner(fullySummed, fullySummed);
   summed.triangularView<Eigen::StrictlyUpper>() = summed.transpose();
   return fullySummed;
 }
 
 void MultifrontalLdl::factorizeFront(int s, const double* values, const PivotTest& test) {
-  const int fullySummed = assemble(s, values);
-  const bool root = tree_.parent[s] < 0;
-  FrontPivots& pivots = pivots_;
-  factorFront(front_, fullySummed, root, test, pivots, workspace_);
-  FrontFactor& factor = factors_[s];
-  const std::vector<int> rows = factor.rows;
-  for (size_t i = 0; i < rows.size(); ++i) factor.rows[i] = rows[pivots.permutation[i]];
-  const int m = static_cast<int>(rows.size()), eliminated = pivots.pivots;
-  factor.pivots = eliminated;
-  factor.l = front_.leftCols(eliminated);
-  factor.inverseDiagonal.swap(pivots.inverseDiagonal);
-  factor.inverseOffDiagonal.swap(pivots.inverseOffDiagonal);
-  negative_ += pivots.negative;
-  perturbed_ += pivots.perturbed;
-  delayed_ += fullySummed - eliminated;
-  if (root) return;
-  Contribution& out = contributions_[s];
-  out.rows.assign(factor.rows.begin() + eliminated, factor.rows.end());
-  out.delayed = fullySummed - eliminated;
-  out.lower.clear();
-  for (int j = eliminated; j < m; ++j)
-    out.lower.insert(out.lower.end(), front_.col(j).data() + j, front_.col(j).data() + m);
+  FrontFactor& front = factors_[s];
+  front.fullySummed = assemble(s, values);
+  factorFront(front.matrix, front.fullySummed, tree_.parent[s] < 0, test, pivots_, workspace_);
+  permuted_.resize(front.rows.size());
+  for (size_t i = 0; i < front.rows.size(); ++i) permuted_[i] = front.rows[pivots_.permutation[i]];
+  front.rows.swap(permuted_);
+  front.pivots = pivots_.pivots;
+  front.inverseDiagonal.swap(pivots_.inverseDiagonal);
+  front.inverseOffDiagonal.swap(pivots_.inverseOffDiagonal);
+  negative_ += pivots_.negative;
+  perturbed_ += pivots_.perturbed;
+  delayed_ += front.fullySummed - front.pivots;
 }
 
 void MultifrontalLdl::solve(double* x) const {
@@ -130,8 +123,8 @@ void MultifrontalLdl::solve(double* x) const {
     work_.resize(f.rows.size());
     Eigen::Map<Eigen::VectorXd> y(work_.data(), np), z(work_.data() + np, below);
     for (int i = 0; i < np; ++i) y[i] = x[f.rows[i]];
-    f.l.topRows(np).triangularView<Eigen::UnitLower>().solveInPlace(y);
-    z.noalias() = f.l.bottomRows(below) * y;
+    f.matrix.topLeftCorner(np, np).triangularView<Eigen::UnitLower>().solveInPlace(y);
+    z.noalias() = f.matrix.bottomLeftCorner(below, np) * y;
     for (int i = 0; i < np; ++i) x[f.rows[i]] = y[i];
     for (int i = 0; i < below; ++i) x[f.rows[np + i]] -= z[i];
   }
@@ -155,8 +148,8 @@ void MultifrontalLdl::solve(double* x) const {
     Eigen::Map<Eigen::VectorXd> y(work_.data(), np), z(work_.data() + np, below);
     for (int i = 0; i < np; ++i) y[i] = x[f.rows[i]];
     for (int i = 0; i < below; ++i) z[i] = x[f.rows[np + i]];
-    y.noalias() -= f.l.bottomRows(below).transpose() * z;
-    f.l.topRows(np).triangularView<Eigen::UnitLower>().transpose().solveInPlace(y);
+    y.noalias() -= f.matrix.bottomLeftCorner(below, np).transpose() * z;
+    f.matrix.topLeftCorner(np, np).triangularView<Eigen::UnitLower>().transpose().solveInPlace(y);
     for (int i = 0; i < np; ++i) x[f.rows[i]] = y[i];
   }
   for (int i = 0; i < pattern_.n; ++i) x[i] *= scale_[i];

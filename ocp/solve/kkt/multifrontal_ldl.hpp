@@ -45,20 +45,16 @@ class MultifrontalLdl {
   int supernodes() const { return tree_.supernodes(); }
 
  private:
-  /// One front's share of the factors: its rows (eliminated ones first), L's columns for the
-  /// eliminated rows, and D^{-1}.
+  /// One front: its rows (eliminated ones first, then the ones it delayed, then the rows below
+  /// it), and its matrix, which after the factorization holds L's columns for the eliminated
+  /// rows and, below and right of them, the contribution block its parent adds up (lower
+  /// triangle), read in place; and D^{-1}.
   struct FrontFactor {
     std::vector<int> rows;
+    int fullySummed = 0;
     int pivots = 0;
-    Eigen::MatrixXd l;
+    Eigen::MatrixXd matrix;
     std::vector<double> inverseDiagonal, inverseOffDiagonal;
-  };
-  /// What a front hands its parent: the Schur complement on its uneliminated rows, the
-  /// delayed ones first, its lower triangle packed by columns.
-  struct Contribution {
-    std::vector<int> rows;
-    int delayed = 0;
-    std::vector<double> lower;
   };
 
   void equilibrate(const double* values);
@@ -70,11 +66,11 @@ class MultifrontalLdl {
   std::vector<int> columnOf_;  // column of each stored entry
   std::vector<std::vector<int>> children_;
   std::vector<FrontFactor> factors_;
-  std::vector<Contribution> contributions_;
   std::vector<int> place_;  // row -> its place in the front being assembled
   std::vector<double> scale_, scaled_;  // S, and the values of S A S
-  Eigen::MatrixXd front_, workspace_;  // the front being factorized, and factorFront's
+  Eigen::MatrixXd workspace_;  // factorFront's
   FrontPivots pivots_;
+  std::vector<int> permuted_;
   mutable std::vector<double> work_;
   int negative_ = 0, perturbed_ = 0, delayed_ = 0;
 };

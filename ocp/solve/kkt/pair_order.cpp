@@ -55,13 +55,16 @@ Eigen::SparseMatrix<double, Eigen::ColMajor, int> nodeGraph(const SymmetricPatte
       }
     }
   }
-  Eigen::SparseMatrix<double, Eigen::ColMajor, int> graph(nb, nb);
-  std::vector<Eigen::Triplet<double, int>> entries;
-  entries.reserve(rows.size());
-  for (int b = 0; b < nb; ++b)
-    for (int q = start[b]; q < next[b]; ++q) entries.emplace_back(rows[q], b, 1.0);
-  graph.setFromTriplets(entries.begin(), entries.end());
-  return graph;
+  std::vector<int> outer(nb + 1, 0), inner;
+  inner.reserve(rows.size());
+  for (int b = 0; b < nb; ++b) {
+    std::sort(rows.begin() + start[b], rows.begin() + next[b]);
+    inner.insert(inner.end(), rows.begin() + start[b], rows.begin() + next[b]);
+    outer[b + 1] = static_cast<int>(inner.size());
+  }
+  const std::vector<double> ones(inner.size(), 1.0);
+  return Eigen::Map<const Eigen::SparseMatrix<double, Eigen::ColMajor, int>>(
+      nb, nb, outer[nb], outer.data(), inner.data(), ones.data());
 }
 
 }  // namespace
