@@ -3,7 +3,8 @@
 /// config at SSP meshes of 24, 27, 30, 33 and 36 segments, each from two starts, the config's
 /// own initial guess (the polynomial gait, or the straight-leg guess) and a neighbouring solved
 /// gait (the config's solution at its shipped mesh, resampled onto the other mesh), plus every
-/// point of the shipped gait libraries from the polynomial gait. One solve is one draw: the
+/// point of the shipped gait libraries from the polynomial gait, and each point that fails so
+/// again from a converged neighbour, as `gaitopt library` starts it. One solve is one draw: the
 /// success rate over the draws and the spread of the converged costs per config are what a
 /// user who changes the mesh or the start meets.
 /// Writes one CSV row per solve and prints a markdown table per config.
@@ -103,7 +104,17 @@ std::vector<Draw> ocpDraws(const std::string& path) {
   return draws;
 }
 
-/// Every point of a library, from the polynomial gait (no warm start), into a scratch folder.
+/// A library point's draw: its index row as the bench records it.
+Draw drawOf(const std::string& name, int segments, const library::IndexRow& row) {
+  return {name,          row.start,      segments, row.status,
+          row.converged, row.iterations, row.cost, row.solve_time_s};
+}
+
+/// Every point of a library from the polynomial gait (no warm start), into a scratch folder,
+/// under the library's name; then, under "NAME (neighbour start)", every point that failed,
+/// warm-started from a converged grid neighbour as `gaitopt library` would start it, in passes
+/// until none is left to try (a point solved so serves its own neighbours; each failed point
+/// is tried once).
 std::vector<Draw> libraryDraws(const std::string& path, const std::string& scratch) {
   library::LibraryConfig config = library::loadLibraryConfig(path);
   const std::string name = "library " + fs::path(path).stem().string();
@@ -112,23 +123,38 @@ std::vector<Draw> libraryDraws(const std::string& path, const std::string& scrat
   const library::LibrarySetup setup{
       std::move(config), std::move(grid), scratch, {path, 100, {}, {}}};
   std::vector<Draw> draws;
+  std::vector<bool> solved(setup.grid.size()), tried(setup.grid.size());
   for (int p = 0; p < setup.grid.size(); ++p) {
     const library::IndexRow row = library::solveLibraryPoint(setup, {p, -1});
-    draws.push_back({name, row.start, segments, row.status, row.converged, row.iterations, row.cost,
-                     row.solve_time_s});
+    draws.push_back(drawOf(name, segments, row));
+    solved[p] = row.converged;
+  }
+  for (bool progress = true; progress;) {
+    progress = false;
+    for (int p = 0; p < setup.grid.size(); ++p) {
+      if (solved[p] || tried[p]) continue;
+      const std::vector<int> near = setup.grid.neighbours(p);
+      const auto from = std::find_if(near.begin(), near.end(), [&](int q) { return solved[q]; });
+      if (from == near.end()) continue;
+      const library::IndexRow row = library::solveLibraryPoint(setup, {p, *from});
+      draws.push_back(drawOf(name + " (neighbour start)", segments, row));
+      tried[p] = progress = true;
+      solved[p] = row.converged;
+    }
   }
   return draws;
 }
 
 std::string csvOf(const std::vector<Draw>& draws) {
   std::string text = "config,ssp_segments,start,status,converged,iterations,cost,wall_s\n";
-  for (const Draw& d : draws) {
-    std::string status = d.status;
-    std::replace(status.begin(), status.end(), ',', ';');
-    std::replace(status.begin(), status.end(), '\n', ' ');
-    text += fmt::format("{},{},{},{},{},{},{:.10g},{:.4f}\n", d.config, d.segments, d.start, status,
-                        d.converged ? 1 : 0, d.iterations, d.cost, d.wall_s);
-  }
+  auto cell = [](std::string text) {  // a start ("warm:P,polynomial") or status as one cell
+    std::replace(text.begin(), text.end(), ',', ';');
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    return text;
+  };
+  for (const Draw& d : draws)
+    text += fmt::format("{},{},{},{},{},{},{:.10g},{:.4f}\n", d.config, d.segments, cell(d.start),
+                        cell(d.status), d.converged ? 1 : 0, d.iterations, d.cost, d.wall_s);
   return text;
 }
 

@@ -80,8 +80,8 @@ echo
 
 echo
 echo "Every shipped config with MUMPS and with gaitopt's KKT solver (linear_solver: ldl):"
-scripts/linear_solver_compare.sh "$1" "$1/linear_solver_compare.csv"
-echo "(also in $1/linear_solver_compare.csv; results/linear_solver_compare.csv is a copy)"
+scripts/linear_solver_compare.sh "$1" "$1/linear_solver_compare.csv" | tee "$1/linear_solver_compare.md"
+echo "(also in $1/linear_solver_compare.{csv,md}; results/linear_solver_compare.{csv,md} are copies)"
 echo
 echo "How often each solver converges on the five-link configs at five meshes:"
 scripts/solver_robustness.sh "$1" "$1/solver_robustness.csv" 2>/dev/null

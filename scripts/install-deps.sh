@@ -10,8 +10,8 @@ set -euo pipefail
 
 # What `make demo` needs: the compiler, the libraries of the CLI, and matplotlib for its pictures.
 # libmumps-seq-dev (also a dependency of coinor-libipopt-dev): the KKT solver hands MUMPS the
-# matrices its static pivots fail on (ocp/solve/kkt/mumps_factor.hpp), and the solve profile times
-# MUMPS's calls, both through its C header (dmumps_c.h).
+# rare matrix its pivoting factorization finds (nearly) singular (ocp/solve/kkt/mumps_factor.hpp),
+# and the solve profile times MUMPS's calls, both through its C header (dmumps_c.h).
 packages=(
   build-essential cmake pkg-config ninja-build
   coinor-libipopt-dev libmumps-seq-dev libeigen3-dev libnlopt-cxx-dev

@@ -2,7 +2,8 @@
 # One `gaitopt optimize` of CONFIG, written to OUT (OUT.failed if it fails), as a CSV row:
 # the LABELs, then the solve's status, iterations, cost and wall time (summary.json's
 # wall_time_s, the solve without writing the folder), then its KKT factorizations, how many of
-# them MUMPS made for gaitopt's KKT solver, and Ipopt's inertia corrections (summary.json's kkt). The row for the solver comparisons:
+# them MUMPS made for gaitopt's KKT solver, Ipopt's inertia corrections, and how many of them
+# gaitopt's pivoting factorization made (summary.json's kkt). The row for the solver comparisons:
 # scripts/linear_solver_compare.sh, scripts/solver_robustness.sh.
 # Usage: scripts/solve_row.sh GAITOPT CONFIG OUT [LABEL ...]
 set -euo pipefail
@@ -24,5 +25,6 @@ s = json.load(open(sys.argv[1]))
 labels = "".join(f"{label}," for label in sys.argv[2:])
 k = s["kkt"]
 print(f"{labels}{s['status']},{s['iterations']},{s['cost']!r},{s['wall_time_s']:.4f},"
-      f"{k['factorizations']},{k['mumps_fallbacks']},{k['inertia_corrections']}")
+      f"{k['factorizations']},{k['mumps_fallbacks']},{k['inertia_corrections']},"
+      f"{k['pivoting_factorizations']}")
 PY

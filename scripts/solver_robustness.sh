@@ -29,7 +29,7 @@ sed -i 's/^  linear_solver: mumps$/  linear_solver: mumps\n  mumps_pivot_order: 
   "$work"/mumps-auto/ocp/*.yaml
 
 rows="$work/rows.csv"
-echo "config,ssp_segments,solver,status,iterations,cost,wall_s,factorizations,mumps_fallbacks,inertia_corrections" >"$rows"
+echo "config,ssp_segments,solver,status,iterations,cost,wall_s,factorizations,mumps_fallbacks,inertia_corrections,pivoting_factorizations" >"$rows"
 for config in "$root"/configs/ocp/mu2004_walk*.yaml; do
   name="$(basename "$config" .yaml)"
   grep -q '{name: SSP, .*segments: 30}' "$config" || { echo "error: $name: no 30-segment SSP" >&2; exit 1; }

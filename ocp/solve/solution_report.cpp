@@ -85,8 +85,7 @@ nlohmann::ordered_json linearSolverJson(const SolverOptions& options, const Solv
       {"mumps_fallback_share",
        p.factorizations > 0 ? static_cast<double>(p.ldl.mumps_fallbacks) / p.factorizations : 0.0},
       {"fallbacks_by_reason",
-       {{"zero_pivot", p.ldl.zero_pivot_fallbacks},
-        {"inexact_solve", p.ldl.inexact_fallbacks}}},
+       {{"zero_pivot", p.ldl.zero_pivot_fallbacks}, {"inexact_solve", p.ldl.inexact_fallbacks}}},
       {"delayed_pivots", p.ldl.delayed_pivots},
       {"inexact_refactorizations", p.ldl.inexact_refactorizations},
       {"inertia_corrections", p.inertia_corrections}};

@@ -90,9 +90,6 @@ AugmentedSystem randomAugmentedSystem(unsigned seed, Convexity w = Convexity::kI
   return a;
 }
 
-
-
-
 TEST(KktPairs, FindTheConstraintBlockAndPairEveryConstraintRowAcrossIt) {
   for (unsigned seed = 1; seed <= 400; ++seed) {
     const AugmentedSystem a = randomAugmentedSystem(seed);
@@ -187,7 +184,8 @@ TEST(KktSolver, AMatrixWhoseStaticPivotsFailIsFactorizedWithPivotingNotByMumps) 
     const AugmentedSystem a = randomAugmentedSystem(seed);
     const Lower l = lowerOf(a.dense);
     if (staticPivots(l).perturbedPivots() == 0) continue;  // a zero static pivot
-    const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(a.dense).eigenvalues();
+    const Eigen::VectorXd ev =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(a.dense).eigenvalues();
     if (ev.cwiseAbs().minCoeff() < 1e-10 * ev.cwiseAbs().maxCoeff()) continue;  // singular
     ++tried;
     KktSolver solver(l.pattern);

@@ -36,10 +36,10 @@ Eigen::MatrixXd randomSymmetric(std::mt19937& g, int n, double density) {
   return a;
 }
 
-
 /// The nonzero rows below the diagonal of every column of L for the matrix permuted by `order`,
 /// by eliminating a dense boolean pattern (no cancellation).
-std::vector<std::vector<int>> denseSymbolic(const Eigen::MatrixXd& a, const std::vector<int>& order) {
+std::vector<std::vector<int>> denseSymbolic(const Eigen::MatrixXd& a,
+                                            const std::vector<int>& order) {
   const int n = static_cast<int>(order.size());
   std::vector<std::vector<char>> nz(n, std::vector<char>(n, 0));
   for (int i = 0; i < n; ++i)
@@ -62,7 +62,8 @@ TEST(AssemblyTree, SupernodesHoldTheColumnsOfLAsSymbolicEliminationFindsThem) {
     std::vector<int> given(n);
     std::iota(given.begin(), given.end(), 0);
     std::shuffle(given.begin(), given.end(), g);
-    const AssemblyTree tree = analyseAssemblyTree(lowerOf(a).pattern, EliminationOrder::ofRows(given));
+    const AssemblyTree tree =
+        analyseAssemblyTree(lowerOf(a).pattern, EliminationOrder::ofRows(given));
     const std::vector<std::vector<int>> structure = denseSymbolic(a, tree.order);
     std::vector<int> owner(n, -1);  // position -> its supernode
     for (int s = 0; s < tree.supernodes(); ++s)
@@ -123,9 +124,12 @@ TEST(AssemblyTree, FundamentalSupernodesAreExactAndSmallOnesMerge) {
 
 TEST(AssemblyTree, RefusesAnOrderThatIsNotAPermutation) {
   const Lower l = lowerOf(Eigen::Matrix3d::Identity());
-  EXPECT_THROW(analyseAssemblyTree(l.pattern, EliminationOrder::ofRows({0, 1})), std::invalid_argument);
-  EXPECT_THROW(analyseAssemblyTree(l.pattern, EliminationOrder::ofRows({0, 1, 1})), std::invalid_argument);
-  EXPECT_THROW(analyseAssemblyTree(l.pattern, EliminationOrder::ofRows({0, 1, 3})), std::invalid_argument);
+  EXPECT_THROW(analyseAssemblyTree(l.pattern, EliminationOrder::ofRows({0, 1})),
+               std::invalid_argument);
+  EXPECT_THROW(analyseAssemblyTree(l.pattern, EliminationOrder::ofRows({0, 1, 1})),
+               std::invalid_argument);
+  EXPECT_THROW(analyseAssemblyTree(l.pattern, EliminationOrder::ofRows({0, 1, 3})),
+               std::invalid_argument);
 }
 
 TEST(FrontLdl, EliminatesWithLBoundedByTheThresholdAndLeavesTheSchurComplement) {
@@ -147,7 +151,7 @@ TEST(FrontLdl, EliminatesWithLBoundedByTheThresholdAndLeavesTheSchurComplement) 
     Eigen::PermutationMatrix<Eigen::Dynamic> perm(m);
     for (int i = 0; i < m; ++i) perm.indices()[i] = piv.permutation[i];
     const Eigen::MatrixXd b = perm.transpose() * a * perm;  // b(i, j) = a(perm i, perm j)
-    if (k == 0) continue;  // all delayed: f is a, untouched
+    if (k == 0) continue;                                   // all delayed: f is a, untouched
     Eigen::MatrixXd l = f.leftCols(k).triangularView<Eigen::UnitLower>();
     Eigen::MatrixXd dinv = Eigen::MatrixXd::Zero(k, k);
     for (int i = 0; i < k; ++i) {
@@ -169,9 +173,9 @@ TEST(FrontLdl, EliminatesWithLBoundedByTheThresholdAndLeavesTheSchurComplement) 
               1e-8)
         << "trial " << trial;
     // The threshold test (u = 0.01) bounds every entry of L by 1 / u.
-    EXPECT_LE(f.leftCols(k).triangularView<Eigen::StrictlyLower>().toDenseMatrix().cwiseAbs()
-                  .maxCoeff(),
-              1.0 / 0.01 + 1e-9);
+    EXPECT_LE(
+        f.leftCols(k).triangularView<Eigen::StrictlyLower>().toDenseMatrix().cwiseAbs().maxCoeff(),
+        1.0 / 0.01 + 1e-9);
   }
   EXPECT_GT(delayed, 0) << "the family has fronts whose pivots must wait";
 }
@@ -194,8 +198,6 @@ TEST(FrontLdl, ARootFrontEliminatesEveryRowEvenWithAZeroDiagonal) {
   EXPECT_EQ(p2.perturbed, 0);
   EXPECT_EQ(p2.negative, 1);
 }
-
-
 
 /// An order that eliminates the zero-diagonal rows first, where no pivot order could use them.
 std::vector<int> zeroDiagonalsFirst(const Eigen::MatrixXd& a) {
@@ -236,7 +238,8 @@ TEST(MultifrontalLdl, AZeroPivotInAChildFrontIsDelayedToItsParentNotClamped) {
   Eigen::Matrix3d a;
   a << 0, 0, 1, 0, 2, 1, 1, 1, 3;
   const Lower l = lowerOf(a);
-  MultifrontalLdl ldl(l.pattern, EliminationOrder::ofRows({0, 1, 2}), 1);  // no merging: three fronts
+  MultifrontalLdl ldl(l.pattern, EliminationOrder::ofRows({0, 1, 2}),
+                      1);  // no merging: three fronts
   EXPECT_EQ(ldl.supernodes(), 3);
   ldl.factorize(l.values.data(), {0.01, 1e-30});
   EXPECT_EQ(ldl.delayedPivots(), 1);

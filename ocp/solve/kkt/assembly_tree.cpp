@@ -145,8 +145,7 @@ std::vector<int> fundamentalSupernodes(const std::vector<int>& parent,
 /// For each fundamental supernode the top of the group it is merged into (itself if none):
 /// bottom-up, a supernode joins its parent's group when both groups have fewer than mergeBelow
 /// columns (rows of A).
-std::vector<int> amalgamate(std::vector<int> size, const std::vector<int>& parent,
-                            int mergeBelow) {
+std::vector<int> amalgamate(std::vector<int> size, const std::vector<int>& parent, int mergeBelow) {
   const int nf = static_cast<int>(parent.size());
   std::vector<int> into(nf);
   std::iota(into.begin(), into.end(), 0);
@@ -180,8 +179,8 @@ void bucketEntries(const SymmetricPattern& pattern, AssemblyTree& tree) {
 EliminationOrder postordered(const SymmetricPattern& pattern, const EliminationOrder& order) {
   const int nodes = static_cast<int>(order.nodeStart.size()) - 1;
   EliminationOrder result{{}, {0}};
-  for (int k : postorder(eliminationTree(laterNeighbours(pattern, nodesOf(order, pattern.n),
-                                                         nodes)))) {
+  for (int k :
+       postorder(eliminationTree(laterNeighbours(pattern, nodesOf(order, pattern.n), nodes)))) {
     result.rows.insert(result.rows.end(), order.rows.begin() + order.nodeStart[k],
                        order.rows.begin() + order.nodeStart[k + 1]);
     result.nodeStart.push_back(static_cast<int>(result.rows.size()));

@@ -47,7 +47,6 @@ struct AssemblyTree {
   int supernodes() const { return static_cast<int>(parent.size()); }
 };
 
-
 /// @param order every row once, in nodes.
 /// @param mergeBelow supernodes with fewer columns merge into a parent with fewer (1: none do).
 /// @throws std::invalid_argument if the order does not list every row once in nonempty nodes.

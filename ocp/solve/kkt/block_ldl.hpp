@@ -4,13 +4,13 @@
 ///   P A P^T = L D L^T,  L unit lower block-triangular,  D block diagonal,
 /// where the 2x2 blocks and their order are the nodes of an elimination order (pair_order.hpp:
 /// a constraint row and a variable it constrains, or a variable without a diagonal and one it
-/// couples to, ordered by AMD on the graph of the pairs). A KKT matrix's constraint rows have no diagonal, so a 1x1
-/// pivot on one is zero whatever the order; the 2x2 block [w a; a 0] with a != 0 is not, and by
-/// Sylvester's law of inertia the eigenvalues of the D blocks count A's negative eigenvalues,
-/// which is what Ipopt's inertia correction asks of its linear solver. This is the static
-/// pivoting with a matching that Pardiso uses (Schenk and Gaertner 2006), without its pivoting
-/// inside supernodes: the factorization is up-looking (Davis, "Algorithm 849: LDL", 2005) on 2x2
-/// blocks. A pivot eigenvalue below `tiny` in magnitude is moved to +-tiny and counted; the
+/// couples to, ordered by AMD on the graph of the pairs). A KKT matrix's constraint rows have no
+/// diagonal, so a 1x1 pivot on one is zero whatever the order; the 2x2 block [w a; a 0] with a != 0
+/// is not, and by Sylvester's law of inertia the eigenvalues of the D blocks count A's negative
+/// eigenvalues, which is what Ipopt's inertia correction asks of its linear solver. This is the
+/// static pivoting with a matching that Pardiso uses (Schenk and Gaertner 2006), without its
+/// pivoting inside supernodes: the factorization is up-looking (Davis, "Algorithm 849: LDL", 2005)
+/// on 2x2 blocks. A pivot eigenvalue below `tiny` in magnitude is moved to +-tiny and counted; the
 /// caller refines the solution. Fast where its pivots hold (no search, no delayed rows, no
 /// dense fronts); where they do not, kkt_solver.hpp turns to MultifrontalLdl.
 #include <Eigen/Core>

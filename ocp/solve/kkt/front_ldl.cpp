@@ -20,10 +20,14 @@ struct Choice {
 
 class Front {
  public:
-  Front(Eigen::Ref<Eigen::MatrixXd> f, int fullySummed, const PivotTest& test,
-        FrontPivots& result, Eigen::MatrixXd& workspace)
-      : f_(f), m_(static_cast<int>(f.rows())), p_(fullySummed), u_(test.threshold),
-        tiny_(test.tiny), w_(workspace),
+  Front(Eigen::Ref<Eigen::MatrixXd> f, int fullySummed, const PivotTest& test, FrontPivots& result,
+        Eigen::MatrixXd& workspace)
+      : f_(f),
+        m_(static_cast<int>(f.rows())),
+        p_(fullySummed),
+        u_(test.threshold),
+        tiny_(test.tiny),
+        w_(workspace),
         result_(result) {
     w_.resize(m_ - p_, p_);
     result_.permutation.resize(m_);
@@ -140,8 +144,7 @@ class Front {
     const Eigen::Matrix2d dinv = inverse(d);
     w_.middleCols<2>(k) = f_.block(p_, k, m_ - p_, 2);
     const Eigen::MatrixXd l = f_.block(k + 2, k, below, 2) * dinv;
-    f_.block(k + 2, k + 2, below, panel).noalias() -=
-        l * f_.block(k + 2, k, panel, 2).transpose();
+    f_.block(k + 2, k + 2, below, panel).noalias() -= l * f_.block(k + 2, k, panel, 2).transpose();
     f_.block(k + 2, k, below, 2) = l;
     f_(k + 1, k) = 0.0;
     result_.inverseDiagonal.insert(result_.inverseDiagonal.end(), {dinv(0, 0), dinv(1, 1)});

@@ -6,8 +6,8 @@
 #include <utility>
 
 #include "ocp/solve/kkt/kkt_pairs.hpp"
-#include "ocp/solve/kkt/pair_order.hpp"
 #include "ocp/solve/kkt/kkt_statistics.hpp"
+#include "ocp/solve/kkt/pair_order.hpp"
 
 namespace gaitopt::ocp::kkt {
 
@@ -31,9 +31,9 @@ constexpr double kResidualRatioMax = 1e-10;
 // two; without them half the five-link default's solves left the static pivots.
 constexpr int kRefinementSteps = 2;
 // The pivoting factorization's threshold u (front_ldl.hpp): Ipopt's default pivot tolerance
-// for MUMPS (mumps_pivtol) to start with, raised a hundredfold per inexact solve up to MUMPS's own default
-// (CNTL(1) = 0.01), and kept for the later matrices, as Ipopt keeps a raised mumps_pivtol. On
-// the five-link default, u = 0.01 from the start delays 4 500 rows per factorization and takes
+// for MUMPS (mumps_pivtol) to start with, raised a hundredfold per inexact solve up to MUMPS's own
+// default (CNTL(1) = 0.01), and kept for the later matrices, as Ipopt keeps a raised mumps_pivtol.
+// On the five-link default, u = 0.01 from the start delays 4 500 rows per factorization and takes
 // 2.5 times as long; u = 1e-6 delays 9.
 constexpr double kFirstThreshold = 1e-6;
 constexpr double kLargestThreshold = 0.01;
@@ -46,7 +46,6 @@ double residualRatio(const Eigen::VectorXd& residual, const Eigen::VectorXd& x,
   return residual.lpNorm<Eigen::Infinity>() /
          (std::min(x.lpNorm<Eigen::Infinity>(), 1e6 * rhs) + rhs);
 }
-
 
 double largestMagnitude(const double* values, int count) {
   double largest = 0;
@@ -87,8 +86,8 @@ bool KktSolver::lostADiagonal(const double* values) const {
 // matrix's (one negative eigenvalue per constraint row), which from static pivots can be a
 // small pivot's rounding, turns this solver to pivoting for the rest of its matrices. With
 // Ipopt's finite-difference Jacobian on RABBIT the static count was off at every iteration
-// (delta_w 1e4, 500 iterations, where a pivoting solver needs no regularisation and converges
-// in 35).
+// (delta_w 1e4, 500 iterations, where MUMPS's pivoting needs no regularisation and converges in
+// 35).
 void KktSolver::factorize(const double* values) {
   ++threadKktStatistics().factorizations;
   if (!static_ || lostADiagonal(values)) analyse(values);

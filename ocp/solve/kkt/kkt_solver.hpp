@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "ocp/solve/kkt/block_ldl.hpp"
-#include "ocp/solve/kkt/mumps_factor.hpp"
 #include "ocp/solve/kkt/multifrontal_ldl.hpp"
+#include "ocp/solve/kkt/mumps_factor.hpp"
 #include "ocp/solve/kkt/pair_order.hpp"
 #include "ocp/solve/kkt/symmetric_pattern.hpp"
 

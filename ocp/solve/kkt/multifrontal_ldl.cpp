@@ -52,7 +52,6 @@ void MultifrontalLdl::factorize(const double* values, const PivotTest& test) {
   const PivotTest scaledTest{test.threshold, test.tiny * largest};
   negative_ = perturbed_ = delayed_ = 0;
   for (int s = 0; s < tree_.supernodes(); ++s) factorizeFront(s, scaled_.data(), scaledTest);
-
 }
 
 // The front's rows: its own columns, the rows its children delayed, then L's rows below it.

@@ -66,9 +66,9 @@ class MultifrontalLdl {
   std::vector<int> columnOf_;  // column of each stored entry
   std::vector<std::vector<int>> children_;
   std::vector<FrontFactor> factors_;
-  std::vector<int> place_;  // row -> its place in the front being assembled
+  std::vector<int> place_;              // row -> its place in the front being assembled
   std::vector<double> scale_, scaled_;  // S, and the values of S A S
-  Eigen::MatrixXd workspace_;  // factorFront's
+  Eigen::MatrixXd workspace_;           // factorFront's
   FrontPivots pivots_;
   std::vector<int> permuted_;
   mutable std::vector<double> work_;
