@@ -16,27 +16,28 @@ EliminationOrder EliminationOrder::ofRows(std::vector<int> rows) {
 namespace {
 
 void refuse() {
-  throw std::invalid_argument(
-      "analyseAssemblyTree: the order must list every row once, in nonempty nodes");
+  throw std::invalid_argument("the elimination order must list every row once, in nonempty nodes");
 }
 
-/// row -> its node, checking that the order is a permutation in nonempty nodes.
-std::vector<int> nodesOf(const EliminationOrder& order, int n) {
-  const std::vector<int>& start = order.nodeStart;
-  if (static_cast<int>(order.rows.size()) != n || start.empty() || start.front() != 0 ||
-      start.back() != n)
+}  // namespace
+
+std::vector<int> EliminationOrder::nodeOfRows(int n) const {
+  if (static_cast<int>(rows.size()) != n || nodeStart.empty() || nodeStart.front() != 0 ||
+      nodeStart.back() != n)
     refuse();
   std::vector<int> node(n, -1);
-  for (size_t k = 0; k + 1 < start.size(); ++k) {
-    if (start[k + 1] <= start[k]) refuse();
-    for (int q = start[k]; q < start[k + 1]; ++q) {
-      const int row = order.rows[q];
+  for (size_t k = 0; k + 1 < nodeStart.size(); ++k) {
+    if (nodeStart[k + 1] <= nodeStart[k]) refuse();
+    for (int q = nodeStart[k]; q < nodeStart[k + 1]; ++q) {
+      const int row = rows[q];
       if (row < 0 || row >= n || node[row] >= 0) refuse();
       node[row] = static_cast<int>(k);
     }
   }
   return node;
 }
+
+namespace {
 
 /// The graph of the nodes: for each node, the later nodes it couples to (sorted, distinct).
 std::vector<std::vector<int>> laterNeighbours(const SymmetricPattern& pattern,
@@ -180,7 +181,7 @@ EliminationOrder postordered(const SymmetricPattern& pattern, const EliminationO
   const int nodes = static_cast<int>(order.nodeStart.size()) - 1;
   EliminationOrder result{{}, {0}};
   for (int k :
-       postorder(eliminationTree(laterNeighbours(pattern, nodesOf(order, pattern.n), nodes)))) {
+       postorder(eliminationTree(laterNeighbours(pattern, order.nodeOfRows(pattern.n), nodes)))) {
     result.rows.insert(result.rows.end(), order.rows.begin() + order.nodeStart[k],
                        order.rows.begin() + order.nodeStart[k + 1]);
     result.nodeStart.push_back(static_cast<int>(result.rows.size()));
@@ -196,7 +197,7 @@ AssemblyTree analyseAssemblyTree(const SymmetricPattern& pattern, const Eliminat
   const std::vector<int>& start = order.nodeStart;
   const int nodes = static_cast<int>(start.size()) - 1;
   const std::vector<std::vector<int>> later =
-      laterNeighbours(pattern, nodesOf(order, pattern.n), nodes);
+      laterNeighbours(pattern, order.nodeOfRows(pattern.n), nodes);
   const std::vector<int> parent = eliminationTree(later);
   const std::vector<std::vector<int>> structure = nodeStructures(later, parent);
   AssemblyTree tree;

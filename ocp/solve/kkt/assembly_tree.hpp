@@ -27,6 +27,9 @@ struct EliminationOrder {
   std::vector<int> nodeStart;
   /// Every row a node of its own.
   static EliminationOrder ofRows(std::vector<int> rows);
+  /// row -> its node, for a matrix of n rows.
+  /// @throws std::invalid_argument if the order does not list every row once in nonempty nodes.
+  std::vector<int> nodeOfRows(int n) const;
 };
 
 struct AssemblyTree {

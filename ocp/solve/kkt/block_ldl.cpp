@@ -16,23 +16,14 @@ BlockLdl::BlockLdl(const SymmetricPattern& pattern, const EliminationOrder& orde
 
 // One block per node of the order, eliminated in the order's sequence.
 void BlockLdl::formBlocks(int n, const EliminationOrder& order) {
-  const int nodes = static_cast<int>(order.nodeStart.size()) - 1;
-  if (static_cast<int>(order.rows.size()) != n || nodes < 0)
-    throw std::invalid_argument("BlockLdl: the order must list every row once");
-  blockOf_.assign(n, -1);
+  blockOf_ = order.nodeOfRows(n);
   offsetOf_.assign(n, 0);
-  for (int k = 0; k < nodes; ++k) {
-    const int size = order.nodeStart[k + 1] - order.nodeStart[k];
-    if (size < 1 || size > 2) throw std::invalid_argument("BlockLdl: nodes of one or two rows");
-    for (int q = 0; q < size; ++q) {
-      const int row = order.rows[order.nodeStart[k] + q];
-      if (row < 0 || row >= n || blockOf_[row] >= 0)
-        throw std::invalid_argument("BlockLdl: the order must list every row once");
-      blockOf_[row] = k;
-      offsetOf_[row] = q;
-    }
-    first_.push_back(order.rows[order.nodeStart[k]]);
-    second_.push_back(size == 2 ? order.rows[order.nodeStart[k] + 1] : -1);
+  for (size_t k = 0; k + 1 < order.nodeStart.size(); ++k) {
+    const int first = order.nodeStart[k], size = order.nodeStart[k + 1] - first;
+    if (size > 2) throw std::invalid_argument("BlockLdl: nodes of one or two rows");
+    first_.push_back(order.rows[first]);
+    second_.push_back(size == 2 ? order.rows[first + 1] : -1);
+    if (size == 2) offsetOf_[second_.back()] = 1;
   }
 }
 
