@@ -118,7 +118,7 @@ Draw drawOf(const std::string& name, int segments, const library::IndexRow& row)
 std::vector<Draw> libraryDraws(const std::string& path, const std::string& scratch) {
   library::LibraryConfig config = library::loadLibraryConfig(path);
   const std::string name = "library " + fs::path(path).stem().string();
-  library::Grid grid(config.axes);
+  library::Grid grid(config.axes, config.config_axes);
   const int segments = config.base.phases.front().segments;
   const library::LibrarySetup setup{
       std::move(config), std::move(grid), scratch, {path, 100, {}, {}}};

@@ -106,4 +106,16 @@ void applyOverrides(YAML::Node& root, const std::vector<Override>& overrides) {
   }
 }
 
+YAML::Node valueAt(const YAML::Node& root, const std::string& key) {
+  YAML::Node node = YAML::Clone(root);
+  for (const Step& step : stepsOf({key, ""})) {
+    const bool present =
+        step.index >= 0 ? node.IsSequence() && static_cast<std::size_t>(step.index) < node.size()
+                        : node.IsMap() && node[step.key];
+    if (!present) return YAML::Node(YAML::NodeType::Null);
+    node.reset(step.index >= 0 ? node[step.index] : node[step.key]);
+  }
+  return node;
+}
+
 }  // namespace gaitopt::config

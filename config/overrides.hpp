@@ -37,4 +37,9 @@ std::vector<Override> scopedOverrides(const std::vector<std::string>& texts,
 /// key when the path runs through a value that is not a mapping, or past a list's end.
 void applyOverrides(YAML::Node& root, const std::vector<Override>& overrides);
 
+/// The value at `key` (a path as Override::key spells it) in the document `root`, or a null
+/// node when the document does not state it. @throws ConfigError naming --set for a malformed
+/// path.
+YAML::Node valueAt(const YAML::Node& root, const std::string& key);
+
 }  // namespace gaitopt::config

@@ -235,11 +235,21 @@ std::vector<YamlReader> YamlReader::list(const std::string& key) const {
   return items;
 }
 
-void YamlReader::allowOnly(const std::vector<std::string>& allowed) const {
+std::vector<std::string> YamlReader::keys() const {
+  std::vector<std::string> out;
+  if (!node_.IsMap()) return out;
   for (const auto& kv : node_) {
     if (!kv.first.IsScalar())
       throw ConfigError(file_, path_, lineOf(kv.first),
                         "expected a plain key, got " + describeNode(kv.first) + " as a key");
+    out.push_back(kv.first.Scalar());
+  }
+  return out;
+}
+
+void YamlReader::allowOnly(const std::vector<std::string>& allowed) const {
+  keys();  // every key plain
+  for (const auto& kv : node_) {
     const std::string key = kv.first.Scalar();
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
       throw ConfigError(file_, keyPath(key), lineOf(kv.first),

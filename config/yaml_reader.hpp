@@ -62,6 +62,9 @@ class YamlReader {
   bool has(const std::string& key) const;
   /// Elements of the non-empty sequence under `key`, each a mapping.
   std::vector<YamlReader> list(const std::string& key) const;
+  /// The mapping's keys in the file's order (empty when it is not a mapping).
+  /// @throws ConfigError naming a key that is not plain text.
+  std::vector<std::string> keys() const;
   /// @throws ConfigError naming the first key not in `allowed`.
   void allowOnly(const std::vector<std::string>& allowed) const;
 

@@ -19,7 +19,7 @@ struct Bracket {
   double w = 0;
 };
 
-Bracket bracket(const std::vector<double>& axis, double v, const char* name) {
+Bracket bracket(const std::vector<double>& axis, double v, const std::string& name) {
   const double tol = 1e-9 * std::max(1.0, std::abs(v));
   if (v < axis.front() - tol || v > axis.back() + tol)
     throw std::domain_error(fmt::format("{} {:g} is outside the library's range [{:g}, {:g}]", name,
@@ -83,7 +83,7 @@ struct Corner {
 };
 
 std::vector<Corner> corners(const Grid& grid, const GaitLookup& gait_at,
-                            const std::array<double, 3>& values) {
+                            const std::vector<double>& values) {
   std::vector<Corner> out;
   for (const auto& [p, w] : cellWeights(grid, values)) {
     const gaits::Trajectory* traj = gait_at(p);
@@ -102,14 +102,18 @@ std::vector<Corner> corners(const Grid& grid, const GaitLookup& gait_at,
 }  // namespace
 
 std::vector<std::pair<int, double>> cellWeights(const Grid& grid,
-                                                const std::array<double, 3>& values) {
-  std::array<Bracket, 3> b;
-  for (int a = 0; a < 3; ++a) b[a] = bracket(grid.axes()[a], values[a], kAxisNames[a]);
+                                                const std::vector<double>& values) {
+  const int n = grid.dimensions();
+  if (static_cast<int>(values.size()) != n)
+    throw std::invalid_argument(
+        fmt::format("a library query needs {} values (one per axis), got {}", n, values.size()));
+  std::vector<Bracket> b;
+  for (int a = 0; a < n; ++a) b.push_back(bracket(grid.axes()[a], values[a], grid.axisName(a)));
   std::vector<std::pair<int, double>> out;
-  for (int mask = 0; mask < 8; ++mask) {
-    std::array<double, 3> at{};
+  for (int mask = 0; mask < (1 << n); ++mask) {
+    std::vector<double> at(static_cast<std::size_t>(n));
     double w = 1;
-    for (int a = 0; a < 3; ++a) {
+    for (int a = 0; a < n; ++a) {
       const bool upper = (mask >> a) & 1;
       at[a] = grid.axes()[a][static_cast<std::size_t>(upper ? b[a].hi : b[a].lo)];
       w *= upper ? b[a].w : 1 - b[a].w;
@@ -120,7 +124,7 @@ std::vector<std::pair<int, double>> cellWeights(const Grid& grid,
 }
 
 gaits::Trajectory interpolateGait(const Grid& grid, const GaitLookup& gait_at,
-                                  const dynamics::Model& model, const std::array<double, 3>& values,
+                                  const dynamics::Model& model, const std::vector<double>& values,
                                   double rate_hz) {
   const std::vector<Corner> cs = corners(grid, gait_at, values);
   const double step_time = values[kStepLength] / values[kSpeed];

@@ -19,16 +19,17 @@ namespace gaitopt::library {
 /// The solved gait of a grid point, or nullptr when it has none.
 using GaitLookup = std::function<const gaits::Trajectory*(int point)>;
 
-/// The corners of the cell holding `values` and their weights (summing to 1; corners of
-/// weight 0 left out). @throws std::domain_error when a value lies outside its axis.
+/// The corners of the cell holding `values` (one per axis of the grid) and their weights
+/// (summing to 1; corners of weight 0 left out). @throws std::domain_error when a value lies
+/// outside its axis, std::invalid_argument for a count of values other than the axes'.
 std::vector<std::pair<int, double>> cellWeights(const Grid& grid,
-                                                const std::array<double, 3>& values);
+                                                const std::vector<double>& values);
 
 /// The interpolated step sampled at `rate_hz`.
 /// @throws std::domain_error outside the grid or when a corner has no solved gait,
 ///         std::invalid_argument when the corners' phases differ.
 gaits::Trajectory interpolateGait(const Grid& grid, const GaitLookup& gait_at,
-                                  const dynamics::Model& model, const std::array<double, 3>& values,
+                                  const dynamics::Model& model, const std::vector<double>& values,
                                   double rate_hz);
 
 }  // namespace gaitopt::library

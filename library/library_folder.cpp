@@ -54,18 +54,28 @@ LibraryFolder readLibraryFolder(const std::string& dir) {
   const auto j = io::readStrictJson(path);
   if (!j.is_object() || !j.contains("axes") || !j.contains("ocp"))
     throw config::ConfigError(path, "", 0, "not a library.json written by gaitopt library");
-  std::array<std::vector<double>, 3> axes;
-  for (int a = 0; a < 3; ++a) axes[a] = j.at("axes").at(kAxisNames[a]).get<std::vector<double>>();
+  const auto& axes = j.at("axes");
+  std::array<std::vector<double>, kWalkAxes> walk;
+  for (int a = 0; a < kWalkAxes; ++a) walk[a] = axes.at(kAxisNames[a]).get<std::vector<double>>();
+  std::vector<GridAxis> config;
+  for (const auto& key : j.value("config_axes", std::vector<std::string>{}))
+    config.push_back({key, axes.at(key).get<std::vector<double>>()});
   // The OCP path is relative to the library folder (claimLibraryFolder).
   const auto ocp_path = std::filesystem::path(dir) / j.at("ocp").get<std::string>();
-  return {Grid(axes), ocp::loadOcpConfig(ocp_path.string())};
+  return {Grid(walk, std::move(config)), ocp::loadOcpConfig(ocp_path.string())};
 }
 
 void claimLibraryFolder(const LibrarySetup& s) {
   nlohmann::ordered_json axes;
-  for (int a = 0; a < 3; ++a) axes[kAxisNames[a]] = s.grid.axes()[a];
+  for (int a = 0; a < s.grid.dimensions(); ++a) axes[s.grid.axisName(a)] = s.grid.axes()[a];
   nlohmann::ordered_json claim = {
       {"name", s.config.name}, {"ocp", ocpPathFromFolder(s)}, {"axes", axes}};
+  // The config keys swept, in the grid's order (a JSON object's keys have none). Keyed only
+  // when there are some, so a folder of a speed/step/slope library still resumes.
+  if (!s.grid.configAxes().empty()) {
+    auto& keys = claim["config_axes"] = nlohmann::ordered_json::array();
+    for (const auto& axis : s.grid.configAxes()) keys.push_back(axis.key);
+  }
   // The contents of every file the points are solved from (not their paths, which differ
   // between machines), and the rate every point's trajectory.csv is written at.
   claim["library_config_fnv1a"] = io::fileFingerprint(s.config.path);

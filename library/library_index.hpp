@@ -17,6 +17,7 @@ namespace gaitopt::library {
 struct IndexRow {
   std::string point;  ///< the point's folder name under points/
   double speed = 0, step_length = 0, slope = 0;
+  std::vector<double> config_values;  ///< one per config axis of the grid (Grid::configAxes)
   std::string status;  ///< Ipopt's status, or "error: ..." when the point could not be set up
   bool converged = false;
   double cost = 0;
@@ -30,8 +31,9 @@ struct IndexRow {
 
 class LibraryIndex {
  public:
-  /// @throws std::runtime_error when index.csv cannot be read or written.
-  explicit LibraryIndex(const std::string& dir);
+  /// The index of a library over `grid`: a column per axis. @throws std::runtime_error when
+  /// index.csv cannot be read or written.
+  LibraryIndex(const std::string& dir, const Grid& grid);
 
   /// The row of a point finished in this or an earlier run.
   std::optional<IndexRow> row(const std::string& point) const;
@@ -41,6 +43,7 @@ class LibraryIndex {
   nlohmann::ordered_json json(const Grid& grid) const;
 
  private:
+  std::size_t config_axes_;
   io::RowLog log_;
 };
 

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <optional>
 
+#include <fmt/format.h>
+
 #include "gaits/export/metrics.hpp"
 #include "gaits/polynomial/retime.hpp"
 #include "gaits/trajectory/trajectory_csv.hpp"
@@ -74,6 +76,10 @@ void record(const LibrarySetup& setup, const PointProblem& pp, const Attempts& a
   row.solve_time_s = a.time_s;
   ocp::GaitResultOptions options = setup.result;
   options.config_path = setup.config.path;
+  // The point's values of the config axes, as `--set` would have given them.
+  for (std::size_t a = 0; a < row.config_values.size(); ++a)
+    options.config_overrides.push_back(
+        fmt::format("{}={}", setup.config.config_axes[a].key, row.config_values[a]));
   if (!row.converged) {
     row.message = ocp::writeFailedResult(options, pp.model, pp.config, s, dir + ".failed");
     return;
@@ -89,9 +95,10 @@ void record(const LibrarySetup& setup, const PointProblem& pp, const Attempts& a
 IndexRow emptyRow(const GridPoint& p) {
   IndexRow row;
   row.point = p.name;
-  row.speed = p.values[0];
-  row.step_length = p.values[1];
-  row.slope = p.values[2];
+  row.speed = p.values[kSpeed];
+  row.step_length = p.values[kStepLength];
+  row.slope = p.values[kSlope];
+  row.config_values.assign(p.values.begin() + kWalkAxes, p.values.end());
   row.cost = row.cost_of_transport = row.poly_cost_of_transport = std::nan("");
   return row;
 }
@@ -114,7 +121,8 @@ IndexRow solveLibraryPoint(const LibrarySetup& setup, const PointJob& job) {
   const auto start = std::chrono::steady_clock::now();
   Attempts attempts;
   try {
-    const PointProblem pp = pointProblem(setup.config.base, setup.grid.point(job.point).values);
+    const GridPoint& point = setup.grid.point(job.point);
+    const PointProblem pp = pointProblem(baseAt(setup.config, point), point.walk());
     const PolyGuess poly = polyGuess(pp);
     if (poly.traj) row.poly_cost_of_transport = gaits::costOfTransport(*poly.traj, pp.model);
     solve(setup, job, pp, poly, attempts, row);

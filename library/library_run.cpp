@@ -12,7 +12,7 @@ RunStats solveLibrary(const LibrarySetup& setup, ScheduleState state, LibraryInd
   stats.workers = executor.slots();
   const ScheduleState before = state;
   const auto start = std::chrono::steady_clock::now();
-  const int root = setup.grid.nearest(basePoint(setup.config.base));
+  const int root = setup.grid.nearest(basePoint(setup.config));
   runSchedule(setup.grid, root, state, executor,
               [&](const PointJob&, const parallel::JobResult& r) {
                 const IndexRow row = indexRowFromJson(nlohmann::json::parse(r.payload));

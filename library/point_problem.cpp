@@ -5,8 +5,8 @@
 namespace gaitopt::library {
 namespace {
 
-ocp::OcpConfig scaledConfig(ocp::OcpConfig c, const std::array<double, 3>& values) {
-  const std::array<double, 3> base = basePoint(c);
+ocp::OcpConfig scaledConfig(ocp::OcpConfig c, const std::array<double, kWalkAxes>& values) {
+  const std::array<double, kWalkAxes> base = basePoint(c);
   const double time_scale =
       (values[kStepLength] / values[kSpeed]) / (base[kStepLength] / base[kSpeed]);
   for (auto& phase : c.phases) {
@@ -42,7 +42,7 @@ gaits::GaitParams scaledGuess(gaits::GaitParams g, const ocp::OcpConfig& point) 
 
 }  // namespace
 
-PointProblem pointProblem(const ocp::OcpConfig& base, const std::array<double, 3>& values) {
+PointProblem pointProblem(const ocp::OcpConfig& base, const std::array<double, kWalkAxes>& values) {
   ocp::OcpConfig config = scaledConfig(base, values);
   gaits::GaitParams guess = scaledGuess(gaits::loadGait(base.guess_gait_path), config);
   dynamics::Model model = ocp::problemModel(config);

@@ -9,6 +9,7 @@
 
 #include "dynamics/model.hpp"
 #include "gaits/polynomial/gait_params.hpp"
+#include "library/grid.hpp"
 #include "ocp/problem/ocp_config.hpp"
 
 namespace gaitopt::library {
@@ -22,7 +23,7 @@ struct PointProblem {
 /// `values`: speed [m/s], step length [m], slope [rad] (library_config.hpp Axis order).
 /// @throws config::ConfigError for a bad robot or guess gait file, std::domain_error for a step
 ///         the legs cannot span.
-PointProblem pointProblem(const ocp::OcpConfig& base, const std::array<double, 3>& values);
+PointProblem pointProblem(const ocp::OcpConfig& base, const std::array<double, kWalkAxes>& values);
 
 /// The phase durations of `config` (SSP, then DSP if any) [s].
 std::vector<double> phaseDurations(const ocp::OcpConfig& config);

@@ -1,12 +1,18 @@
 #include "apps/commands/interpolate_command.hpp"
 
+#include <algorithm>
 #include <array>
+#include <charconv>
+#include <cmath>
+#include <map>
 #include <memory>
 
 #include <fmt/format.h>
 
 #include "apps/command_runner.hpp"
 #include "apps/output_options.hpp"
+#include "config/config_error.hpp"
+#include "config/overrides.hpp"
 #include "gaits/export/gait_summary.hpp"
 #include "io/output/output_folder.hpp"
 #include "library/interpolation.hpp"
@@ -20,10 +26,36 @@ namespace {
 
 struct InterpolateOptions {
   std::string library_dir;
-  std::array<double, 3> values{};
+  std::array<double, library::kWalkAxes> walk{};
   bool has_slope = false;
+  std::vector<std::string> at;  ///< KEY=VALUE on the library's config axes
   OutputOptions output;
 };
+
+/// The query's value on every config axis: --at KEY=VALUE, or the axis' only value.
+/// @throws config::ConfigError naming --at for a key the library does not sweep, a value that is
+///         not a number, or a swept key left out.
+std::vector<double> configValues(const library::Grid& grid, const std::vector<std::string>& at) {
+  std::map<std::string, double> given;
+  for (const config::Override& o : config::parseOverrides(at)) {
+    const auto& axes = grid.configAxes();
+    if (std::none_of(axes.begin(), axes.end(), [&](const auto& a) { return a.key == o.key; }))
+      throw config::ConfigError("--at", o.key, 0, "the library has no config axis of that key");
+    double v = 0;
+    const auto [end, ec] = std::from_chars(o.value.data(), o.value.data() + o.value.size(), v);
+    if (ec != std::errc() || end != o.value.data() + o.value.size() || !std::isfinite(v))
+      throw config::ConfigError("--at", o.key, 0, "expected a number, got '" + o.value + "'");
+    given[o.key] = v;
+  }
+  std::vector<double> values;
+  for (const auto& axis : grid.configAxes()) {
+    if (given.count(axis.key) == 0 && axis.values.size() > 1)
+      throw config::ConfigError("--at", axis.key, 0,
+                                "the library sweeps this key: give --at " + axis.key + "=VALUE");
+    values.push_back(given.count(axis.key) ? given[axis.key] : axis.values.front());
+  }
+  return values;
+}
 
 void runInterpolate(InterpolateOptions o) {
   io::refuseInputs(o.output.out_dir, {o.library_dir}, "--out");  // before reading it
@@ -31,14 +63,18 @@ void runInterpolate(InterpolateOptions o) {
   std::vector<std::string> inputs = ocp::ocpInputs(lib.base);
   inputs.push_back(o.library_dir);
   const io::OutputFolder out(o.output.out_dir, inputs);
-  if (!o.has_slope) o.values[library::kSlope] = library::basePoint(lib.base)[library::kSlope];
-  const dynamics::Model model = library::pointProblem(lib.base, o.values).model;
+  if (!o.has_slope) o.walk[library::kSlope] = library::basePoint(lib.base)[library::kSlope];
+  std::vector<double> values(o.walk.begin(), o.walk.end());
+  const std::vector<double> keyed = configValues(lib.grid, o.at);
+  values.insert(values.end(), keyed.begin(), keyed.end());
+  // The model depends on the walk's axes only (config axes are numbers of the OCP file).
+  const dynamics::Model model = library::pointProblem(lib.base, o.walk).model;
   library::FolderGaits solved(o.library_dir, lib.grid, model);
   const gaits::Trajectory traj =
-      library::interpolateGait(lib.grid, solved.lookup(), model, o.values, o.output.rate_hz);
+      library::interpolateGait(lib.grid, solved.lookup(), model, values, o.output.rate_hz);
   auto summary = gaits::gaitSummary(traj, model, {o.library_dir, "interpolated", 0, 0, 0});
   auto& corners = summary["library_corners"] = nlohmann::ordered_json::array();
-  for (const auto& [p, w] : library::cellWeights(lib.grid, o.values))
+  for (const auto& [p, w] : library::cellWeights(lib.grid, values))
     corners.push_back({{"point", lib.grid.point(p).name}, {"weight", w}});
   out.write([&](const std::string& dir) {
     ocp::writeGaitFiles(dir, traj, model, o.output.rate_hz, summary,
@@ -60,16 +96,21 @@ void registerInterpolateCommand(CLI::App& app) {
   cmd->add_option("--library", o->library_dir, "Library folder (from gaitopt library)")
       ->required()
       ->option_text("DIR");
-  cmd->add_option("--speed", o->values[library::kSpeed], "Walking speed [m/s]")
+  cmd->add_option("--speed", o->walk[library::kSpeed], "Walking speed [m/s]")
       ->required()
       ->check(CLI::Range(1e-3, 20.0));
-  cmd->add_option("--step-length", o->values[library::kStepLength], "Step length [m]")
+  cmd->add_option("--step-length", o->walk[library::kStepLength], "Step length [m]")
       ->required()
       ->check(CLI::Range(1e-3, 10.0));
   CLI::Option* slope =
-      cmd->add_option("--slope", o->values[library::kSlope],
+      cmd->add_option("--slope", o->walk[library::kSlope],
                       "Ground slope [rad], > 0 uphill (default: the library's base slope)")
           ->check(CLI::Range(-0.35, 0.35));
+  cmd->add_option("--at", o->at,
+                  "The query's value of a config key the library sweeps, e.g. --at "
+                  "constraints.friction_margin=0.15 (repeatable; a key of one value may be left "
+                  "out)")
+      ->option_text("KEY=VALUE");
   addOutputOptions(cmd, o->output);
   cmd->footer(
       "Exit codes: 0 ok, 2 bad input, 3 outside the library's grid or a corner not "

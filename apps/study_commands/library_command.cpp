@@ -57,7 +57,7 @@ void runScheduler(const LibraryOptions& o, const library::LibrarySetup& setup,
   const io::ResumableFolder folder(setup.out_dir, inputs);
   std::filesystem::create_directories(setup.out_dir + "/points");
   library::claimLibraryFolder(setup);
-  library::LibraryIndex index(setup.out_dir);
+  library::LibraryIndex index(setup.out_dir, setup.grid);
   const library::RunStats stats = solveAll(o, setup, index, *executor);
   executor.reset();  // stops the MPI ranks
   library::writeIndexJson(setup, index, stats);
@@ -80,10 +80,11 @@ void runScheduler(const LibraryOptions& o, const library::LibrarySetup& setup,
 library::Grid makeGrid(const library::LibraryConfig& config, const std::string& path) {
   double points = 1;
   for (const auto& axis : config.axes) points *= static_cast<double>(axis.size());
+  for (const auto& axis : config.config_axes) points *= static_cast<double>(axis.values.size());
   // A point's grid entry, index row and schedule state: a few hundred bytes, rounded up.
   requireGridFits(points, 512, path + ": grid");
   try {
-    return library::Grid(config.axes);
+    return library::Grid(config.axes, config.config_axes);
   } catch (const std::invalid_argument& e) {
     throw config::ConfigError(path, "grid", 0, e.what());
   }
@@ -124,8 +125,9 @@ void runLibrary(const LibraryOptions& o) {
 
 void registerLibraryCommand(CLI::App& app) {
   auto o = std::make_shared<LibraryOptions>();
-  CLI::App* cmd =
-      app.add_subcommand("library", "Solve a gait library: a grid of speed x step length x slope");
+  CLI::App* cmd = app.add_subcommand(
+      "library",
+      "Solve a gait library: a grid of speed x step length x slope x any numeric config key");
   cmd->add_option("--config", o->config_path, "Library YAML (configs/library/*.yaml)")
       ->required()
       ->option_text("FILE");

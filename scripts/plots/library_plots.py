@@ -2,16 +2,19 @@
 """Draws the cost of transport over a `gaitopt library` folder.
 
 Usage: library_plots.py LIBRARY_DIR
-Reads LIBRARY_DIR/index.json (axes speed/step_length/slope, and one entry per finished point
-with its speed, step_length, slope, converged, cost_of_transport and poly_cost_of_transport)
-and writes LIBRARY_DIR/library.png, printing its path. One figure, up to three panels:
+Reads LIBRARY_DIR/index.json (axes speed/step_length/slope and any config keys after them, and
+one entry per finished point with its speed, step_length, slope, config_values, converged,
+cost_of_transport and poly_cost_of_transport) and writes LIBRARY_DIR/library.png, printing its
+path. One figure, up to four panels:
   (a) cost of transport against speed, one colour per step length (and slope): the optimal
       gait solid with markers, the polynomial gait at the same points dashed; failed points a
       red x at the bottom of the axes, counted in the legend;
   (b) with >= 2 speeds and >= 2 step lengths: a heat map of the optimal cost of transport over
       speed x step length on the first slope, failed cells hatched, unfinished cells blank;
   (c) with >= 2 slopes: cost of transport against slope, one line per speed at the middle step
-      length.
+      length;
+  (d) with a config key of >= 2 values: cost of transport against the first such key, one line
+      per speed at the middle step length.
 A missing folder, a missing or malformed index.json ends the script with "error: ..." on
 stderr and exit code 2 (bad input).
 """
@@ -44,12 +47,18 @@ ANNOTATE_CELLS = 36
 # Reading
 
 
+def config_keys(axes):
+    """The config keys the library sweeps, in the grid's order (after the walk's axes)."""
+    return [name for name in axes if name not in AXES]
+
+
 def read_axes(path, d):
-    """axes -> {name: sorted float array}, each non-empty and strictly increasing."""
+    """axes -> {name: sorted float array}, each non-empty and strictly increasing: the walk's
+    three, then the config keys in the file's order."""
     plot_io.require_type(path, d, "axes", dict, "an object with speed, step_length, slope")
+    plot_io.require_keys(path, d["axes"], list(AXES), "axes.")
     axes = {}
-    for name in AXES:
-        plot_io.require_keys(path, d["axes"], [name], "axes.")
+    for name in list(AXES) + [k for k in d["axes"] if k not in AXES]:
         values = d["axes"][name]
         if (not isinstance(values, list) or not values
                 or not all(plot_io.is_number(v) and np.isfinite(v) for v in values)):
@@ -85,7 +94,14 @@ def read_points(path, d, axes):
         plot_io.require_numbers(path, p, POINT_NUMBERS, prefix=where + ".")
         plot_io.require_numbers(path, p, POINT_COTS, nullable=True, prefix=where + ".")
         plot_io.require_type(path, p, "converged", bool, "true or false", where + ".")
-        at = tuple(position(path, where, a, axes[a], p[a]) for a in AXES)
+        keys = config_keys(axes)
+        values = p.get("config_values", [])
+        if (not isinstance(values, list) or len(values) != len(keys)
+                or not all(plot_io.is_number(v) for v in values)):
+            raise InputError(f"{path}: key '{where}.config_values': expected {len(keys)} "
+                             f"numbers (one per config axis), got {values!r}")
+        at = tuple(position(path, where, a, axes[a], p[a]) for a in AXES) + tuple(
+            position(path, where, a, axes[a], v) for a, v in zip(keys, values))
         if at in seen:
             raise InputError(f"{path}: key '{where}': point {p['point']} given twice")
         seen.add(at)
@@ -114,11 +130,16 @@ def read_index(library_dir):
 # Panels
 
 
-def series_label(axes, step, slope):
-    """Legend text of one (step length, slope) line; the slope only when there are several."""
+def series_label(axes, at):
+    """Legend text of one line of fixed (step length, slope, config values); the slope and the
+    config keys only when they take several values."""
+    step, slope, *keyed = at
     text = f"L = {axes['step_length'][step]:g} m"
     if len(axes["slope"]) > 1:
         text += f", slope {axes['slope'][slope]:+g}"
+    for key, k in zip(config_keys(axes), keyed):
+        if len(axes[key]) > 1:
+            text += f", {key.rsplit('.', 1)[-1]} {axes[key][k]:g}"
     return text
 
 
@@ -136,15 +157,14 @@ def draw_cot_speed(ax, axes, points):
     """(a) CoT against speed: one colour per (step length, slope), optimal solid, polynomial
     dashed; failed points as red x at the bottom."""
     speeds = axes["speed"]
-    series = sorted({(p["at"][1], p["at"][2]) for p in points})
+    series = sorted({p["at"][1:] for p in points})
     colours = plt.get_cmap("viridis" if len(series) > 10 else "tab10")
-    for n, (step, slope) in enumerate(series):
+    for n, line in enumerate(series):
         colour = colours(n / max(1, len(series) - 1) if len(series) > 10 else n % 10)
-        mine = sorted((p for p in points if (p["at"][1], p["at"][2]) == (step, slope)),
-                      key=lambda p: p["at"][0])
+        mine = sorted((p for p in points if p["at"][1:] == line), key=lambda p: p["at"][0])
         ok = [p for p in mine if p["converged"]]
         ax.plot([speeds[p["at"][0]] for p in ok], [p["cot"] for p in ok], "o-", color=colour,
-                ms=5, lw=1.5, label=series_label(axes, step, slope))
+                ms=5, lw=1.5, label=series_label(axes, line))
         poly = [p for p in mine if np.isfinite(p["poly"])]
         if poly:
             ax.plot([speeds[p["at"][0]] for p in poly], [p["poly"] for p in poly], "--",
@@ -180,8 +200,8 @@ def draw_heat_map(fig, ax, axes, points):
     cot = np.full((len(steps), len(speeds)), np.nan)
     failed = []
     for p in points:
-        i, j, s = p["at"]
-        if s != 0:
+        i, j, *rest = p["at"]
+        if any(rest):  # the first slope and config values only
             continue
         if p["converged"]:
             cot[j, i] = p["cot"]
@@ -217,27 +237,47 @@ def draw_heat_map(fig, ax, axes, points):
     ax.set_title(f"(b) optimal cost of transport{slope}", fontsize=10)
 
 
-def draw_cot_slope(ax, axes, points):
-    """(c) CoT against slope: one line per speed at the middle step length."""
-    slopes, speeds = axes["slope"], axes["speed"]
+def draw_cot_along(ax, axes, points, axis):
+    """CoT against axis number `axis` (> 1): one line per speed at the middle step length, the
+    other axes at their first values."""
+    names = list(axes)
+    xs, speeds = axes[names[axis]], axes["speed"]
     step = len(axes["step_length"]) // 2
+
+    def on_line(p):
+        return p["at"][1] == step and not any(
+            k for a, k in enumerate(p["at"]) if a > 1 and a != axis)
+
     colours = plt.get_cmap("plasma")
     for i, v in enumerate(speeds):
-        mine = sorted((p for p in points if p["at"][0] == i and p["at"][1] == step),
-                      key=lambda p: p["at"][2])
+        mine = sorted((p for p in points if p["at"][0] == i and on_line(p)),
+                      key=lambda p: p["at"][axis])
         ok = [p for p in mine if p["converged"]]
         colour = colours(0.85 * i / max(1, len(speeds) - 1))
-        ax.plot([slopes[p["at"][2]] for p in ok], [p["cot"] for p in ok], "o-", color=colour,
+        ax.plot([xs[p["at"][axis]] for p in ok], [p["cot"] for p in ok], "o-", color=colour,
                 ms=5, label=f"v = {v:g} m/s")
-    failed = [slopes[p["at"][2]] for p in points if p["at"][1] == step and not p["converged"]]
+    failed = [xs[p["at"][axis]] for p in points if on_line(p) and not p["converged"]]
     mark_failed(ax, failed, f"failed ({len(failed)})")
-    ax.set_xlabel(AXIS_LABELS["slope"] + ", > 0 uphill")
     ax.set_ylabel("cost of transport")
-    ax.set_title(f"(c) optimal cost of transport vs slope, L = {axes['step_length'][step]:g} m",
-                 fontsize=10)
     ax.set_ylim(bottom=0)
     ax.grid(True, alpha=0.4)
     ax.legend(fontsize=7, loc="best")
+
+
+def draw_cot_slope(ax, axes, points):
+    """(c) CoT against slope."""
+    draw_cot_along(ax, axes, points, AXES.index("slope"))
+    ax.set_xlabel(AXIS_LABELS["slope"] + ", > 0 uphill")
+    step = len(axes["step_length"]) // 2
+    ax.set_title(f"(c) optimal cost of transport vs slope, L = {axes['step_length'][step]:g} m",
+                 fontsize=10)
+
+
+def draw_cot_config(ax, axes, points, key):
+    """(d) CoT against a config key of the base problem."""
+    draw_cot_along(ax, axes, points, list(axes).index(key))
+    ax.set_xlabel(key)
+    ax.set_title(f"(d) optimal cost of transport vs {key}", fontsize=10)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -246,8 +286,9 @@ def draw_cot_slope(ax, axes, points):
 
 def headline(d, axes, points):
     solved = sum(p["converged"] for p in points)
-    total = int(np.prod([len(axes[a]) for a in AXES]))
-    dims = " x ".join(f"{len(axes[a])} {a.replace('_', ' ')}" for a in AXES)
+    total = int(np.prod([len(values) for values in axes.values()]))
+    dims = " x ".join(f"{len(values)} {a.replace('_', ' ') if a in AXES else a}"
+                      for a, values in axes.items())
     return (f"Gait library: {solved} of {total} points solved, {len(points) - solved} failed "
             f"({dims})")
 
@@ -255,7 +296,8 @@ def headline(d, axes, points):
 def library_figure(d, axes, points):
     heat = len(axes["speed"]) >= 2 and len(axes["step_length"]) >= 2
     by_slope = len(axes["slope"]) >= 2
-    panels = 1 + heat + by_slope
+    by_key = next((k for k in config_keys(axes) if len(axes[k]) >= 2), None)
+    panels = 1 + heat + by_slope + (by_key is not None)
     fig, axs = plt.subplots(1, panels, figsize=(6.4 * panels, 4.8), squeeze=False)
     axs = list(axs.flat)
     draw_cot_speed(axs.pop(0), axes, points)
@@ -263,6 +305,8 @@ def library_figure(d, axes, points):
         draw_heat_map(fig, axs.pop(0), axes, points)
     if by_slope:
         draw_cot_slope(axs.pop(0), axes, points)
+    if by_key is not None:
+        draw_cot_config(axs.pop(0), axes, points, by_key)
     fig.suptitle(headline(d, axes, points), fontsize=11)
     fig.tight_layout()
     return fig

@@ -97,6 +97,22 @@ edit "$TMP/c1" "d['points'] = []"
 plot "$TMP/c1"
 [[ $RC -eq 0 && -s "$TMP/c1/library.png" ]] || fail "(c) empty index exited $RC: $(cat "$TMP/err")"
 
+# (c') a config key as a fourth axis: two points of one speed that differ only in it are two
+# points (not one given twice), and the CoT-vs-key panel makes two panels.
+make_index "$TMP/k" "[0.5, 0.7]" "[0.35]" "[0.0]"
+edit "$TMP/k" "
+d['axes']['constraints.friction_margin'] = [0.1, 0.3]
+d['points'] = [dict(p, config_values=[m], point=p['point'] + f'_m{m}',
+                    cost_of_transport=p['cost_of_transport'] + m)
+               for p in d['points'] for m in (0.1, 0.3)]"
+plot "$TMP/k"
+[[ $RC -eq 0 && -s "$TMP/k/library.png" ]] || fail "(c') exited $RC: $(cat "$TMP/err")"
+"$PY" -c "import sys, matplotlib.image as im; assert im.imread(sys.argv[1]).shape[1] == 1408" \
+  "$TMP/k/library.png" || fail "(c') expected two panels"
+rm "$TMP/k/library.png"
+edit "$TMP/k" "d['points'][0]['config_values'] = []"
+expect_error "(c') no config value" "$TMP/k" "$TMP/k/index.json: key 'points\[0\].config_values': expected 1 numbers"
+
 # (d) bad input.
 expect_error "(d) no folder" "$TMP/nothing" "$TMP/nothing: not a folder"
 mkdir -p "$TMP/d0"

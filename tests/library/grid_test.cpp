@@ -100,5 +100,24 @@ TEST(Grid, DistinctPointsHaveDistinctNamesOrTheGridIsRejected) {
   EXPECT_NO_THROW(Grid({{{0.600, 0.601}, {0.35}, {0.0}}}));
 }
 
+// A config key is one more axis, after the walk's, varying fastest: its value is in the name
+// (the folder), its steps are neighbours, and it counts in distance and nearest.
+TEST(Grid, AConfigKeyIsAFourthAxis) {
+  const Grid g({{{0.4, 0.6}, {0.35}, {0.0}}}, {{"constraints.friction_margin", {0.1, 0.2, 0.3}}});
+  ASSERT_EQ(g.size(), 6);
+  ASSERT_EQ(g.dimensions(), 4);
+  EXPECT_EQ(g.axisName(3), "constraints.friction_margin");
+  EXPECT_EQ(g.point(0).name, "v0.400_L0.350_s+0.000_constraints.friction_margin=0.1");
+  EXPECT_EQ(g.point(4).name, "v0.600_L0.350_s+0.000_constraints.friction_margin=0.2");
+  EXPECT_DOUBLE_EQ(g.point(4).values[3], 0.2);
+  EXPECT_EQ(g.point(4).walk(), (std::array<double, 3>{0.6, 0.35, 0.0}));
+  // (speed, margin) positions: 3 * speed + margin.
+  EXPECT_EQ(sorted(g.neighbours(4)), (std::vector<int>{1, 3, 5}));
+  EXPECT_DOUBLE_EQ(g.distance(0, 5), std::sqrt(1.0 + 4.0));
+  EXPECT_EQ(g.nearest({0.58, 0.35, 0.0, 0.27}), 5);
+  EXPECT_THROW(g.nearest({0.58, 0.35, 0.0}), std::invalid_argument);  // a value per axis
+  EXPECT_THROW(Grid({{{0.4}, {0.35}, {0.0}}}, {{"cost.weight", {}}}), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace gaitopt::library

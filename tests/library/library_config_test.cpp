@@ -130,6 +130,55 @@ TEST(LibraryConfig, ErrorsNameTheKey) {
   }
 }
 
+// Any numeric key of the base problem is an axis, dotted or nested as --set spells it; it starts
+// from the base file's value; each value is checked as the OCP file would check it.
+TEST(LibraryConfig, AnyNumericConfigKeyIsAnAxis) {
+  const LibraryConfig c = loadLibraryConfig(
+      writeLibrary("keys",
+                   "  speed: 0.5\n  constraints.friction_margin: [0.3, 0.1]\n"
+                   "  constraints:\n    zmp_margin: {from: 0.0, to: 0.02, count: 3}\n"));
+  ASSERT_EQ(c.config_axes.size(), 2u);
+  EXPECT_EQ(c.config_axes[0].key, "constraints.friction_margin");
+  EXPECT_EQ(c.config_axes[0].values, (std::vector<double>{0.1, 0.3}));
+  EXPECT_EQ(c.config_axes[1].key, "constraints.zmp_margin");
+  EXPECT_EQ(c.config_axes[1].values.size(), 3u);
+  // The shipped problem states friction_margin 0.15; zmp_margin is left to its default.
+  ASSERT_EQ(c.config_base.size(), 2u);
+  EXPECT_DOUBLE_EQ(c.config_base[0], c.base.friction_margin);
+  EXPECT_DOUBLE_EQ(c.config_base[1], 0.01);  // the axis' middle
+  // A point's base problem carries its values.
+  const Grid grid(c.axes, c.config_axes);
+  const ocp::OcpConfig at = baseAt(c, grid.point(grid.size() - 1));
+  EXPECT_DOUBLE_EQ(at.friction_margin, 0.3);
+  EXPECT_DOUBLE_EQ(at.zmp_margin, 0.02);
+  EXPECT_EQ(basePoint(c).size(), 5u);
+}
+
+TEST(LibraryConfig, AConfigAxisIsCheckedAsTheOcpFileIs) {
+  struct Case {
+    const char* name;
+    std::string grid;
+    std::vector<std::string> expected;
+  };
+  const std::vector<Case> cases = {
+      {"out_of_range",
+       "  constraints.friction_margin: [0.1, 1.5]\n",
+       {"key 'grid.constraints.friction_margin'", "constraints.friction_margin", "1.5"}},
+      {"not_a_key",
+       "  constraints.frictoin_margin: [0.1]\n",
+       {"grid.constraints.frictoin_margin", "unknown key"}},
+      {"a_word_key", "  scheme: [1, 2]\n", {"key 'grid.scheme'"}},
+      {"set_by_the_walk", "  phases[0].duration: [0.5, 0.6]\n", {"grid.speed"}},
+      {"not_numbers", "  constraints.friction_margin: [0.1, high]\n", {"high"}},
+  };
+  for (const Case& c : cases) {
+    const std::string message = errorOf(writeLibrary(c.name, c.grid));
+    for (const std::string& part : c.expected)
+      EXPECT_TRUE(contains(message, part))
+          << c.name << ": '" << message << "' lacks '" << part << "'";
+  }
+}
+
 TEST(LibraryConfig, MissingOcpFileIsAConfigError) {
   const std::string path = ::testing::TempDir() + "gaitopt_library_noocp.yaml";
   std::ofstream(path) << "name: x\nocp: no_such_problem.yaml\ngrid: {speed: 0.5}\n";

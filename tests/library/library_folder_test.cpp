@@ -17,14 +17,16 @@ namespace {
 class LibraryFolderTest : public io::test::IoTest {
  protected:
   /// A setup of the shipped RABBIT base problem over a 2 x 3 x 1 grid, in this test's folder.
-  LibrarySetup setup(const std::array<std::vector<double>, 3>& axes) const {
+  LibrarySetup setup(const std::array<std::vector<double>, 3>& axes,
+                     std::vector<GridAxis> config_axes = {}) const {
     LibraryConfig config;
     config.name = "round_trip";
     config.path = path("round_trip.yaml");  // its bytes key the folder (library.json)
     put(config.path, "name: round_trip\n");
     config.ocp_path = std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/rabbit_kelly2017.yaml";
     config.base = ocp::loadOcpConfig(config.ocp_path);
-    return {config, Grid(axes), path("lib"), {}};
+    config.config_axes = config_axes;
+    return {config, Grid(axes, std::move(config_axes)), path("lib"), {}};
   }
 };
 
@@ -36,7 +38,8 @@ TEST_F(LibraryFolderTest, LibraryJsonRoundTripsTheGridAndTheBaseProblem) {
   std::filesystem::create_directories(s.out_dir);
   claimLibraryFolder(s);
   const LibraryFolder back = readLibraryFolder(s.out_dir);
-  EXPECT_EQ(back.grid.axes(), kAxes);
+  EXPECT_EQ(back.grid.axes(), (std::vector<std::vector<double>>(kAxes.begin(), kAxes.end())));
+  EXPECT_TRUE(back.grid.configAxes().empty());
   EXPECT_EQ(back.base.name, s.config.base.name);
   EXPECT_DOUBLE_EQ(back.base.step_length, s.config.base.step_length);
   // The OCP file is recorded relative to the folder, so both can move together.
@@ -46,6 +49,26 @@ TEST_F(LibraryFolderTest, LibraryJsonRoundTripsTheGridAndTheBaseProblem) {
   EXPECT_TRUE(
       std::filesystem::equivalent(std::filesystem::path(s.out_dir) / ocp, s.config.ocp_path))
       << ocp;
+}
+
+// Two config axes listed in the order that is not alphabetical: the grid's order (which names
+// and numbers the points) must come back, not the JSON object's.
+TEST_F(LibraryFolderTest, LibraryJsonRoundTripsConfigAxesInTheirOrder) {
+  const std::vector<GridAxis> keys = {{"constraints.zmp_margin", {0.01, 0.02}},
+                                      {"constraints.friction_margin", {0.1, 0.2, 0.3}}};
+  const LibrarySetup s = setup(kAxes, keys);
+  std::filesystem::create_directories(s.out_dir);
+  claimLibraryFolder(s);
+  const LibraryFolder back = readLibraryFolder(s.out_dir);
+  ASSERT_EQ(back.grid.configAxes().size(), 2u);
+  EXPECT_EQ(back.grid.configAxes()[0].key, "constraints.zmp_margin");
+  EXPECT_EQ(back.grid.configAxes()[1].values, keys[1].values);
+  ASSERT_EQ(back.grid.size(), s.grid.size());
+  for (int p = 0; p < s.grid.size(); ++p) EXPECT_EQ(back.grid.point(p).name, s.grid.point(p).name);
+  // Another sweep of one key is another library.
+  auto other = keys;
+  other[1].values.pop_back();
+  EXPECT_THROW(claimLibraryFolder(setup(kAxes, other)), config::ConfigError);
 }
 
 TEST_F(LibraryFolderTest, AnotherGridInTheSameFolderIsRefused) {
@@ -67,6 +90,7 @@ IndexRow awkwardRow() {
           0.5,
           0.3,
           -0.01,
+          {0.25},
           "Maximum_Iterations_Exceeded",
           false,
           12.25,
@@ -83,6 +107,7 @@ void expectSameRow(const IndexRow& a, const IndexRow& b) {
   EXPECT_EQ(a.speed, b.speed);
   EXPECT_EQ(a.step_length, b.step_length);
   EXPECT_EQ(a.slope, b.slope);
+  EXPECT_EQ(a.config_values, b.config_values);
   EXPECT_EQ(a.status, b.status);
   EXPECT_EQ(a.converged, b.converged);
   EXPECT_EQ(a.cost, b.cost);
@@ -95,8 +120,9 @@ void expectSameRow(const IndexRow& a, const IndexRow& b) {
 
 TEST_F(LibraryFolderTest, AnIndexRowRoundTripsThroughIndexCsv) {
   const IndexRow row = awkwardRow();
-  LibraryIndex(dir_.string()).append(row);
-  const auto back = LibraryIndex(dir_.string()).row(row.point);
+  const Grid grid(kAxes, {{"constraints.friction_margin", {0.25}}});
+  LibraryIndex(dir_.string(), grid).append(row);
+  const auto back = LibraryIndex(dir_.string(), grid).row(row.point);
   ASSERT_TRUE(back.has_value());
   expectSameRow(*back, row);
   // One line per row: the line break of the message is written as a space.
