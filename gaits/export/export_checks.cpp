@@ -10,11 +10,26 @@
 namespace gaitopt::gaits {
 namespace {
 
+using KnotVector = Eigen::VectorXd Knot::*;
+
 /// d f / dt at the middle of three samples (t0 < t1 < t2), exact for quadratics.
-Eigen::VectorXd threePointDerivative(const Knot& a, const Knot& b, const Knot& c) {
+Eigen::VectorXd threePointDerivative(const Knot& a, const Knot& b, const Knot& c, KnotVector f) {
   const double h1 = b.t - a.t, h2 = c.t - b.t;
-  return (h1 * h1 * c.theta - h2 * h2 * a.theta + (h2 * h2 - h1 * h1) * b.theta) /
+  return (h1 * h1 * (c.*f) - h2 * h2 * (a.*f) + (h2 * h2 - h1 * h1) * (b.*f)) /
          (h1 * h2 * (h1 + h2));
+}
+
+/// max_k |three-point derivative of f - df_k|_inf / max_k |df_k|_inf within phases.
+double maxDerivativeMismatch(const Trajectory& traj, KnotVector f, KnotVector df) {
+  const auto& knots = traj.knots();
+  double worst = 0, scale = 0;
+  for (const Knot& k : knots) scale = std::max(scale, (k.*df).cwiseAbs().maxCoeff());
+  for (size_t i = 1; i + 1 < knots.size(); ++i) {
+    const Knot &a = knots[i - 1], &b = knots[i], &c = knots[i + 1];
+    if (a.phase != b.phase || c.phase != b.phase || !(a.t < b.t && b.t < c.t)) continue;
+    worst = std::max(worst, (threePointDerivative(a, b, c, f) - b.*df).cwiseAbs().maxCoeff());
+  }
+  return scale > 0 ? worst / scale : worst;
 }
 
 }  // namespace
@@ -48,15 +63,11 @@ double maxDspTipDrift(const Trajectory& traj, const dynamics::Model& model) {
 }
 
 double maxRateMismatch(const Trajectory& traj) {
-  const auto& knots = traj.knots();
-  double worst = 0, scale = 0;
-  for (const Knot& k : knots) scale = std::max(scale, k.dtheta.cwiseAbs().maxCoeff());
-  for (size_t i = 1; i + 1 < knots.size(); ++i) {
-    const Knot &a = knots[i - 1], &b = knots[i], &c = knots[i + 1];
-    if (a.phase != b.phase || c.phase != b.phase || !(a.t < b.t && b.t < c.t)) continue;
-    worst = std::max(worst, (threePointDerivative(a, b, c) - b.dtheta).cwiseAbs().maxCoeff());
-  }
-  return scale > 0 ? worst / scale : worst;
+  return maxDerivativeMismatch(traj, &Knot::theta, &Knot::dtheta);
+}
+
+double maxAccelerationMismatch(const Trajectory& traj) {
+  return maxDerivativeMismatch(traj, &Knot::dtheta, &Knot::ddtheta);
 }
 
 }  // namespace gaitopt::gaits

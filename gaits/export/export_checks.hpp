@@ -29,4 +29,9 @@ double maxDspTipDrift(const Trajectory& traj, const dynamics::Model& model);
 /// the angles; a few per cent when rates and angles come from different interpolants.
 double maxRateMismatch(const Trajectory& traj);
 
+/// The same for the accelerations against three-point differences of the rates, relative to
+/// the largest acceleration [-]: the export's accelerations are what a computed-torque
+/// controller feeds forward, so they must be the rates' derivatives too.
+double maxAccelerationMismatch(const Trajectory& traj);
+
 }  // namespace gaitopt::gaits

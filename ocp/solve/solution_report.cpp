@@ -220,6 +220,7 @@ nlohmann::ordered_json betweenNodeMetrics(const gaits::Trajectory& dense,
           {"min_swing_clearance", gaits::minSwingClearance(dense, model)},
           {"max_dsp_tip_drift", gaits::maxDspTipDrift(dense, model)},
           {"max_rate_mismatch", gaits::maxRateMismatch(dense)},
+          {"max_acceleration_mismatch", gaits::maxAccelerationMismatch(dense)},
           {"rate_hz", rate_hz}};
 }
 

@@ -42,7 +42,7 @@ size_t writeGaitFiles(const std::string& dir, const gaits::Trajectory& traj,
 /// max_tip_acceleration [m/s^2] (gaits/export/consistency.hpp),
 /// min_normal_force [N], max_friction_ratio (or why it is unbounded: a normal force <= 0),
 /// min_zmp_margin, min_foot_cop_margin, min_swing_clearance, max_dsp_tip_drift [m],
-/// max_rate_mismatch (gaits/export/export_checks.hpp), rate_hz.
+/// max_rate_mismatch, max_acceleration_mismatch (gaits/export/export_checks.hpp), rate_hz.
 nlohmann::ordered_json betweenNodeMetrics(const gaits::Trajectory& dense,
                                           const dynamics::Model& model, double rate_hz);
 

@@ -19,8 +19,8 @@ using gaits::Phase;
 using gaits::Trajectory;
 
 /// theta_i = a_i sin(omega t) sampled at `rate` Hz over one SSP of 0.6 s, with the rates
-/// scaled by `rate_scale` (1: the exact derivative).
-Trajectory sineStep(double rate, double rate_scale) {
+/// scaled by `rate_scale` and the accelerations by `acceleration_scale` (1: exact derivatives).
+Trajectory sineStep(double rate, double rate_scale, double acceleration_scale = 1.0) {
   const int n = 5;
   const double omega = 7.0;
   std::vector<Knot> knots;
@@ -30,7 +30,7 @@ Trajectory sineStep(double rate, double rate_scale) {
     const Eigen::VectorXd amp = Eigen::VectorXd::LinSpaced(n, 0.1, 0.5);
     k.theta = amp * std::sin(omega * k.t);
     k.dtheta = rate_scale * omega * amp * std::cos(omega * k.t);
-    k.ddtheta = -omega * omega * k.theta;
+    k.ddtheta = -acceleration_scale * omega * omega * k.theta;
     k.tau = Eigen::VectorXd::Zero(n);
     k.force_stance = Eigen::Vector2d(0, 200);
     knots.push_back(k);
@@ -44,6 +44,13 @@ TEST(ExportChecks, RatesThatAreTheDerivativeOfTheAnglesShowNoMismatch) {
   // Rates 1 % too large are seen as 1 % off, whatever the sample rate.
   EXPECT_NEAR(gaits::maxRateMismatch(sineStep(1000, 1.01)), 0.01 / 1.01, 1e-4);
   EXPECT_NEAR(gaits::maxRateMismatch(sineStep(200, 1.01)), 0.01 / 1.01, 1e-3);
+}
+
+TEST(ExportChecks, AccelerationsThatAreTheDerivativeOfTheRatesShowNoMismatch) {
+  EXPECT_LT(gaits::maxAccelerationMismatch(sineStep(1000, 1.0)), 2e-5);
+  // Accelerations 2 % too large are seen as 2 % off; the rates' own check does not see them.
+  EXPECT_NEAR(gaits::maxAccelerationMismatch(sineStep(1000, 1.0, 1.02)), 0.02 / 1.02, 1e-4);
+  EXPECT_LT(gaits::maxRateMismatch(sineStep(1000, 1.0, 1.02)), 2e-5);
 }
 
 TEST(ExportChecks, FootCentreOfPressureIsMinusTheAnkleTorqueOverTheNormalForce) {
