@@ -8,7 +8,8 @@
 # five meshes (scripts/solver_robustness.sh), how often every shipped problem converges over
 # meshes and starts (bench/convergence_bench.cpp), the ensemble's solve time with 1, 3 and 5
 # models (bench/ensemble_bench.cpp), the double support in theta
-# against reduced coordinates (bench/dsp_coordinates.cpp), then the
+# against reduced coordinates (bench/dsp_coordinates.cpp), the passive walker's bifurcation
+# diagram (bench/passive_bifurcation.cpp, scripts/plots/passive_bifurcation_chart.py), then the
 # speed-against-accuracy table and chart
 # of the ground models (bench/ground_bench.cpp, scripts/plots/ground_chart.py).
 # Usage: scripts/bench.sh BUILD_DIR   (BUILD_DIR configured with GAITOPT_BUILD_BENCH=ON, built)
@@ -103,6 +104,15 @@ echo
 dsp="$1/bench/dsp_coordinates"
 [[ -x "$dsp" ]] || { echo "error: $dsp not built" >&2; exit 1; }
 "$dsp" 3
+
+echo
+passive="$1/bench/passive_bifurcation"
+[[ -x "$passive" ]] || { echo "error: $passive not built" >&2; exit 1; }
+mkdir -p "$1/passive_bifurcation"
+"$passive" "$1/passive_bifurcation"
+cat "$1/passive_bifurcation/bifurcation.md"
+/usr/bin/python3 scripts/plots/passive_bifurcation_chart.py "$1/passive_bifurcation"
+echo "(also in $1/passive_bifurcation/; results/passive_bifurcation/ is a copy)"
 
 echo
 ground="$1/bench/ground_bench"
