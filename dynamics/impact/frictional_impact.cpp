@@ -113,22 +113,13 @@ TipImpact tip(const Eigen::VectorXd& impulses, const Eigen::VectorXd& v_plus, Ei
   return {impulses.segment<2>(row), v_plus.segment<2>(row), mode != Mode::kStick};
 }
 
-FrictionalImpact solve(const ImpactProblem& p, bool with_b) {
+/// The outcome of one mode: rates, base velocity, each tip's impulse and velocity after.
+FrictionalImpact outcome(const ImpactProblem& p, bool with_b, const std::vector<Mode>& modes,
+                         const Eigen::VectorXd& impulses) {
   const int tips = with_b ? 2 : 1;
-  const std::vector<std::vector<Mode>> candidates = modesToTry(tips);
-  std::vector<Mode> modes = candidates.front();  // all sticking: the fallback
-  Eigen::VectorXd impulses = modeImpulses(p, modes);
-  FrictionalImpact out;
-  for (const auto& m : candidates) {
-    const Eigen::VectorXd trial = modeImpulses(p, m);
-    if (!consistent(p, m, trial)) continue;
-    modes = m;
-    impulses = trial;
-    out.consistent = true;
-    break;
-  }
   const Eigen::VectorXd qdot_plus = p.qdot_minus + p.d_inv_ct * impulses;  // HGB (82)
   const Eigen::VectorXd v_plus = p.v_minus + p.delassus * impulses;
+  FrictionalImpact out;
   out.dtheta_plus = qdot_plus.tail(p.n);
   out.base_velocity = qdot_plus.head<2>();
   out.leading = tip(impulses, v_plus, 2 * (tips - 1), modes.back());
@@ -137,6 +128,26 @@ FrictionalImpact solve(const ImpactProblem& p, bool with_b) {
   out.unilateral_ok =
       with_b ? out.trailing.impulse(1) > 0 : out.base_velocity(1) > 0;  // (2.31a) / (2.37a)
   return out;
+}
+
+/// Every mode whose solution satisfies its own conditions, fewest sliding tips first.
+std::vector<FrictionalImpact> consistentOutcomes(const ImpactProblem& p, bool with_b) {
+  std::vector<FrictionalImpact> found;
+  for (const auto& m : modesToTry(with_b ? 2 : 1)) {
+    const Eigen::VectorXd trial = modeImpulses(p, m);
+    if (!consistent(p, m, trial)) continue;
+    found.push_back(outcome(p, with_b, m, trial));
+    found.back().consistent = true;
+  }
+  return found;
+}
+
+FrictionalImpact solve(const ImpactProblem& p, bool with_b) {
+  const std::vector<FrictionalImpact> found = consistentOutcomes(p, with_b);
+  if (!found.empty()) return found.front();
+  // None: the all-sticking solution, marked inconsistent.
+  const std::vector<Mode> sticking = modesToTry(with_b ? 2 : 1).front();
+  return outcome(p, with_b, sticking, modeImpulses(p, sticking));
 }
 
 }  // namespace
@@ -149,6 +160,24 @@ FrictionalImpact frictionalSingleImpact(const Model& model, const VecD& theta,
 FrictionalImpact frictionalDoubleImpact(const Model& model, const VecD& theta,
                                         const VecD& dtheta_minus, double restitution) {
   return solve(setUp(model, theta, dtheta_minus, true, restitution), true);
+}
+
+ImpactType ComplementarityImpact::type() const {
+  if (!staying.empty() && !leaving.empty()) return ImpactType::kEither;
+  if (!staying.empty()) return ImpactType::kDouble;
+  return leaving.empty() ? ImpactType::kNeither : ImpactType::kSingle;
+}
+
+ComplementarityImpact complementarityImpact(const Model& model, const VecD& theta,
+                                            const VecD& dtheta_minus, double restitution) {
+  ComplementarityImpact out;
+  out.staying = consistentOutcomes(setUp(model, theta, dtheta_minus, true, restitution), true);
+  // B left free: a solution only where B does not move into the ground (v_Bn+ >= 0).
+  for (FrictionalImpact& f :
+       consistentOutcomes(setUp(model, theta, dtheta_minus, false, restitution), false))
+    if (f.base_velocity(1) >= -1e-12 * (1 + f.base_velocity.norm()))
+      out.leaving.push_back(std::move(f));
+  return out;
 }
 
 }  // namespace gaitopt::dynamics

@@ -21,6 +21,9 @@
 /// With e_n = 0 the kinetic energy cannot grow: dT = P . v+ - 1/2 P^T A P with A = C D^-1 C^T,
 /// and P_n v_n+ = 0, P_t v_t+ <= 0 (Coulomb's maximum dissipation). With e_n > 0, Newton's law
 /// with friction can create energy (the Kane-Levinson example); keep e_n small.
+#include <vector>
+
+#include "dynamics/impact/impact.hpp"
 #include "dynamics/model.hpp"
 
 namespace gaitopt::dynamics {
@@ -53,5 +56,24 @@ FrictionalImpact frictionalSingleImpact(const Model& model, const VecD& theta,
 /// @param restitution e_n in [0, 1] (B, at rest before, keeps v_n+ = 0 either way).
 FrictionalImpact frictionalDoubleImpact(const Model& model, const VecD& theta,
                                         const VecD& dtheta_minus, double restitution);
+
+/// The impact as one complementarity problem over both tips (HGB sec. 4: at B, Signorini's law
+/// at impulse level, v_Bn+ >= 0, P_Bn >= 0, P_Bn v_Bn+ = 0, with Newton's law at E, and Coulomb's
+/// law at every tip in contact), instead of Mu's two models each checked after the fact. Its
+/// solutions are the consistent modes of B (leaves the ground, sticks, slides either way) times E
+/// (sticks, slides either way): Mu's single impact is the family where B leaves, his double the
+/// family where it stays. Where Mu's sticking conditions call both consistent ("either") or
+/// neither, this law says which families hold once the tips may slide.
+struct ComplementarityImpact {
+  std::vector<FrictionalImpact> staying;  ///< solutions with B on the ground (double)
+  std::vector<FrictionalImpact> leaving;  ///< solutions with B lifting off (single)
+  /// kDouble or kSingle when every solution is of that family, kEither when both families have
+  /// one (the law does not decide: the problem has several solutions), kNeither when none.
+  ImpactType type() const;
+};
+
+/// All solutions at the pre-impact state. @param restitution e_n in [0, 1].
+ComplementarityImpact complementarityImpact(const Model& model, const VecD& theta,
+                                            const VecD& dtheta_minus, double restitution);
 
 }  // namespace gaitopt::dynamics

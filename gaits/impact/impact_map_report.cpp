@@ -44,13 +44,13 @@ std::string csvRow(const ImpactPoint& p) {
   const auto& s = p.single_model;
   return fmt::format(
       "{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{},{:.10g},{:.10g},{:.10g},{:.10g},"
-      "{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:d},{:d}\n",
+      "{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:d},{:d},{}\n",
       p.params.step_length, 2 * p.params.step_length, p.params.knee_bias / kDeg,
       p.params.approach_angle / kDeg, p.params.approach_speed, p.hip_height,
       dynamics::toString(p.type), d.impulse_trailing(0), d.impulse_trailing(1),
       d.impulse_leading(0), d.impulse_leading(1), s.trailing_velocity(0), s.trailing_velocity(1),
       s.impulse_leading(0), s.impulse_leading(1), p.mu_l, p.mu_r, p.mu_s, d.friction_ok,
-      s.friction_ok);
+      s.friction_ok, dynamics::toString(p.lcp_type));
 }
 
 nlohmann::ordered_json gridJson(const ImpactGrid& grid) {
@@ -75,6 +75,20 @@ nlohmann::ordered_json countsJson(const ImpactMap& map, bool no_slip_only) {
       if (t == ImpactType::kNeither) return false;
       return t == ImpactType::kDouble ? d : t == ImpactType::kSingle ? s : d && s;
     });
+  }
+  return out;
+}
+
+/// For each of Mu's types, what the complementarity law allows at the same points.
+nlohmann::ordered_json lcpCountsJson(const ImpactMap& map) {
+  nlohmann::ordered_json out;
+  for (ImpactType mu : kTypes) {
+    nlohmann::ordered_json row;
+    for (ImpactType lcp : kTypes)
+      row[dynamics::toString(lcp)] =
+          std::count_if(map.points.begin(), map.points.end(),
+                        [&](const ImpactPoint& p) { return p.type == mu && p.lcp_type == lcp; });
+    out[dynamics::toString(mu)] = row;
   }
   return out;
 }
@@ -132,7 +146,7 @@ void writeImpactMapCsv(const ImpactMap& map, const std::string& path) {
   std::string text =
       "step_length,mu_SL,knee_bias_deg,approach_angle_deg,approach_speed,hip_height,type,"
       "P_lx,P_ly,P_rx,P_ry,xdot_b,ydot_b,P_Sx,P_Sy,mu_L,mu_R,mu_S,double_no_slip,"
-      "single_no_slip\n";
+      "single_no_slip,lcp_type\n";
   for (const auto& p : map.points) text += csvRow(p);
   io::writeFileAtomically(path, text);
 }
@@ -147,6 +161,7 @@ nlohmann::ordered_json impactMapSummary(const ImpactMap& map, const dynamics::Mo
           {"points", map.points.size()},
           {"counts", countsJson(map, false)},
           {"no_slip_counts", countsJson(map, true)},
+          {"lcp_counts_by_mu_type", lcpCountsJson(map)},
           {"boundaries", boundaries},
           {"reference", referenceJson(map)}};
 }

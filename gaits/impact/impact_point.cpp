@@ -8,6 +8,7 @@ ImpactPoint evaluateImpactPoint(const dynamics::Model& model, const ImpactPostur
   point.params = params;
   point.hip_height = impactHipHeight(model, params);
   point.type = dynamics::classifyImpact(model, state.theta, state.dtheta);
+  point.lcp_type = dynamics::complementarityImpact(model, state.theta, state.dtheta, 0.0).type();
   point.double_model = dynamics::doubleImpact(model, state.theta, state.dtheta);
   point.single_model = dynamics::singleImpact(model, state.theta, state.dtheta);
   point.mu_l = impulseRatio(point.double_model.impulse_trailing);

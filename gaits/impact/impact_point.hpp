@@ -2,6 +2,7 @@
 /// @file impact_point.hpp
 /// One point of Mu's (2004) contact-event study (sec. 5.2-5.3): the pre-impact state of
 /// impact_posture.hpp, both impact models, the refined classification and the impulse ratios.
+#include "dynamics/impact/frictional_impact.hpp"
 #include "dynamics/impact/impact.hpp"
 #include "gaits/impact/impact_posture.hpp"
 
@@ -9,8 +10,11 @@ namespace gaitopt::gaits {
 
 struct ImpactPoint {
   ImpactPostureParams params;
-  double hip_height = 0;                ///< y_h^- of the posture [m]
-  dynamics::ImpactType type{};          ///< refined criterion of sec. 5.3 (classifyImpact)
+  double hip_height = 0;        ///< y_h^- of the posture [m]
+  dynamics::ImpactType type{};  ///< refined criterion of sec. 5.3 (classifyImpact)
+  /// What the complementarity law over both tips with Coulomb friction and a plastic impact
+  /// allows (dynamics::complementarityImpact): the families among its solutions.
+  dynamics::ImpactType lcp_type{};
   dynamics::ImpactResult double_model;  ///< (2.30): P_l at B, P_r at E
   dynamics::ImpactResult single_model;  ///< (2.36): Xdot_b^+, P_S at E
   double mu_l = 0;  ///< P_lx / P_ly, trailing tip in a double impact (sec. 5.3.3)

@@ -4,9 +4,11 @@
 Usage: impact_map.py RESULT_DIR
 Reads RESULT_DIR/impact_map.csv and writes RESULT_DIR/impact_map.png, printing its path:
   top row     impact type over (S_L, alpha) at four knee biases sigma (Figs. 5.2, 5.3a-b)
-  bottom row  impact type over (sigma, alpha) at S_L 1.0 m and 1.8 m (Fig. 5.3c-d); |mu_S| contours
+  middle row  impact type over (sigma, alpha) at S_L 1.0 m and 1.8 m (Fig. 5.3c-d); |mu_S| contours
               in the single region (Fig. 5.7) and |mu_L|, |mu_R| contours in the double region
               (Fig. 5.4), both over (S_L, alpha) at one sigma
+  bottom row  (when the CSV has lcp_type) what the complementarity law over both tips with
+              Coulomb friction picks, at the top row's knee biases
 S_L is Mu's step length, twice the tip distance `step_length` of the CSV
 (docs/design.md#conventions).
 A panel whose axes have fewer than two grid values is left out. A missing file or column, or a
@@ -38,10 +40,13 @@ SL_SLICES = [1.0, 1.8]  # m, Fig. 5.3(c), (d)
 
 def read_map(path):
     """Returns (axes: the three sorted axis value arrays, cube: name -> array over the grid)."""
-    cols = plot_io.read_csv(path, "map", NUMBERS + ["type"], strings={"type"}, finite=False)
-    plot_io.check_values(path, "type", cols["type"], TYPES)
+    header, data = plot_io.read_rows(path, "map")
+    words = ["type"] + (["lcp_type"] if "lcp_type" in header else [])
+    cols = plot_io.columns(path, header, data, NUMBERS + words, strings=set(words), finite=False)
+    for word in words:
+        plot_io.check_values(path, word, cols[word], TYPES)
+        cols[word] = np.array([TYPES.index(t) for t in cols[word]], dtype=float)
     rows = len(cols["type"])
-    cols["type"] = np.array([TYPES.index(t) for t in cols["type"]], dtype=float)
     axes = [np.unique(cols[name]) for name in NUMBERS[:3]]
     shape = tuple(len(a) for a in axes)
     if np.prod(shape) != rows:
@@ -74,7 +79,9 @@ def ratio_panel(ax, x, y, fields, title):
 def draw(axes, cube):
     sl, sigma, alpha = axes
     have = [len(a) >= 2 for a in axes]
-    fig, grid = plt.subplots(2, 4, figsize=(17, 8.5), squeeze=False)
+    lcp = "lcp_type" in cube
+    fig, grid = plt.subplots(3 if lcp else 2, 4, figsize=(17, 12.75 if lcp else 8.5),
+                             squeeze=False)
     for ax in grid.flat:
         ax.set_visible(False)
     if have[0] and have[2]:
@@ -83,6 +90,11 @@ def draw(axes, cube):
             ax.set_visible(True)
             type_panel(ax, sl, alpha, cube["type"][:, k, :], "S_L [m]",
                        f"sigma = {sigma[k]:g} deg")
+        for ax, target in zip(grid[2] if lcp else [], SIGMA_SLICES):
+            k = nearest(sigma, target)
+            ax.set_visible(True)
+            type_panel(ax, sl, alpha, cube["lcp_type"][:, k, :], "S_L [m]",
+                       f"complementarity law, sigma = {sigma[k]:g} deg")
         k = nearest(sigma, 20)
         single = cube["type"][:, k, :] == 0
         grid[1, 2].set_visible(True)
@@ -102,11 +114,13 @@ def draw(axes, cube):
             type_panel(ax, sigma, alpha, cube["type"][i, :, :], "sigma [deg]",
                        f"S_L = {sl[i]:g} m")
     counts = [int((cube["type"] == t).sum()) for t in range(4)]
+    if lcp:
+        counts = [f"{n}, law {int((cube['lcp_type'] == t).sum())}" for t, n in enumerate(counts)]
     fig.legend(handles=[Patch(color=c, label=f"{lab}: {n}") for c, lab, n in
                         zip(TYPE_COLOURS, TYPE_LABELS, counts)],
                loc="lower center", ncol=4, frameon=False)
     fig.suptitle("Impact type after Mu (2004) ch. 5: torso upright, hip centred (x_h = S_L/4)")
-    fig.tight_layout(rect=(0, 0.05, 1, 0.96))
+    fig.tight_layout(rect=(0, 0.04 if lcp else 0.05, 1, 0.96))
     return fig
 
 

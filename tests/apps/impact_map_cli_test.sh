@@ -22,6 +22,10 @@ assert d["grid"]["knee_bias_deg"] == {"first": 5.0, "last": 45.0, "count": 3}
 for axis in ("step_length", "knee_bias_deg", "approach_angle_deg"):
     for b in d["boundaries"][axis]:
         assert b["lines"] > 0 and b["min"] <= b["median"] <= b["max"], b
+# The complementarity law's types, per type of Mu's criterion, account for every point of it.
+lcp = d["lcp_counts_by_mu_type"]
+for mu, n in d["counts"].items():
+    assert sum(lcp[mu].values()) == n, (mu, lcp[mu], n)
 PY
 
 # (b) two jobs give a byte-identical CSV; the progress bar goes to stderr without --quiet.
@@ -53,5 +57,8 @@ run impact-map --robot "$ROOT/configs/robots/compass_gait.yaml" --out "$TMP/cg" 
 if "$PY" -c "import matplotlib" 2>/dev/null; then
   run impact-map --robot "$ROBOT" --out "$TMP/plot" "${GRID[@]}" --quiet
   [[ $RC -eq 0 && -s "$TMP/plot/impact_map.png" ]] || fail "(d) no picture: $(cat "$TMP/err")"
+  # Three rows: Mu's types, his slices and ratios, the complementarity law's types.
+  "$PY" -c "import sys, matplotlib.image as im; h, w = im.imread(sys.argv[1]).shape[:2]; assert h > 0.7 * w, (w, h)" \
+    "$TMP/plot/impact_map.png" || fail "(d) expected the complementarity row"
 fi
 echo "impact-map CLI: all checks passed"

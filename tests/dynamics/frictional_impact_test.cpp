@@ -176,5 +176,44 @@ TEST_F(MuSlidingImpact, AtTheNeededFrictionItSticks) {
   EXPECT_NEAR(f.leading.impulse(1), 11.7933, 2e-3);
 }
 
+// The impact as one complementarity problem over both tips (complementarityImpact): every
+// solution it returns keeps Signorini's law at B (an impulse only while B stays, B never moving
+// into the ground), the plastic law at E, Coulomb's law at every tip in contact, and does not
+// create energy.
+TEST_P(FrictionalImpactTest, EveryComplementaritySolutionKeepsSignoriniCoulombAndEnergy) {
+  int solutions = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const auto [theta, dtheta] = preImpact(model_, rng_);
+    const auto c = dynamics::complementarityImpact(model_, theta, dtheta, 0.0);
+    const double before = kinetic(model_, theta, dtheta, Vec2d::Zero());
+    for (const FrictionalImpact& f : c.staying) {
+      expectCoulomb(f.trailing, model_.friction());
+      expectCoulomb(f.leading, model_.friction());
+      EXPECT_LE(kinetic(model_, theta, f.dtheta_plus, f.base_velocity), before * (1 + 1e-12));
+    }
+    for (const FrictionalImpact& f : c.leaving) {
+      EXPECT_GE(f.base_velocity(1), -1e-12 * (1 + f.base_velocity.norm()));  // B lifts or rests
+      EXPECT_EQ(f.trailing.impulse, Vec2d::Zero());
+      expectCoulomb(f.leading, model_.friction());
+      EXPECT_LE(kinetic(model_, theta, f.dtheta_plus, f.base_velocity), before * (1 + 1e-12));
+    }
+    solutions += static_cast<int>(c.staying.size() + c.leaving.size());
+  }
+  EXPECT_GT(solutions, 30);
+}
+
+// Without friction the plastic impact over both tips is a complementarity problem in the normal
+// impulses whose matrix (the Delassus matrix) is positive definite, so it has exactly one
+// solution: the law decides single or double everywhere, never 'either' or 'neither'. Each tip
+// slides, whichever way its tangential velocity leaves it.
+TEST_P(FrictionalImpactTest, WithoutFrictionTheLawHasExactlyOneSolution) {
+  const Model slippery = dynamics::withFriction(model_, 1e-6);
+  for (int trial = 0; trial < 100; ++trial) {
+    const auto [theta, dtheta] = preImpact(slippery, rng_);
+    const auto c = dynamics::complementarityImpact(slippery, theta, dtheta, 0.0);
+    EXPECT_EQ(c.staying.size() + c.leaving.size(), 1u) << "trial " << trial;
+  }
+}
+
 }  // namespace
 }  // namespace gaitopt::test

@@ -66,6 +66,34 @@ TEST_F(ImpactMapTest, SweepDoesNotDependOnTheNumberOfJobs) {
   EXPECT_DOUBLE_EQ(serial.at({1, 2, 3}).params.approach_angle, 90 * kDeg);
 }
 
+// Mu's open question (ch. 5, sec. 6.2): where his sticking models are both consistent
+// ('either') or neither is, which impact happens? The complementarity law over both tips with
+// Coulomb friction (mu 0.6, plastic) has one family of solutions at every point of his map:
+// it decides them all, and where his choice keeps its own friction condition (and, for a double
+// impact, pushes at both tips) it agrees.
+TEST_F(ImpactMapTest, TheComplementarityLawDecidesMusEitherAndNeitherRegions) {
+  const auto map =
+      gaits::sweepImpactMap(model_, grid({0.025, 1.0, 40}, {1, 60, 12}, {5, 175, 18}), 2);
+  int either = 0, neither = 0;
+  for (const auto& p : map.points) {
+    ASSERT_TRUE(p.lcp_type == ImpactType::kSingle || p.lcp_type == ImpactType::kDouble)
+        << dynamics::toString(p.lcp_type) << " at step " << p.params.step_length;
+    either += p.type == ImpactType::kEither;
+    neither += p.type == ImpactType::kNeither;
+    // Mu's double criterion (2.31a) asks B's impulse to push, not E's: at grazing approaches
+    // his double impact pulls E into the ground (P_ry < 0), which the law refuses.
+    const bool e_pushes = p.double_model.impulse_leading(1) > 0;
+    if (p.type == ImpactType::kDouble && p.double_model.friction_ok && e_pushes) {
+      EXPECT_EQ(p.lcp_type, ImpactType::kDouble);
+    }
+    if (p.type == ImpactType::kSingle && p.single_model.friction_ok) {
+      EXPECT_EQ(p.lcp_type, ImpactType::kSingle);
+    }
+  }
+  EXPECT_GT(either, 50);
+  EXPECT_GT(neither, 10);
+}
+
 TEST_F(ImpactMapTest, RejectsBadGrids) {
   const GridAxis step{0.1, 0.9, 5}, sigma{1, 60, 5}, alpha{5, 175, 5};
   for (const ImpactGrid& bad :
