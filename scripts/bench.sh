@@ -8,7 +8,8 @@
 # five meshes (scripts/solver_robustness.sh), how often every shipped problem converges over
 # meshes and starts (bench/convergence_bench.cpp), the ensemble's solve time with 1, 3 and 5
 # models (bench/ensemble_bench.cpp), the double support in theta
-# against reduced coordinates (bench/dsp_coordinates.cpp), the passive walker's bifurcation
+# against reduced coordinates (bench/dsp_coordinates.cpp), the chapter-5 impact figures against
+# the link inertias (bench/impact_sensitivity.cpp), the passive walker's bifurcation
 # diagram (bench/passive_bifurcation.cpp, scripts/plots/passive_bifurcation_chart.py), then the
 # speed-against-accuracy table and chart
 # of the ground models (bench/ground_bench.cpp, scripts/plots/ground_chart.py).
@@ -104,6 +105,14 @@ echo
 dsp="$1/bench/dsp_coordinates"
 [[ -x "$dsp" ]] || { echo "error: $dsp not built" >&2; exit 1; }
 "$dsp" 3
+
+echo
+sensitivity="$1/bench/impact_sensitivity"
+[[ -x "$sensitivity" ]] || { echo "error: $sensitivity not built" >&2; exit 1; }
+mkdir -p "$1/impact_sensitivity"
+"$sensitivity" "$1/impact_sensitivity"
+cat "$1/impact_sensitivity/sensitivity.md"
+echo "(also in $1/impact_sensitivity/; results/impact_sensitivity/ is a copy)"
 
 echo
 passive="$1/bench/passive_bifurcation"
