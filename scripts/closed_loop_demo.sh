@@ -22,6 +22,10 @@ for gait in poly opt opt_robust; do
       "${rules[@]}" --rate 50 --out "results/walk_${gait}_mu2004_${controller}" --quiet
   done
 done
+for controller in computed_torque sliding_mode mu_sliding_mode; do
+  "$bin" simulate --reference results/poly_zmp_mu2004 --controller "$controller" --steps 20 \
+    "${rules[@]}" --rate 50 --out "results/walk_poly_zmp_mu2004_${controller}" --quiet
+done
 # The README's front-page animation is this walk's walk.gif: a re-walk clears the folder.
 "$bin" report results/walk_opt_mu2004_computed_torque
 echo "== gaitopt simulate: the optimal gait on the impedance and LCP grounds"
@@ -55,6 +59,10 @@ for gait in poly opt opt_robust; do
     "$bin" stability --reference "results/${gait}_mu2004" --controller "$controller" --steps 20 \
       "${rules[@]}" "${sweeps[@]}" --quiet --out "results/stability_${gait}_mu2004_${controller}"
   done
+done
+for controller in computed_torque mu_sliding_mode; do
+  "$bin" stability --reference results/poly_zmp_mu2004 --controller "$controller" --steps 20 \
+    "${rules[@]}" "${sweeps[@]}" --quiet --out "results/stability_poly_zmp_mu2004_${controller}"
 done
 "$bin" stability --reference results/opt_mu2004 --ground impedance --steps 20 "${rules[@]}" --quiet \
   --sweep stiffness=1e4:1e9:11 --sweep push=-3:12:16 --out results/stability_opt_mu2004_impedance

@@ -37,6 +37,9 @@ fi
 echo "== gaitopt poly: Mu (2004) ch. 3 polynomial gait of the five-link robot"
 "$bin" poly --robot "configs/robots/mu2004_five_link.yaml" \
   --gait "configs/gaits/mu2004.yaml" --out "results/poly_mu2004"
+echo "== gaitopt poly: the same gait with its hip searched for the shipped foot"
+"$bin" poly --robot "configs/robots/mu2004_five_link.yaml" \
+  --gait "configs/gaits/mu2004_zmp.yaml" --out "results/poly_zmp_mu2004"
 
 echo "== gaitopt optimize: the default five-link problem from the polynomial gait"
 "$bin" optimize --config configs/ocp/mu2004_walk.yaml --out results/opt_mu2004 --quiet

@@ -26,7 +26,8 @@ GaitParams loadGait(const std::string& path, const std::vector<config::Override>
   p.apex_height = apex.number("height", inRange(1e-4, 2.0, "[m]"));
 
   const auto hip = root.map("hip");
-  hip.allowOnly({"height", "bob", "start", "dsp_start", "velocity_start", "velocity_touchdown"});
+  hip.allowOnly({"height", "bob", "start", "dsp_start", "velocity_start", "velocity_touchdown",
+                 "objective", "free"});
   p.hip_height = hip.number("height", positive("[m]"));
   p.hip_bob = hip.numberOr("bob", 0.0, inRange(0.0, 0.5 * p.hip_height, "[m]"));
   p.hip_start = hip.number("start", inRange(-p.step_length, p.step_length, "[m]"));
@@ -36,6 +37,11 @@ GaitParams loadGait(const std::string& path, const std::vector<config::Override>
       hip.numberOrWord("velocity_start", "optimize", inRange(-5.0, 5.0, "[m/s]"));
   p.hip_velocity_touchdown =
       hip.numberOrWord("velocity_touchdown", "optimize", inRange(-5.0, 5.0, "[m/s]"));
+  if (hip.has("objective") && hip.choice("objective", {"dsp_zmp", "zmp"}) == "zmp")
+    p.hip_objective = HipObjective::kZmp;
+  if (hip.has("free"))
+    for (const std::string& key : hip.choices("free", {"start", "height"}))
+      (key == "start" ? p.hip_start_free : p.hip_height_free) = true;
 
   p.torso_angle = root.numberOr("torso_angle", 0.0,
                                 config::angleInRange(-std::numbers::pi / 2, std::numbers::pi / 2));

@@ -11,6 +11,12 @@
 
 namespace gaitopt::gaits {
 
+/// What the hip-plan search maximises (hip_plan_search.hpp).
+enum class HipObjective {
+  kDspZmp,  ///< Mu's DSP stability margin: the DSP ZMP between the tips (sec. 3.2.3)
+  kZmp,     ///< the least of that and the SSP ZMP's distance inside the stance foot
+};
+
 struct GaitParams {
   std::string name;
   double step_length = 0;   ///< tip distance at touchdown [m] (Mu S_L / 2)
@@ -24,7 +30,10 @@ struct GaitParams {
   std::optional<double> hip_dsp_start;           ///< S_D0 (3.20); empty: optimised
   std::optional<double> hip_velocity_start;      ///< V_h1 (3.18); empty: optimised
   std::optional<double> hip_velocity_touchdown;  ///< V_h2 (3.22); empty: optimised
-  double torso_angle = 0;                        ///< constant theta of the torso [rad]
+  HipObjective hip_objective = HipObjective::kDspZmp;
+  bool hip_start_free = false;   ///< search S_S0 too, from hip_start
+  bool hip_height_free = false;  ///< search H_h too, from hip_height
+  double torso_angle = 0;        ///< constant theta of the torso [rad]
   /// Ground inclination gamma [rad], > 0 uphill (dynamics/model.hpp: the gait is designed in the
   /// ground frame; only gravity rotates). `gaitopt poly` applies it with dynamics::withSlope.
   double slope = 0;

@@ -45,6 +45,13 @@ int unreachableSamples(const PolynomialGait& gait) {
   return bad;
 }
 
+/// The objective's margin: the DSP's, or the least of it and the SSP's.
+double objectiveMargin(const PolynomialGait& gait, const dynamics::Model& model) {
+  const double dsp = dspStabilityMargin(gait, model, kMarginSamples);
+  if (gait.params().hip_objective == HipObjective::kDspZmp) return dsp;
+  return std::min(dsp, sspZmpMargin(gait, model, kReachSamples));
+}
+
 double negativeMargin(unsigned, const double* x, double*, void* data) {
   auto* ctx = static_cast<SearchContext*>(data);
   ++ctx->evaluations;
@@ -52,13 +59,19 @@ double negativeMargin(unsigned, const double* x, double*, void* data) {
   const int bad = unreachableSamples(gait);
   if (bad > 0) return kPenalty + bad;  // worse than any reachable gait
   try {
-    return -dspStabilityMargin(gait, *ctx->model, kMarginSamples);
+    return -objectiveMargin(gait, *ctx->model);
   } catch (const std::domain_error&) {
     return kPenalty + kReachSamples;
   }
 }
 
-std::vector<FreeParam> freeParams(const GaitParams& p, HipPlan& base) {
+/// The stance leg's length (shank and thigh) [m].
+double legLength(const dynamics::Model& model) {
+  return model.link(0).length + model.link(1).length;
+}
+
+std::vector<FreeParam> freeParams(const dynamics::Model& model, const GaitParams& p,
+                                  HipPlan& base) {
   const double v = p.speed();
   std::vector<FreeParam> free;
   auto choose = [&](const std::optional<double>& given, double HipPlan::*field, double lo,
@@ -70,15 +83,35 @@ std::vector<FreeParam> freeParams(const GaitParams& p, HipPlan& base) {
   };
   choose(p.hip_velocity_start, &HipPlan::velocity_start, 0.1 * v, 3 * v, v);
   choose(p.hip_velocity_touchdown, &HipPlan::velocity_touchdown, 0.1 * v, 3 * v, v);
-  // S_D0 lies between the hip's start and end positions of the step (3.16, 3.17).
-  const double first = -p.hip_start;
-  const double last = p.step_length - p.hip_start;
+  // S_S0 from a tenth of a step ahead of the stance tip to a step behind it; H_h from 80 to 98 %
+  // of the leg (stretched at 100 %).
+  const double length = p.step_length;
+  choose(p.hip_start_free ? std::nullopt : std::optional<double>(p.hip_start), &HipPlan::start,
+         -0.1 * length, length, p.hip_start);
+  choose(p.hip_height_free ? std::nullopt : std::optional<double>(p.hip_height), &HipPlan::height,
+         0.8 * legLength(model), 0.98 * legLength(model), p.hip_height);
+  // S_D0 lies between the hip's start and end positions of the step (3.16, 3.17), over every
+  // start the search may take.
+  const double first = -(p.hip_start_free ? length : p.hip_start);
+  const double last = p.step_length - (p.hip_start_free ? -0.1 * length : p.hip_start);
   choose(p.hip_dsp_start, &HipPlan::dsp_start, first + 0.05 * (last - first),
          last - 0.01 * (last - first), first + p.ssp_duration / p.duration() * (last - first));
   return free;
 }
 
 }  // namespace
+
+double sspZmpMargin(const PolynomialGait& gait, const dynamics::Model& model, int samples) {
+  const auto& p = gait.params();
+  const dynamics::Foot& foot = model.foot();
+  double margin = std::numeric_limits<double>::infinity();
+  for (int k = 0; k <= samples; ++k) {
+    const GaitKinematics g = gait.kinematics(p.ssp_duration * k / samples, Phase::kSsp);
+    const double zmp = dynamics::zeroMomentPoint(model, g.theta, g.dtheta, g.ddtheta);
+    margin = std::min({margin, zmp + foot.heel, foot.toe - zmp});
+  }
+  return margin;
+}
 
 double dspStabilityMargin(const PolynomialGait& gait, const dynamics::Model& model, int samples) {
   const auto& p = gait.params();
@@ -92,14 +125,25 @@ double dspStabilityMargin(const PolynomialGait& gait, const dynamics::Model& mod
   return margin;
 }
 
+namespace {
+
+/// The search's outcome at `plan`, with both margins.
+HipPlanSearch result(const dynamics::Model& model, const GaitParams& params, const HipPlan& plan,
+                     int evaluations, const std::string& algorithm) {
+  const PolynomialGait gait(model, params, plan);
+  const double dsp = dspStabilityMargin(gait, model, kMarginSamples);
+  const double ssp = sspZmpMargin(gait, model, kReachSamples);
+  const double margin = params.hip_objective == HipObjective::kZmp ? std::min(dsp, ssp) : dsp;
+  return {plan, margin, dsp, ssp, evaluations, algorithm};
+}
+
+}  // namespace
+
 HipPlanSearch searchHipPlan(const dynamics::Model& model, const GaitParams& params) {
   requireKneedLegs(model);  // before NLopt, which would swallow the message
   SearchContext ctx{&model, &params, {}, {}};
-  ctx.free = freeParams(params, ctx.base);
-  if (ctx.free.empty()) {
-    const PolynomialGait gait(model, params, ctx.base);
-    return {ctx.base, dspStabilityMargin(gait, model, kMarginSamples), 1, "fixed"};
-  }
+  ctx.free = freeParams(model, params, ctx.base);
+  if (ctx.free.empty()) return result(model, params, ctx.base, 1, "fixed");
   const auto dim = static_cast<unsigned>(ctx.free.size());
   nlopt::opt opt(nlopt::LN_SBPLX, dim);
   std::vector<double> lo, hi, x;
@@ -125,10 +169,13 @@ HipPlanSearch searchHipPlan(const dynamics::Model& model, const GaitParams& para
     dspStabilityMargin(gait, model, kMarginSamples);
   }
   if (value > 0)
-    throw std::domain_error(fmt::format(
-        "gait '{}': no hip plan keeps the DSP ZMP between the tips (best margin {:.4f} m)",
-        params.name, -value));
-  return {best, -value, ctx.evaluations, "LN_SBPLX"};
+    throw std::domain_error(
+        fmt::format("gait '{}': no hip plan keeps the {} (best margin {:.4f} m)", params.name,
+                    params.hip_objective == HipObjective::kZmp
+                        ? "SSP ZMP inside the stance foot and the DSP ZMP between the tips"
+                        : "DSP ZMP between the tips",
+                    -value));
+  return result(model, params, best, ctx.evaluations, "LN_SBPLX");
 }
 
 nlohmann::ordered_json designJson(const GaitParams& p, const HipPlanSearch& search) {
@@ -143,10 +190,14 @@ nlohmann::ordered_json designJson(const GaitParams& p, const HipPlanSearch& sear
             {"hip_start", p.hip_start},
             {"torso_angle", p.torso_angle}}},
           {"hip_plan",
-           {{"velocity_start", search.plan.velocity_start},
+           {{"objective", p.hip_objective == HipObjective::kZmp ? "zmp" : "dsp_zmp"},
+            {"velocity_start", search.plan.velocity_start},
             {"velocity_touchdown", search.plan.velocity_touchdown},
             {"dsp_start", search.plan.dsp_start},
-            {"dsp_stability_margin", search.margin},
+            {"start", search.plan.start},
+            {"height", search.plan.height},
+            {"dsp_stability_margin", search.dsp_margin},
+            {"ssp_zmp_margin", search.ssp_margin},
             {"algorithm", search.algorithm},
             {"evaluations", search.evaluations}}}};
 }

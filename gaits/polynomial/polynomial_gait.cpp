@@ -47,9 +47,9 @@ PolynomialGait::PolynomialGait(const dynamics::Model& model, GaitParams params, 
   t_m_ = solveApexTime(x_a_, params_.apex_x, t_s);
   y_a_ = quinticThrough({0.0, t_m_, t_s}, {0.0, params_.apex_height, 0.0}, {0.0, 0.0, 0.0});
   // Hip: (3.16), (3.18), (3.20), (3.22) in the SSP and (3.21), (3.23), (3.17), (3.19) in the DSP.
-  x_hs_ = hermiteCubic(-params_.hip_start, plan_.velocity_start, plan_.dsp_start,
+  x_hs_ = hermiteCubic(-plan_.start, plan_.velocity_start, plan_.dsp_start,
                        plan_.velocity_touchdown, t_s);
-  x_hd_ = hermiteCubic(plan_.dsp_start, plan_.velocity_touchdown, l - params_.hip_start,
+  x_hd_ = hermiteCubic(plan_.dsp_start, plan_.velocity_touchdown, l - plan_.start,
                        plan_.velocity_start, params_.dsp_duration);
 }
 
@@ -67,7 +67,7 @@ PointMotion PolynomialGait::hip(double t, Phase phase) const {
   // y_h = H_h (3.14-3.15), optionally with a periodic bob that keeps the step repeatable.
   const double w = 2 * std::numbers::pi / params_.duration();
   const double b = params_.hip_bob;
-  return {{x(local), params_.hip_height + b * std::cos(w * t)},
+  return {{x(local), plan_.height + b * std::cos(w * t)},
           {x(local, 1), -b * w * std::sin(w * t)},
           {x(local, 2), -b * w * w * std::cos(w * t)}};
 }

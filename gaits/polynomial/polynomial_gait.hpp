@@ -17,6 +17,8 @@ struct HipPlan {
   double velocity_start = 0;      ///< V_h1 [m/s]
   double velocity_touchdown = 0;  ///< V_h2 [m/s]
   double dsp_start = 0;           ///< S_D0 [m]
+  double start = 0;               ///< S_S0: the hip behind the stance tip at SSP start [m]
+  double height = 0;              ///< H_h [m]
 };
 
 /// @throws std::invalid_argument unless every leg has two links (thigh and shank).

@@ -62,7 +62,8 @@ TEST_F(MuGaitPhysics, HipPlanSearchFindsAWideDspMargin) {
   EXPECT_LE(search_->margin, 0.5 * params_->step_length + 1e-9);
   // The optimum is at least as good as the hand-picked plan of
   // docs/derivations.md#the-polynomial-gait.
-  const gaits::PolynomialGait by_hand(*model_, *params_, {0.3, 0.3, 0.17});
+  const gaits::PolynomialGait by_hand(*model_, *params_,
+                                      {0.3, 0.3, 0.17, params_->hip_start, params_->hip_height});
   EXPECT_GE(search_->margin, gaits::dspStabilityMargin(by_hand, *model_, 41) - 1e-9);
 }
 
@@ -127,6 +128,25 @@ TEST_F(MuGaitPhysics, ExportedTorquesReproduceTheSspByForwardSimulation) {
       });
   RecordProperty("resimulation_max_angle_error_rad", fmt::format("{:.3e}", max_err));
   EXPECT_LT(max_err, 1e-3);
+}
+
+// A fair baseline for the shipped foot (configs/gaits/mu2004_zmp.yaml): the hip-plan search
+// that also keeps the single support's ZMP inside the foot, with the hip's start and height free,
+// finds a gait whose ZMP stays inside [-heel, toe] at every 1 kHz sample of the whole step, where
+// Mu's plan puts it more than 10 cm behind the heel.
+TEST_F(MuGaitPhysics, TheHipSearchForTheFootKeepsTheSingleSupportZmpInsideIt) {
+  const gaits::GaitParams fair =
+      gaits::loadGait(std::string(GAITOPT_SOURCE_DIR) + "/configs/gaits/mu2004_zmp.yaml");
+  ASSERT_EQ(fair.hip_objective, gaits::HipObjective::kZmp);
+  const gaits::HipPlanSearch search = gaits::searchHipPlan(*model_, fair);
+  EXPECT_GT(search.ssp_margin, 0.02);
+  EXPECT_GT(search.dsp_margin, 0.02);
+  EXPECT_NE(search.plan.height, fair.hip_height);  // searched, not the file's 0.59 m
+  const gaits::Trajectory dense =
+      gaits::buildTrajectory(gaits::PolynomialGait(*model_, fair, search.plan), *model_, 1000);
+  EXPECT_GT(gaits::minZmpMargin(dense, *model_), 0.02);
+  EXPECT_LT(gaits::minZmpMargin(*traj_, *model_), -0.1);  // Mu's plan
+  EXPECT_LT(search_->ssp_margin, -0.1);
 }
 
 }  // namespace

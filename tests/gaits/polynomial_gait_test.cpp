@@ -24,7 +24,7 @@ class PolynomialGaitTest : public ::testing::Test {
  protected:
   dynamics::Model model_ = loadNamed("mu2004_five_link");
   gaits::GaitParams params_ = muParams();
-  gaits::HipPlan plan_{0.4, 0.55, 0.16};
+  gaits::HipPlan plan_{0.4, 0.55, 0.16, params_.hip_start, params_.hip_height};
   gaits::PolynomialGait gait_{model_, params_, plan_};
 };
 
@@ -128,9 +128,9 @@ TEST_F(PolynomialGaitTest, TouchdownTipVelocityIsZeroSoTheImpactVanishes) {
 }
 
 TEST_F(PolynomialGaitTest, UnreachableHipHeightIsAClearError) {
-  auto params = params_;
-  params.hip_height = 0.70;  // legs are 0.634 m long
-  const gaits::PolynomialGait gait(model_, params, plan_);
+  auto plan = plan_;
+  plan.height = 0.70;  // legs are 0.634 m long
+  const gaits::PolynomialGait gait(model_, params_, plan);
   try {
     gait.kinematics(0.1, Phase::kSsp);
     FAIL() << "expected a reachability error";
@@ -146,12 +146,12 @@ TEST_F(PolynomialGaitTest, UnreachableHipHeightIsAClearError) {
 TEST_F(PolynomialGaitTest, ReachCheckAgreesWithInverseKinematics) {
   int unreachable = 0;
   for (const double hip_height : {0.40, 0.55, 0.62, 0.63, 0.70}) {
-    auto params = params_;
-    params.hip_height = hip_height;  // legs are 0.634 m long: the higher hips overreach
-    const gaits::PolynomialGait gait(model_, params, plan_);
+    auto plan = plan_;
+    plan.height = hip_height;  // legs are 0.634 m long: the higher hips overreach
+    const gaits::PolynomialGait gait(model_, params_, plan);
     for (int k = 0; k <= 70; ++k) {
-      const double t = params.duration() * k / 70;
-      const Phase phase = t <= params.ssp_duration ? Phase::kSsp : Phase::kDsp;
+      const double t = params_.duration() * k / 70;
+      const Phase phase = t <= params_.ssp_duration ? Phase::kSsp : Phase::kDsp;
       bool solved = true;
       try {
         gait.kinematics(t, phase);
