@@ -45,6 +45,16 @@ done
 echo "== RABBIT under HZD: Kelly's optimum, 20 steps, restricted Poincare map"
 bash scripts/hzd_rabbit.sh "$build"
 
+echo "== the same walk on four grounds: how smooth the contact forces are (results/ground_forces/)"
+forces_work=$(mktemp -d)
+for ground in rigid impedance configs/grounds/pad.yaml lcp; do
+  "$bin" simulate --reference results/poly_zmp_mu2004 --ground "$ground" --steps 5 \
+    --cop-limit saturate --out "$forces_work/$(basename "$ground" .yaml)" --no-plots --quiet
+done
+/usr/bin/python3 scripts/plots/ground_forces_chart.py results/ground_forces \
+  "$forces_work"/{rigid,impedance,pad,lcp}
+rm -rf "$forces_work"
+
 echo "== Poincare multipliers of the walks on the unit circle (results/poincare_multipliers.png)"
 walks=(results/walk_{poly,opt,opt_robust}_mu2004_{computed_torque,sliding_mode,mu_sliding_mode}
   results/walk_opt_mu2004_{impedance,lcp})

@@ -25,13 +25,14 @@ RigidGround readRigidGround(const YamlReader& root) {
 
 CompliantGround readImpedanceGround(const YamlReader& root) {
   root.allowOnly({"model", "stiffness", "damping", "exponent", "tangential_stiffness",
-                  "tangential_damping", "time_step"});
+                  "tangential_damping", "pad_thickness", "time_step"});
   CompliantGround g{{}, groundTimeStep(root)};
   g.contact.exponent = root.number("exponent", inRange(1.0, 3.0, "[-] (1 linear, 1.5 Hertz)"));
   g.contact.stiffness = root.number("stiffness", inRange(config::kStiffness));  // as its sweep
   g.contact.damping = root.number("damping", nonNegative("[N s/m^(exponent+1)]"));
   g.contact.tangential_stiffness = root.number("tangential_stiffness", positive("[N/m]"));
   g.contact.tangential_damping = root.number("tangential_damping", nonNegative("[N s/m]"));
+  g.contact.pad_thickness = root.numberOr("pad_thickness", 0.0, inRange(0.0, 0.1, "[m]"));
   g.contact.friction = 0;  // the plant's, set by the walk (ground_model.hpp)
   return g;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 
@@ -30,13 +31,22 @@ void validateImpedanceGround(const ImpedanceGround& g) {
   require(non_negative(g.tangential_damping), "tangential_damping", "a finite number >= 0 [N s/m]",
           g.tangential_damping);
   require(non_negative(g.friction), "friction", "a finite number >= 0", g.friction);
+  require(non_negative(g.pad_thickness), "pad_thickness", "a finite number >= 0 [m]",
+          g.pad_thickness);
 }
 
 double huntCrossleyNormalForce(const ImpedanceGround& g, double penetration,
                                double penetration_rate) {
   if (penetration <= 0) return 0;
   const double dn = std::pow(penetration, g.exponent);
-  return std::max(0.0, dn * (g.stiffness + g.damping * penetration_rate));
+  if (g.pad_thickness <= 0) return std::max(0.0, dn * (g.stiffness + g.damping * penetration_rate));
+  // Addi & Rodic (60): stiffening towards the pad's thickness (held at 99.9 % of it, where the
+  // factor is 2.6e7), damping only while compressing.
+  const double squeeze = std::min(penetration / g.pad_thickness, 0.999);
+  const double t = std::tan(std::numbers::pi * squeeze / 2);
+  const double stiffening = 1 + 0.1 * t * t * t;
+  const double damping = penetration_rate > 0 ? g.damping * penetration_rate : 0.0;
+  return stiffening * dn * (g.stiffness + damping);
 }
 
 ImpedanceContactForce impedanceContactForce(const ImpedanceGround& g,

@@ -17,6 +17,10 @@ struct ImpedanceGround {
   double tangential_stiffness;  ///< k_t > 0 [N/m]
   double tangential_damping;    ///< c_t >= 0 [N s/m]
   double friction;              ///< Coulomb coefficient mu >= 0 [-]
+  /// t_p > 0: Addi & Rodic's pad (60) instead of Hunt-Crossley: the stiffness k and damping c
+  /// grow as k (1 + 0.1 tan^3(pi delta / (2 t_p))), so the pad cannot be squeezed through its
+  /// thickness, and the damping acts only while it is compressed; 0: Hunt-Crossley [m].
+  double pad_thickness = 0;
 };
 
 /// @throws std::invalid_argument naming the first parameter that is not finite or out of range
@@ -28,6 +32,9 @@ void validateImpedanceGround(const ImpedanceGround& ground);
 /// contact (delta <= 0), and clipped at zero when the ground separates faster than k / c, so it
 /// never pulls. The damping vanishes with delta, so the force is continuous at impact and the
 /// coefficient of restitution is e ~ 1 - alpha v_impact with alpha = 2c / (3k) for small v.
+/// With a pad (pad_thickness > 0) the law of Addi & Rodic (60) on a massless pad:
+/// Fn = s k delta^n (1 + (c / k) delta_dot) while compressing, s k delta^n while it restores,
+/// s = 1 + 0.1 tan^3(pi delta / (2 t_p)) (their stiffening), delta held just under t_p.
 /// @param penetration     delta [m], > 0 in contact
 /// @param penetration_rate  d delta / dt [m/s], > 0 while compressing
 double huntCrossleyNormalForce(const ImpedanceGround& ground, double penetration,

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -204,6 +205,40 @@ TEST(ImpedanceContact, TangentialForceSticksThenSlidesAndMovesTheAnchor) {
   EXPECT_EQ(air.normal, 0);
   EXPECT_EQ(air.tangential, 0);
   EXPECT_EQ(air.anchor, 0.7);
+}
+
+// Addi & Rodic's pad (60): the force at a given squeeze is their stiffening law k delta (1 + 0.1
+// tan^3(pi delta / (2 t_p))), damped only while compressing; a body dropped on it from any height
+// this test tries stops inside the pad's thickness, where the linear spring alone would let it
+// through.
+TEST(ImpedanceContact, ThePadStiffensTowardsItsThicknessAndDampsOnlyWhileCompressed) {
+  ImpedanceGround pad = hertzGround(0.0);
+  pad.exponent = 1.0;
+  pad.damping = 1.5 * 3.0 * pad.stiffness;
+  pad.pad_thickness = 0.005;
+  for (const double delta : {0.001, 0.0025, 0.004}) {
+    const double law = pad.stiffness * delta *
+                       (1 + 0.1 * std::pow(std::tan(std::numbers::pi * delta / 0.01), 3));
+    EXPECT_NEAR(sim::huntCrossleyNormalForce(pad, delta, -0.3), law, 1e-9 * law);  // restoring
+    EXPECT_NEAR(sim::huntCrossleyNormalForce(pad, delta, 0.3), law * (1 + 4.5 * 0.3),
+                1e-9 * law);  // compressing
+  }
+  ImpedanceGround spring = pad;
+  spring.pad_thickness = 0;
+  spring.damping = 0;
+  for (const double v : {2.0, 3.0}) {  // [m/s]: the linear spring alone sinks 6.3 and 9.5 mm
+    double deepest_pad = 0, deepest_spring = 0;
+    for (auto [ground, deepest] : {std::pair{&pad, &deepest_pad}, {&spring, &deepest_spring}}) {
+      Body b;
+      b.s << 0, 0, 0, -v;
+      for (int k = 0; k < 20000 && b.s(3) <= 0; ++k) {
+        rk4Step(*ground, 9.81, 1e-6, b);
+        *deepest = std::max(*deepest, -b.s(1));
+      }
+    }
+    EXPECT_LT(deepest_pad, pad.pad_thickness) << v;
+    EXPECT_GT(deepest_spring, pad.pad_thickness) << v;
+  }
 }
 
 TEST(ImpedanceContact, BadParametersNameTheParameter) {
