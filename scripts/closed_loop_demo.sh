@@ -47,9 +47,9 @@ bash scripts/hzd_rabbit.sh "$build"
 
 echo "== the same walk on four grounds: how smooth the contact forces are (results/ground_forces/)"
 forces_work=$(mktemp -d)
-for ground in rigid impedance configs/grounds/pad.yaml lcp; do
+for ground in rigid impedance pad lcp; do
   "$bin" simulate --reference results/poly_zmp_mu2004 --ground "$ground" --steps 5 \
-    --cop-limit saturate --out "$forces_work/$(basename "$ground" .yaml)" --no-plots --quiet
+    --cop-limit saturate --out "$forces_work/$ground" --no-plots --quiet
 done
 /usr/bin/python3 scripts/plots/ground_forces_chart.py results/ground_forces \
   "$forces_work"/{rigid,impedance,pad,lcp}

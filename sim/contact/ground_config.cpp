@@ -32,7 +32,11 @@ CompliantGround readImpedanceGround(const YamlReader& root) {
   g.contact.damping = root.number("damping", nonNegative("[N s/m^(exponent+1)]"));
   g.contact.tangential_stiffness = root.number("tangential_stiffness", positive("[N/m]"));
   g.contact.tangential_damping = root.number("tangential_damping", nonNegative("[N s/m]"));
-  g.contact.pad_thickness = root.numberOr("pad_thickness", 0.0, inRange(0.0, 0.1, "[m]"));
+  // The pad ground is this model with a thickness (Addi & Rodic 60); the impedance ground has none.
+  if (root.string("model") == "pad")
+    g.contact.pad_thickness = root.number("pad_thickness", inRange(1e-4, 0.1, "[m]"));
+  else if (root.has("pad_thickness"))
+    root.fail("pad_thickness", "a pad's thickness belongs to `model: pad`");
   g.contact.friction = 0;  // the plant's, set by the walk (ground_model.hpp)
   return g;
 }

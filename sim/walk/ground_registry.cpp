@@ -19,6 +19,8 @@ const std::vector<GroundEntry>& grounds() {
                       walkRigid),
       makeGroundEntry("impedance", "compliant Hunt-Crossley contact, fixed-step RK4",
                       readImpedanceGround, walkCompliant),
+      makeGroundEntry("pad", "Addi & Rodic's stiffening pad, damped while compressed, fixed-step RK4",
+                      readImpedanceGround, walkCompliant),
       makeGroundEntry("lcp", "time stepping, one Lemke LCP per step (Stewart & Trinkle 1996)",
                       readLcpGround, walkLcp),
       makeGroundEntry("dart", "the DART physics engine, feet as bodies", readDartGround, walkDart),
@@ -39,6 +41,9 @@ const GroundEntry& groundEntry(const std::string& name) {
 }
 
 const GroundEntry& groundEntryOf(const GroundModel& ground) {
+  // The pad is the compliant ground with a thickness: one settings type serves both.
+  if (const auto* c = ground.getIf<CompliantGround>(); c && c->contact.pad_thickness > 0)
+    return groundEntry("pad");
   const auto& all = grounds();
   const auto it = std::find_if(all.begin(), all.end(),
                                [&](const GroundEntry& e) { return e.settings == ground.type(); });
