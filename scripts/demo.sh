@@ -72,15 +72,17 @@ if [[ "$full" == --full ]]; then
   echo "== gaitopt optimize: least cost of transport, free single/double support split"
   "$bin" optimize --config configs/ocp/mu2004_walk_cot.yaml --out results/opt_cot_mu2004 --quiet
 
-  echo "== polynomial (A) versus torque-squared optimal (B) gait of the five-link robot"
-  /usr/bin/python3 scripts/plots/compare_gaits.py results/poly_mu2004 results/opt_mu2004 \
+  echo "== polynomial (A: Mu's hip plan, B: searched for the foot) versus torque-squared optimal (C)"
+  /usr/bin/python3 scripts/plots/compare_gaits.py results/poly_mu2004 results/poly_zmp_mu2004 \
+    results/opt_mu2004 \
     results/poly_vs_opt_mu2004.md
   echo "== polynomial (A) versus least-cost-of-transport (B) gait of the five-link robot"
   /usr/bin/python3 scripts/plots/compare_gaits.py results/poly_mu2004 results/opt_cot_mu2004 \
     results/poly_vs_cot_mu2004.md
 
-  echo "== gaitopt compare: polynomial versus optimal gait, table and overlaid plots"
-  "$bin" compare results/poly_mu2004 results/opt_mu2004 --out results/compare_poly_opt_mu2004
+  echo "== gaitopt compare: both polynomial gaits versus the optimal gait, table and overlaid plots"
+  "$bin" compare results/poly_mu2004 results/poly_zmp_mu2004 results/opt_mu2004 \
+    --out results/compare_poly_opt_mu2004
 
   echo "== gaitopt impact-map: single or double impact over Mu's ch. 5 grid (Fig. 5.3)"
   "$bin" impact-map --robot configs/robots/mu2004_five_link.yaml --out results/impact_map_mu2004 \

@@ -24,12 +24,13 @@ void requireResultFolder(const std::string& dir) {
 }  // namespace
 
 void runCompare(const CompareOptions& o) {
-  const io::OutputFolder out(o.out_dir, {o.a_dir, o.b_dir});
-  requireResultFolder(o.a_dir);
-  requireResultFolder(o.b_dir);
+  const io::OutputFolder out(o.out_dir, o.dirs);
+  for (const std::string& dir : o.dirs) requireResultFolder(dir);
   // The report is the script's whole job: without matplotlib there is nothing to write.
   out.write([&](const std::string& dir) {
-    const int status = report::plotScriptStatus("compare_gaits.py", {o.a_dir, o.b_dir, dir});
+    std::vector<std::string> args = o.dirs;
+    args.push_back(dir);
+    const int status = report::plotScriptStatus("compare_gaits.py", args);
     if (status == report::kScriptInputError)  // a malformed folder; the script named the file
       throw io::CommandError(io::kExitInputError, "");
     if (status != 0)
@@ -40,12 +41,13 @@ void runCompare(const CompareOptions& o) {
 
 void registerCompareCommand(CLI::App& app) {
   auto options = std::make_shared<CompareOptions>();
-  CLI::App* cmd =
-      app.add_subcommand("compare", "Compare two gait result folders: table and overlaid plots");
-  cmd->add_option("A", options->a_dir, "First result folder (e.g. results/poly_mu2004)")
-      ->required();
-  cmd->add_option("B", options->b_dir, "Second result folder (e.g. results/opt_mu2004)")
-      ->required();
+  CLI::App* cmd = app.add_subcommand(
+      "compare", "Compare two to four gait result folders: table and overlaid plots");
+  cmd->add_option("FOLDERS", options->dirs,
+                  "Result folders, A first (e.g. results/poly_mu2004 results/poly_zmp_mu2004 "
+                  "results/opt_mu2004)")
+      ->required()
+      ->expected(2, 4);
   cmd->add_option("--out", options->out_dir, "Output folder (created)")
       ->required()
       ->option_text("DIR");

@@ -1,12 +1,15 @@
 #!/usr/bin/python3
-"""Compares two gait result folders (docs/design.md#the-export-contract): a markdown table and
-overlaid pictures.
+"""Compares two to four gait result folders (docs/design.md#the-export-contract): a markdown
+table and overlaid pictures.
 
-Usage: compare_gaits.py A_DIR B_DIR [OUT.md | OUT_DIR]
-Without a third argument, prints the markdown table of the two summary.json files (columns A, B
-and B/A; B/A is left empty when |A| < 1e-9 or A and B differ in sign). With OUT.md, also writes
-the table there. With OUT_DIR (an existing folder, or any name not ending in .md), creates it and
-writes, printing one line per file written:
+Usage: compare_gaits.py A_DIR B_DIR [C_DIR [D_DIR]] [OUT.md | OUT_DIR]
+Without an output, prints the markdown table of the summary.json files (a column per gait, then
+B/A, C/A, ...; a ratio is left empty when |A| < 1e-9 or the two differ in sign). Its first row
+says what each gait is: polynomial with Mu's hip plan (his DSP stability margin, the thesis' own
+design) or with the hip searched for the foot, or optimal, and the file it came from. The last
+argument is the output when it ends in .md or is not a gait result folder (no summary.json in
+it). With OUT.md, also writes the table there. With OUT_DIR (an existing folder, or any name not
+ending in .md), creates it and writes, printing one line per file written:
   comparison.md        the table
   angles_overlay.png   link angles theta1..thetaN, one panel per link
   torques_overlay.png  joint torques tau0..tau{N-1}, one panel per joint
@@ -15,8 +18,8 @@ writes, printing one line per file written:
   zmp_overlay.png      zmp_x with the support interval (stance tip B at x = 0; in the DSP up
                        to the leading tip E at step_length, or swing_x when the key is absent)
   comparison.png       angles, torques, normal forces and ZMP on one page
-The pictures read A_DIR/trajectory.csv and B_DIR/trajectory.csv: A solid, B dashed, one colour
-per quantity; grey vertical lines mark each gait's touchdown (SSP -> DSP; the step end for a
+The pictures read each folder's trajectory.csv: A solid, B dashed, C dotted, D dash-dotted, one
+colour per quantity; grey vertical lines mark each gait's touchdown (SSP -> DSP; the step end for a
 gait without DSP rows). A missing folder, file, column or key, or a malformed value, ends the
 script with "error: <file>: <what>" and exit code 65 (EX_DATAERR of sysexits.h, which python
 itself never returns): `gaitopt compare` then exits 2, bad input.
@@ -47,6 +50,8 @@ RATIO_MIN_A = 1e-9
 MIN_LOADED_FORCE = 1.0
 FORCE_COLUMNS = ["fb_x", "fb_y", "fe_x", "fe_y", "zmp_x"]
 JOINT_NAMES_5 = ["stance ankle", "stance knee", "stance hip", "swing hip", "swing knee"]
+# Line style of each gait, in the order of the folders, and its name in the legends.
+LINE_NAMES = {"-": "solid", "--": "dashed", ":": "dotted", "-.": "dash-dotted"}
 
 # ---------------------------------------------------------------------------------------------
 # Table
@@ -79,25 +84,46 @@ def ratio(va, vb):
     return f"{vb / va:.2f}"
 
 
-def table(a_dir, b_dir, a=None, b=None):
-    a = load(a_dir) if a is None else a
-    b = load(b_dir) if b is None else b
-    lines = [f"| quantity | A: {a_dir} | B: {b_dir} | B/A |", "|---|---:|---:|---:|"]
+TAGS = "ABCD"
+
+
+def design(s):
+    """What a gait is, from its summary: polynomial (whose hip plan) or optimal, and its file."""
+    source = os.path.basename(str(s.get("config", "")))
+    plan = s.get("hip_plan")
+    if isinstance(plan, dict):
+        how = ("hip searched for the foot (SSP ZMP)" if plan.get("objective") == "zmp" else
+               "Mu's hip plan (DSP ZMP)")
+        return f"polynomial, {how}, {source}"
+    return f"optimal, {source}" if source else "optimal"
+
+
+def row(label, values, fmt):
+    """One table row: the values, then each against A."""
+    ratios = [ratio(values[0], v) if fmt else "" for v in values[1:]]
+    return "| " + " | ".join([label] + [cell(v, fmt) for v in values] + ratios) + " |"
+
+
+def table(dirs, summaries=None):
+    summaries = [load(d) for d in dirs] if summaries is None else summaries
+    tags = TAGS[:len(dirs)]
+    head = [f"{t}: {d}" for t, d in zip(tags, dirs)] + [f"{t}/A" for t in tags[1:]]
+    lines = ["| quantity | " + " | ".join(head) + " |",
+             "|---|" + "---:|" * (len(head))]
+    lines.append(row("gait", [design(s) for s in summaries], None))
     for key, label, fmt in ROWS:
-        va, vb = a.get(key), b.get(key)
-        if va is None or vb is None:
+        values = [s.get(key) for s in summaries]
+        if any(v is None for v in values):
             continue
-        r = ratio(va, vb) if fmt else ""
-        lines.append(f"| {label} | {cell(va, fmt)} | {cell(vb, fmt)} | {r} |")
-    joints = a.get("joints")
+        lines.append(row(label, values, fmt))
+    joints = summaries[0].get("joints")
     names = [j.get("name", "") if isinstance(j, dict) else str(j)
              for j in (joints if isinstance(joints, list) else [])]
-    peaks_a, peaks_b = a.get("peak_torque"), b.get("peak_torque")
-    if isinstance(peaks_a, list) and isinstance(peaks_b, list):
-        for j, (pa, pb) in enumerate(zip(peaks_a, peaks_b)):
+    peaks = [s.get("peak_torque") for s in summaries]
+    if all(isinstance(p, list) for p in peaks):
+        for j, values in enumerate(zip(*peaks)):
             name = names[j] if j < len(names) and names[j] else f"joint {j}"
-            lines.append(f"| peak torque {name} [N m] | {cell(pa, '{:.1f}')} | "
-                         f"{cell(pb, '{:.1f}')} | {ratio(pa, pb)} |")
+            lines.append(row(f"peak torque {name} [N m]", list(values), "{:.1f}"))
     return "\n".join(lines) + "\n"
 
 
@@ -139,7 +165,7 @@ class Gait:
         return None
 
     def label(self):
-        return f"{self.tag}: {self.folder} ({'solid' if self.ls == '-' else 'dashed'})"
+        return f"{self.tag}: {self.folder} ({LINE_NAMES[self.ls]})"
 
     def touchdown_label(self):
         if self.dsp.any():
@@ -387,10 +413,10 @@ PICTURES = [("angles_overlay.png", angles_figure), ("torques_overlay.png", torqu
             ("comparison.png", comparison_figure)]
 
 
-def report(a_dir, b_dir, out_dir):
+def report(dirs, out_dir):
     """Reads everything first, so a broken input writes nothing."""
-    gaits = [Gait(a_dir, "A", "-"), Gait(b_dir, "B", "--")]
-    text = table(a_dir, b_dir, gaits[0].s, gaits[1].s)
+    gaits = [Gait(d, tag, ls) for d, tag, ls in zip(dirs, TAGS, LINE_NAMES)]
+    text = table(dirs, [g.s for g in gaits])
     plt = pyplot()
     try:
         os.makedirs(out_dir, exist_ok=True)
@@ -404,22 +430,26 @@ def report(a_dir, b_dir, out_dir):
         save(fig, gaits, os.path.join(out_dir, name), bottom)
 
 
-def is_folder_target(arg):
-    return os.path.isdir(arg) or not arg.endswith(".md")
+def is_gait(arg):
+    return os.path.isfile(os.path.join(arg, "summary.json"))
 
 
 def main(args):
-    if len(args) == 3 and is_folder_target(args[2]):
-        report(*args)
+    out = args[-1] if len(args) > 2 and (args[-1].endswith(".md") or not is_gait(args[-1])) else None
+    dirs = args[:-1] if out else args
+    if not 2 <= len(dirs) <= len(TAGS):
+        sys.exit(__doc__)
+    if out and (os.path.isdir(out) or not out.endswith(".md")):  # an existing folder is OUT_DIR
+        report(dirs, out)
         return
-    text = table(args[0], args[1])
-    if len(args) == 3:
-        write_text(args[2], text)
+    text = table(dirs)
+    if out:
+        write_text(out, text)
     print(text, end="")
 
 
 if __name__ == "__main__":
-    if len(sys.argv) not in (3, 4):
+    if not 3 <= len(sys.argv) <= 2 + len(TAGS):
         sys.exit(__doc__)
     try:
         main(sys.argv[1:])

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# End-to-end checks of `gaitopt compare`: the report of two gait folders, and exit 2 with the
-# missing file named when a folder is not a gait result.
+# End-to-end checks of `gaitopt compare`: the report of two gait folders, of three (Mu's
+# polynomial gait, the same with its hip searched for the foot, and the first again), each named
+# for what it is, and exit 2 with the missing file named when a folder is not a gait result.
 # Usage: compare_cli_test.sh <path to gaitopt binary> <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
@@ -21,6 +22,22 @@ for f in comparison.md comparison.png angles_overlay.png torques_overlay.png for
 done
 grep -q "^| step length \[m\] | 0.350 | 0.350 | 1.00 |" "$TMP/cmp/comparison.md" ||
   fail "(a) table: $(cat "$TMP/cmp/comparison.md")"
+
+# (a') three folders: a column per gait, each against A, and a first row saying which hip plan each
+# polynomial gait has (Mu's own design, or searched for the foot).
+run poly --robot configs/robots/mu2004_five_link.yaml --gait configs/gaits/mu2004_zmp.yaml \
+  --out "$TMP/zmp" --no-plots
+[[ $RC -eq 0 ]] || fail "(a') poly exited $RC: $(cat "$TMP/err")"
+run compare "$TMP/poly1000" "$TMP/zmp" "$TMP/poly200" --out "$TMP/cmp3"
+[[ $RC -eq 0 ]] || fail "(a') compare exited $RC: $(cat "$TMP/err")"
+grep -qxF "| quantity | A: $TMP/poly1000 | B: $TMP/zmp | C: $TMP/poly200 | B/A | C/A |" \
+  "$TMP/cmp3/comparison.md" || fail "(a') header: $(head -1 "$TMP/cmp3/comparison.md")"
+grep -qF "| gait | polynomial, Mu's hip plan (DSP ZMP), mu2004.yaml | polynomial, hip searched for the foot (SSP ZMP), mu2004_zmp.yaml | polynomial, Mu's hip plan (DSP ZMP), mu2004.yaml |" \
+  "$TMP/cmp3/comparison.md" || fail "(a') gait row: $(sed -n 3p "$TMP/cmp3/comparison.md")"
+grep -q "^| step length \[m\] | 0.350 | 0.350 | 0.350 | 1.00 | 1.00 |" "$TMP/cmp3/comparison.md" ||
+  fail "(a') table: $(cat "$TMP/cmp3/comparison.md")"
+run compare "$TMP/poly1000" --out "$TMP/cmp1"
+[[ $RC -eq 2 ]] || fail "(a') one folder: expected exit 2, got $RC"
 
 # (b) a folder without a trajectory: exit 2 naming the file.
 mkdir -p "$TMP/empty"
