@@ -106,20 +106,21 @@ dsp="$1/bench/dsp_coordinates"
 [[ -x "$dsp" ]] || { echo "error: $dsp not built" >&2; exit 1; }
 "$dsp" 3
 
+# study_into BUILD NAME TABLE: runs BUILD/bench/NAME into BUILD/NAME/ and prints its TABLE.
+study_into() {
+  local bin="$1/bench/$2"
+  [[ -x "$bin" ]] || { echo "error: $bin not built" >&2; exit 1; }
+  mkdir -p "$1/$2"
+  "$bin" "$1/$2"
+  cat "$1/$2/$3"
+}
+
 echo
-sensitivity="$1/bench/impact_sensitivity"
-[[ -x "$sensitivity" ]] || { echo "error: $sensitivity not built" >&2; exit 1; }
-mkdir -p "$1/impact_sensitivity"
-"$sensitivity" "$1/impact_sensitivity"
-cat "$1/impact_sensitivity/sensitivity.md"
+study_into "$1" impact_sensitivity sensitivity.md
 echo "(also in $1/impact_sensitivity/; results/impact_sensitivity/ is a copy)"
 
 echo
-passive="$1/bench/passive_bifurcation"
-[[ -x "$passive" ]] || { echo "error: $passive not built" >&2; exit 1; }
-mkdir -p "$1/passive_bifurcation"
-"$passive" "$1/passive_bifurcation"
-cat "$1/passive_bifurcation/bifurcation.md"
+study_into "$1" passive_bifurcation bifurcation.md
 /usr/bin/python3 scripts/plots/passive_bifurcation_chart.py "$1/passive_bifurcation"
 echo "(also in $1/passive_bifurcation/; results/passive_bifurcation/ is a copy)"
 
