@@ -5,6 +5,7 @@
 #   make test   same set-up, then the whole test suite (Release, then Debug+ASan/UBSan) via ctest,
 #               the quick tests before the full ones, and one optimise under valgrind
 #               (make test-quick: the Release build's quick tests only, a few minutes)
+#   make studies  every study of configs/studies/ into build/studies/ (STUDIES="a b" for some)
 JOBS ?= $(shell nproc)
 BUILD ?= build
 SAN_BUILD ?= build-sanitize
@@ -18,7 +19,8 @@ SAN_OPT ?= -g1 -O1
 CMAKE_GEN = $(shell command -v ninja >/dev/null 2>&1 && echo "-G Ninja")
 
 .PHONY: deps configure build test test-quick test-release test-sanitize valgrind demo demo-full \
-  bench format clean
+  bench studies ocp-study dart-side-by-side library-throughput fidelity fuzz fresh-demo format \
+  clean
 
 # Each target names every option, so one build folder serves them all in any order.
 # The demo builds the CLI alone and needs none of the test, benchmark, binding or MPI packages;
@@ -78,6 +80,29 @@ demo-full: build
 
 bench: build
 	@bash scripts/bench.sh $(BUILD)
+
+studies: build
+	@bash scripts/studies.sh $(BUILD) $(BUILD)/studies $(STUDIES)
+
+# The measurements behind results/ that are too long for `make bench` (minutes each; the README
+# and results/README.md say which file each one makes). fresh-demo needs root and the mirror.
+ocp-study: build
+	@bash scripts/ocp_study.sh $(BUILD) $(BUILD)/ocp_study
+
+dart-side-by-side: build
+	@bash scripts/dart_side_by_side.sh $(BUILD) $(BUILD)/dart_side_by_side
+
+library-throughput: build
+	@bash scripts/library_throughput.sh $(BUILD)
+
+fidelity: build
+	@/usr/bin/python3 scripts/fidelity_chart.py $(BUILD)/apps/gaitopt $(BUILD)/fidelity
+
+fuzz:
+	@bash scripts/fuzz.sh $(FUZZ_SECONDS)
+
+fresh-demo:
+	@bash scripts/fresh_machine_demo.sh
 
 format:
 	@clang-format -i $$(git ls-files '*.cpp' '*.hpp')

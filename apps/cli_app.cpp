@@ -14,6 +14,7 @@
 #include "apps/study_commands/report_command.hpp"
 #include "apps/study_commands/simulate_command.hpp"
 #include "apps/study_commands/stability_command.hpp"
+#include "apps/study_commands/study_command.hpp"
 #include "io/terminal_text.hpp"
 
 namespace gaitopt::apps {
@@ -41,6 +42,7 @@ void configureCli(CLI::App& app) {
   registerStabilityCommand(app);
   registerCompareCommand(app);
   registerLibraryCommand(app);
+  registerStudyCommand(app);
   registerInterpolateCommand(app);
   registerReportCommand(app);
   requireFiniteNumbers(app);

@@ -4,7 +4,7 @@
 /// guess cost (Ipopt iterations, wall time) and buy (accuracy, convergence), on the RABBIT
 /// benchmark (configs/ocp/rabbit_kelly2017.yaml, Kelly 2017) and the default five-link problem
 /// (configs/ocp/mu2004_walk.yaml). Each study prints one CSV to stdout
-/// (scripts/plots/ocp_study_charts.py draws and tabulates them).
+/// (plots/ocp_study_charts.py draws and tabulates them).
 #include <ostream>
 #include <string>
 #include <vector>

@@ -7,7 +7,7 @@ include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(GAITOPT_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/gaitopt)
-set(gaitopt_libraries config io dynamics gaits ocp sim library report parallel)
+set(gaitopt_libraries config io dynamics gaits ocp sim library study report parallel)
 
 foreach(name IN LISTS gaitopt_libraries)
   set_target_properties(gaitopt_${name} PROPERTIES EXPORT_NAME ${name})
@@ -42,7 +42,7 @@ endif()
 # The files the tool reads at run time (io/data_dir.hpp): the shipped configs and the plot
 # scripts, so an installed tree works with the source tree gone.
 install(DIRECTORY configs/ DESTINATION ${CMAKE_INSTALL_DATADIR}/gaitopt/configs)
-install(DIRECTORY scripts/plots/ DESTINATION ${CMAKE_INSTALL_DATADIR}/gaitopt/scripts/plots
+install(DIRECTORY plots/ DESTINATION ${CMAKE_INSTALL_DATADIR}/gaitopt/plots
         FILES_MATCHING PATTERN "*.py")
 
 configure_package_config_file(cmake/gaitoptConfig.cmake.in

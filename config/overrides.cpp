@@ -101,8 +101,12 @@ void applyOverrides(YAML::Node& root, const std::vector<Override>& overrides) {
     const std::vector<Step> steps = stepsOf(o);
     YAML::Node node = root;
     for (std::size_t i = 0; i + 1 < steps.size(); ++i) node.reset(childOf(node, steps[i], o));
-    // A leaf that is a mapping or list in the file is replaced whole, as a file edit would.
-    childOf(node, steps.back(), o) = value;
+    // `null` deletes the key, so the reader's default (or absence) applies, as deleting the
+    // line would; a leaf that is a mapping or list in the file is replaced whole.
+    if (value.IsNull() && steps.back().index < 0 && (node.IsMap() || node.IsNull()))
+      node.remove(steps.back().key);
+    else
+      childOf(node, steps.back(), o) = value;
   }
 }
 

@@ -33,7 +33,8 @@ std::vector<Override> scopedOverrides(const std::vector<std::string>& texts,
                                       const std::vector<std::string>& scopes);
 
 /// Sets each override's value in the document `root`, creating missing mappings on the way
-/// (the reader then refuses keys it does not know). @throws ConfigError naming --set and the
+/// (the reader then refuses keys it does not know). The value `null` removes the key, so its
+/// default applies (`--set variants=null`). @throws ConfigError naming --set and the
 /// key when the path runs through a value that is not a mapping, or past a list's end.
 void applyOverrides(YAML::Node& root, const std::vector<Override>& overrides);
 

@@ -235,6 +235,28 @@ std::vector<YamlReader> YamlReader::list(const std::string& key) const {
   return items;
 }
 
+namespace {
+
+std::string flowText(const YAML::Node& node) {
+  YAML::Emitter out;
+  out << YAML::Flow << node;
+  return out.c_str();
+}
+
+}  // namespace
+
+std::vector<std::string> YamlReader::yamlTexts(const std::string& key) const {
+  const YAML::Node n = child(key);
+  if (!n.IsSequence() || n.size() == 0) fail(key, "expected a non-empty list");
+  std::vector<std::string> texts;
+  for (const auto& item : n) texts.push_back(flowText(item));
+  return texts;
+}
+
+std::string YamlReader::yamlText(const std::string& key) const {
+  return flowText(child(key));
+}
+
 std::vector<std::string> YamlReader::keys() const {
   std::vector<std::string> out;
   if (!node_.IsMap()) return out;

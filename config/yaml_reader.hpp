@@ -55,6 +55,11 @@ class YamlReader {
   /// One word or a non-empty list of words, each one of `allowed` (e.g. `order: [margins, cost]`).
   std::vector<std::string> choices(const std::string& key,
                                    const std::vector<std::string>& allowed) const;
+  /// Each item of the non-empty list under `key` as one line of YAML text (a number, a word, a
+  /// flow list or mapping), to be set elsewhere as written (a study axis' `--set` values).
+  std::vector<std::string> yamlTexts(const std::string& key) const;
+  /// The value under `key` as one line of YAML text.
+  std::string yamlText(const std::string& key) const;
   /// The mapping under `key`.
   YamlReader map(const std::string& key) const;
   /// Whether the value under `key` is a mapping (e.g. a range `{from, to, count}`).

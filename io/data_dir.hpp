@@ -1,6 +1,6 @@
 #pragma once
 /// @file data_dir.hpp
-/// Where gaitopt's shipped files are found at run time: the plot scripts (scripts/plots/) and the
+/// Where gaitopt's shipped files are found at run time: the plot scripts (plots/) and the
 /// default configs (configs/: robots, grounds, ...). An installed tool reads them from
 /// PREFIX/share/gaitopt, so it keeps working when the source tree it was built from is gone; a
 /// tool run from its build tree reads the source tree, so an edit there is seen at once.
@@ -8,7 +8,7 @@
 
 namespace gaitopt::io {
 
-/// The folder holding configs/ and scripts/plots/, the first of:
+/// The folder holding configs/ and plots/, the first of:
 /// 1. $GAITOPT_DATA_DIR, when set;
 /// 2. PREFIX/share/gaitopt, when the running program is PREFIX/bin/NAME or the running code is the
 ///    Python module PREFIX/lib/python3/dist-packages/gaitopt.so, and that folder exists (an

@@ -24,13 +24,18 @@ struct FileActions {
 }  // namespace
 
 int runProgram(const std::vector<std::string>& argv, bool quiet) {
+  return runProgramInto(argv, quiet ? "/dev/null" : "");
+}
+
+int runProgramInto(const std::vector<std::string>& argv, const std::string& log) {
   if (argv.empty()) throw std::invalid_argument("runProgram: empty argument vector");
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
   FileActions fa;
-  if (quiet) {
-    posix_spawn_file_actions_addopen(&fa.actions, 1, "/dev/null", O_WRONLY, 0);
+  if (!log.empty()) {
+    posix_spawn_file_actions_addopen(&fa.actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                     0644);
     posix_spawn_file_actions_adddup2(&fa.actions, 1, 2);
   }
   pid_t pid = 0;

@@ -12,4 +12,8 @@ namespace gaitopt::io {
 /// @throws std::system_error when it cannot be started (missing program, process limit).
 int runProgram(const std::vector<std::string>& argv, bool quiet = false);
 
+/// runProgram with its stdout and stderr written to the file `log` (replaced), or inherited when
+/// `log` is empty. An unwritable log makes the program exit 127 without running.
+int runProgramInto(const std::vector<std::string>& argv, const std::string& log);
+
 }  // namespace gaitopt::io

@@ -17,7 +17,7 @@ namespace {
 /// missing folder to skip the pictures).
 std::string scriptDir() {
   if (const char* env = std::getenv("GAITOPT_SCRIPTS")) return env;
-  return io::dataFile("scripts/plots");
+  return io::dataFile("plots");
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 #pragma once
 /// @file plot_script.hpp
-/// Pictures are drawn by scripts/plots/*.py with Debian's matplotlib. A missing plotting
+/// Pictures are drawn by plots/*.py with Debian's matplotlib. A missing plotting
 /// package is a warning, never a failed run. The script is started from an argument vector
 /// (io/spawn.hpp): no shell sees the folder names.
 #include <functional>
@@ -13,7 +13,7 @@ namespace gaitopt::report {
 /// "error: <file>: <what>": EX_DATAERR of sysexits.h, which python3 itself never returns.
 inline constexpr int kScriptInputError = 65;
 
-/// Runs `/usr/bin/python3 scripts/plots/<script> <args...>` and returns its exit status, or -1
+/// Runs `/usr/bin/python3 plots/<script> <args...>` and returns its exit status, or -1
 /// when python3 or matplotlib is missing or no process could be started. Prints a warning unless
 /// the status is 0 or kScriptInputError (the script has said what is wrong).
 int plotScriptStatus(const std::string& script, const std::vector<std::string>& args);

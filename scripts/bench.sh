@@ -4,15 +4,15 @@
 # the OCP solve-time table (bench/ocp_bench.cpp), the solve-time profile (where a
 # whole solve's time goes, and the solver settings measured against the shipped ones,
 # bench/solve_profile.cpp), every shipped config with MUMPS and with gaitopt's KKT solver
-# (scripts/linear_solver_compare.sh) and how often each converges on the five-link configs at
-# five meshes (scripts/solver_robustness.sh), how often every shipped problem converges over
+# (configs/studies/linear_solver_compare.yaml) and how often each converges on the five-link
+# configs at five meshes (configs/studies/solver_robustness.yaml), how often every shipped problem converges over
 # meshes and starts (bench/convergence_bench.cpp), the ensemble's solve time with 1, 3 and 5
 # models (bench/ensemble_bench.cpp), the double support in theta
 # against reduced coordinates (bench/dsp_coordinates.cpp), the chapter-5 impact figures against
 # the link inertias (bench/impact_sensitivity.cpp), the passive walker's bifurcation
-# diagram (bench/passive_bifurcation.cpp, scripts/plots/passive_bifurcation_chart.py), then the
+# diagram (bench/passive_bifurcation.cpp, plots/passive_bifurcation_chart.py), then the
 # speed-against-accuracy table and chart
-# of the ground models (bench/ground_bench.cpp, scripts/plots/ground_chart.py).
+# of the ground models (bench/ground_bench.cpp, plots/ground_chart.py).
 # Usage: scripts/bench.sh BUILD_DIR   (BUILD_DIR configured with GAITOPT_BUILD_BENCH=ON, built)
 set -euo pipefail
 
@@ -81,13 +81,20 @@ echo
 "$profile" 5 levers
 
 echo
+# study BUILD NAME TABLE: a fresh run of the study configs/studies/NAME.yaml into BUILD/NAME/,
+# then its TABLE.
+study() {
+  rm -rf "${1:?}/$2"
+  "$1/apps/gaitopt" study --config "configs/studies/$2.yaml" --out "$1/$2" --quiet
+  cat "$1/$2/$3"
+}
 echo "Every shipped config with MUMPS and with gaitopt's KKT solver (linear_solver: ldl):"
-scripts/linear_solver_compare.sh "$1" "$1/linear_solver_compare.csv" | tee "$1/linear_solver_compare.md"
-echo "(also in $1/linear_solver_compare.{csv,md}; results/linear_solver_compare.{csv,md} are copies)"
+study "$1" linear_solver_compare solves.md
+echo "(also in $1/linear_solver_compare/; results/linear_solver_compare/ holds its tables)"
 echo
 echo "How often each solver converges on the five-link configs at five meshes:"
-scripts/solver_robustness.sh "$1" "$1/solver_robustness.csv" 2>/dev/null
-echo "(also in $1/solver_robustness.csv; results/solver_robustness.csv is a copy)"
+study "$1" solver_robustness by_axis.md
+echo "(also in $1/solver_robustness/; results/solver_robustness/ holds its tables)"
 echo
 echo "How often every shipped problem converges over five meshes and two starts, and where to:"
 conv="$1/bench/convergence_bench"
@@ -121,7 +128,7 @@ echo "(also in $1/impact_sensitivity/; results/impact_sensitivity/ is a copy)"
 
 echo
 study_into "$1" passive_bifurcation bifurcation.md
-/usr/bin/python3 scripts/plots/passive_bifurcation_chart.py "$1/passive_bifurcation"
+/usr/bin/python3 plots/passive_bifurcation_chart.py "$1/passive_bifurcation"
 echo "(also in $1/passive_bifurcation/; results/passive_bifurcation/ is a copy)"
 
 echo
@@ -129,4 +136,4 @@ ground="$1/bench/ground_bench"
 [[ -x "$ground" ]] || { echo "error: $ground not built" >&2; exit 1; }
 csv="$(mktemp -d "${TMPDIR:-/tmp}/ground_bench.XXXXXX")/ground_bench.csv"
 "$ground" 3 >"$csv"
-/usr/bin/python3 scripts/plots/ground_chart.py "$csv"
+/usr/bin/python3 plots/ground_chart.py "$csv"

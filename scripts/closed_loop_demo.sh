@@ -51,7 +51,7 @@ for ground in rigid impedance pad lcp; do
   "$bin" simulate --reference results/poly_zmp_mu2004 --ground "$ground" --steps 5 \
     --cop-limit saturate --out "$forces_work/$ground" --no-plots --quiet
 done
-/usr/bin/python3 scripts/plots/ground_forces_chart.py results/ground_forces \
+/usr/bin/python3 plots/ground_forces_chart.py results/ground_forces \
   "$forces_work"/{rigid,impedance,pad,lcp}
 rm -rf "$forces_work"
 
@@ -59,7 +59,7 @@ echo "== Poincare multipliers of the walks on the unit circle (results/poincare_
 walks=(results/walk_{poly,opt,opt_robust}_mu2004_{computed_torque,sliding_mode,mu_sliding_mode}
   results/walk_opt_mu2004_{impedance,lcp})
 [[ -f results/walk_rabbit_hzd/summary.json ]] && walks+=(results/walk_rabbit_hzd)
-/usr/bin/python3 scripts/plots/multipliers_plot.py results/poincare_multipliers.png "${walks[@]}"
+/usr/bin/python3 plots/multipliers_plot.py results/poincare_multipliers.png "${walks[@]}"
 
 echo "== gaitopt stability: where walking stops (20 steps per point)"
 sweeps=(--sweep push=-3:3:25 --sweep mass_error=-0.2:0.2:17 --sweep length_error=-0.05:0.05:5
@@ -113,13 +113,14 @@ if [[ -f results/opt_rabbit/trajectory.csv ]]; then
     --map "push=-12:12:25,mass_error=-0.5:1:16" --out results/map_wide_rabbit_hzd
 fi
 
-echo "== Mu's uncertainty cases 1-3 on the controller's model (results/closed_loop_mu2004/mu_cases.md)"
-bash scripts/mu_cases.sh "$build" results/closed_loop_mu2004
+echo "== Mu's uncertainty cases 1-3 on the controller's model (results/mu_cases/walks_by_plant.md)"
+bash scripts/studies.sh "$build" "$build/studies" mu_cases
+cp "$build/studies/mu_cases/walks.csv" "$build/studies/mu_cases/walks_by_plant.md" results/mu_cases/
 
 echo "== ground models: speed against accuracy (bench/ground_bench, 3 repetitions)"
 if [[ -x "$build/bench/ground_bench" ]]; then
   "$build/bench/ground_bench" 3 >results/ground_bench.csv
-  /usr/bin/python3 scripts/plots/ground_chart.py results/ground_bench.csv >results/ground_bench.md
+  /usr/bin/python3 plots/ground_chart.py results/ground_bench.csv >results/ground_bench.md
 else
   echo "  skipped: $build/bench/ground_bench not built (GAITOPT_BUILD_BENCH=OFF)" >&2
 fi

@@ -10,11 +10,16 @@
 # least CoP margin, largest friction ratio |F_t|/F_n of a loaded tip, largest stance-foot tilt,
 # failure), OUT/intervals.{csv,md} (the push and mass intervals walked), OUT/interval_ends.{csv,md}
 # (the failure just outside each interval) and OUT/side_by_side.png
-# (scripts/plots/dart_side_by_side_chart.py: the steps and both intervals per gait and ground).
+# (plots/dart_side_by_side_chart.py: the steps and both intervals per gait and ground).
 # Usage: scripts/dart_side_by_side.sh BUILD_DIR OUT_DIR   (from the repository root; ~5 minutes)
 set -euo pipefail
-# shellcheck source=scripts/study_setup.sh
-source "$(dirname "$0")/study_setup.sh" "$@"  # build, out, bin, work
+build=${1:?usage: $0 BUILD_DIR OUT_DIR}
+out=${2:?usage: $0 BUILD_DIR OUT_DIR}
+bin="$build/apps/gaitopt"
+[[ -x "$bin" ]] || { echo "error: $bin not built" >&2; exit 1; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+mkdir -p "$out"
 "$bin" poly --robot configs/robots/mu2004_five_link.yaml --gait configs/gaits/mu2004.yaml \
   --out "$work/poly" --no-plots >/dev/null
 for config in mu2004_walk mu2004_walk_robust mu2004_walk_ensemble rabbit_kelly2017; do
@@ -121,4 +126,4 @@ for gait in dict.fromkeys(r["gait"] for r in ends):
 open(os.path.join(out, "interval_ends.md"), "w").write("\n".join(lines) + "\n")
 print(open(os.path.join(out, "walks.md")).read() + "\n" + open(os.path.join(out, "intervals.md")).read())
 PY
-/usr/bin/python3 scripts/plots/dart_side_by_side_chart.py "$out"
+/usr/bin/python3 plots/dart_side_by_side_chart.py "$out"

@@ -29,7 +29,7 @@ echo "== Mu (2004) Table 4.1 posture: dynamics and the angle-convention picture"
 "$bin" inspect --robot "configs/robots/mu2004_five_link.yaml" \
   --state "configs/states/mu2004_table41.json" >"$out/mu2004_table41.json"
 if /usr/bin/python3 -c "import matplotlib" 2>/dev/null; then
-  /usr/bin/python3 "scripts/plots/convention.py" "$out/mu2004_table41.json" "results/convention.png"
+  /usr/bin/python3 "plots/convention.py" "$out/mu2004_table41.json" "results/convention.png"
   echo "  picture: results/convention.png"
 else
   echo "  warning: python3-matplotlib missing, no picture drawn (scripts/install-deps.sh installs it)" >&2
@@ -73,11 +73,11 @@ if [[ "$full" == --full ]]; then
   "$bin" optimize --config configs/ocp/mu2004_walk_cot.yaml --out results/opt_cot_mu2004 --quiet
 
   echo "== polynomial (A: Mu's hip plan, B: searched for the foot) versus torque-squared optimal (C)"
-  /usr/bin/python3 scripts/plots/compare_gaits.py results/poly_mu2004 results/poly_zmp_mu2004 \
+  /usr/bin/python3 plots/compare_gaits.py results/poly_mu2004 results/poly_zmp_mu2004 \
     results/opt_mu2004 \
     results/poly_vs_opt_mu2004.md
   echo "== polynomial (A) versus least-cost-of-transport (B) gait of the five-link robot"
-  /usr/bin/python3 scripts/plots/compare_gaits.py results/poly_mu2004 results/opt_cot_mu2004 \
+  /usr/bin/python3 plots/compare_gaits.py results/poly_mu2004 results/opt_cot_mu2004 \
     results/poly_vs_cot_mu2004.md
 
   echo "== gaitopt compare: both polynomial gaits versus the optimal gait, table and overlaid plots"

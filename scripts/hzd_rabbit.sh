@@ -15,4 +15,4 @@ if [[ ! -f "$gait/trajectory.csv" ]]; then
 fi
 "$bin" simulate --reference "$gait" --controller hzd --steps 20 --rate 200 --no-plots \
   --out results/walk_rabbit_hzd
-/usr/bin/python3 scripts/plots/hzd_plots.py results/walk_rabbit_hzd
+/usr/bin/python3 plots/hzd_plots.py results/walk_rabbit_hzd

@@ -2,7 +2,7 @@
 # The collocation study (bench/ocp_study.cpp): speed against accuracy of the OCP by
 # scheme and mesh, by derivative mode, and by initial guess, on RABBIT (Kelly 2017) and the
 # five-link default problem; then the charts and markdown tables
-# (scripts/plots/ocp_study_charts.py). Writes OUT_DIR/{collocation,derivatives,guesses}.{csv,md}
+# (plots/ocp_study_charts.py). Writes OUT_DIR/{collocation,derivatives,guesses}.{csv,md}
 # and the PNGs. About 5 minutes on a 2-core machine (307 s measured; most of it the five-link
 # limited-memory solves that run to the iteration limit and the five-link perturbed guesses),
 # so scripts/bench.sh does not run it: run it on its own.

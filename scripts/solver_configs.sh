@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # A copy of configs/ at DEST whose OCP configs (configs/ocp/*.yaml) all select the linear solver
 # SOLVER (mumps or ldl, solver.linear_solver), for measuring one solver against the other:
-# scripts/linear_solver_compare.sh, scripts/library_throughput.sh. The other folders are links,
+# scripts/library_throughput.sh. The other folders are links,
 # library/ a copy, so every relative path of a config still resolves; configs/ is not written.
 # Usage: scripts/solver_configs.sh DEST SOLVER
 set -euo pipefail

@@ -34,7 +34,7 @@ void runCompare(const CompareOptions& o) {
     if (status == report::kScriptInputError)  // a malformed folder; the script named the file
       throw io::CommandError(io::kExitInputError, "");
     if (status != 0)
-      throw std::runtime_error("compare: scripts/plots/compare_gaits.py failed (see above)");
+      throw std::runtime_error("compare: plots/compare_gaits.py failed (see above)");
   });
   fmt::print("compare: wrote {}/comparison.md and the overlays\n", out.path());
 }

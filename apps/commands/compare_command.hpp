@@ -5,7 +5,7 @@
 /// the hip searched for the foot, or optimal; energy, cost of transport, torque-squared integral,
 /// peak torque per joint, min normal force, max friction ratio, ZMP margin, impact energy loss,
 /// step length, speed; each against A) and the PNGs overlay joint angles, torques, ground forces
-/// and ZMP. Drawn by scripts/plots/compare_gaits.py.
+/// and ZMP. Drawn by plots/compare_gaits.py.
 #include <string>
 #include <vector>
 

@@ -3,7 +3,7 @@
 /// `gaitopt report DIR [--robot FILE] [--out FILE] [--no-gif]`: one self-contained HTML page of a
 /// result folder (gait, walk, library or stability): the gait as an animated stick figure (play,
 /// pause, a time slider, the phases along it), the summary, the folder's tables and its charts
-/// inlined. Written to DIR/report.html; a walk also gets walk.gif (scripts/plots/walk_gif.py).
+/// inlined. Written to DIR/report.html; a walk also gets walk.gif (plots/walk_gif.py).
 #include <string>
 
 #include <CLI/CLI.hpp>

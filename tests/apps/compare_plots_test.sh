@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Checks of scripts/plots/compare_gaits.py on two small made-up gait result folders (five links; A with
+# Checks of plots/compare_gaits.py on two small made-up gait result folders (five links; A with
 # DSP rows, B without): the markdown table (a known row, B/A left empty for a tiny A and for
 # differing signs), the OUT.md mode, the OUT_DIR mode (the files it prints and writes), and
 # "error: <file>: ..." with exit code 65 (EX_DATAERR) for a missing folder, file, column and key.
@@ -7,7 +7,7 @@
 # Usage: compare_plots_test.sh <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" root "$@"  # PY, TMP (removed on exit), fail
-SCRIPT="$ROOT/scripts/plots/compare_gaits.py"
+SCRIPT="$ROOT/plots/compare_gaits.py"
 "$PY" -c "import matplotlib, numpy" 2>/dev/null || skip "no matplotlib/numpy"
 
 # Runs compare_gaits.py with the given arguments, keeping stdout, stderr and the exit code.

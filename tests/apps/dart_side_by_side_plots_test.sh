@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# scripts/plots/dart_side_by_side_chart.py on a made-up study: a gait that falls at nominal on
+# plots/dart_side_by_side_chart.py on a made-up study: a gait that falls at nominal on
 # every ground, one that walks the rigid ground at a single push and mass but falls in DART, and
 # one that walks everywhere; the picture at plot_style's size, and "error: <file>: ..." for a
 # missing walks.csv, a missing column and a steps cell that is not a number.
@@ -8,7 +8,7 @@
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" root "$@"  # PY, TMP (removed on exit), fail
 "$PY" -c "import matplotlib, numpy, PIL" 2>/dev/null || skip "no matplotlib/numpy/Pillow"
-chart="$ROOT/scripts/plots/dart_side_by_side_chart.py"
+chart="$ROOT/plots/dart_side_by_side_chart.py"
 out="$TMP/study"
 mkdir -p "$out"
 cat >"$out/walks.csv" <<'CSV'
@@ -37,7 +37,7 @@ png="$out/side_by_side.png"
 "$PY" "$chart" "$out" >"$TMP/printed" || fail "exit $? on a good study"
 [[ "$(cat "$TMP/printed")" == "$png" ]] || fail "printed: $(cat "$TMP/printed")"
 [[ -s $png ]] || fail "side_by_side.png empty"
-"$PY" - "$ROOT/scripts/plots" "$png" <<'PY' || fail "side_by_side.png size"
+"$PY" - "$ROOT/plots" "$png" <<'PY' || fail "side_by_side.png size"
 import sys
 sys.path.insert(0, sys.argv[1])
 from PIL import Image

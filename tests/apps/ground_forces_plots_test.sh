@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# scripts/plots/ground_forces_chart.py on two made-up walks: a smooth force and one that chatters
+# plots/ground_forces_chart.py on two made-up walks: a smooth force and one that chatters
 # with a spike; the table's figures (peak force, peak force rate, reversals per second) against
 # hand counts, the picture, and "error: <file>: ..." with exit code 1 for a walk without its log.
 # Needs Debian's python3-matplotlib; skips (ctest: skipped) without it.
@@ -7,7 +7,7 @@
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" root "$@"  # PY, TMP (removed on exit), fail
 "$PY" -c "import matplotlib, numpy" 2>/dev/null || skip "no matplotlib/numpy"
-chart="$ROOT/scripts/plots/ground_forces_chart.py"
+chart="$ROOT/plots/ground_forces_chart.py"
 # walk NAME KIND: 1 s at 1 kHz; B carries 300 N, E from 0.5 s on: smooth (a ramp to 100 N over
 # 100 ms) or chattering (a 500 N spike, then 100 N +- 20 N alternating every sample for 10 ms).
 walk() {

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Checks of scripts/plots/library_plots.py on small made-up library folders: the picture for a
+# Checks of plots/library_plots.py on small made-up library folders: the picture for a
 # 3 x 2 x 1 grid with a failed point (two panels), for a 2 x 1 x 3 grid (CoT vs slope), for an
 # empty index, and "error: <file>: ..." with exit code 2 for a missing folder, a missing or
 # malformed index.json and a point off the grid.
@@ -7,7 +7,7 @@
 # Usage: library_plots_test.sh <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" root "$@"  # PY, TMP (removed on exit), fail
-SCRIPT="$ROOT/scripts/plots/library_plots.py"
+SCRIPT="$ROOT/plots/library_plots.py"
 "$PY" -c "import matplotlib, numpy" 2>/dev/null || skip "no matplotlib/numpy"
 
 plot() {

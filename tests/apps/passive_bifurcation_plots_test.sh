@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# scripts/plots/passive_bifurcation_chart.py on a made-up diagram: a period-1 branch whose
+# plots/passive_bifurcation_chart.py on a made-up diagram: a period-1 branch whose
 # multiplier crosses -1, a period-2 branch beyond it and a walk's steps; the picture, and
 # "error: <file>: ..." with exit code 1 for a missing orbit file and a branch without a
 # period-1 gait.
@@ -8,7 +8,7 @@
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" root "$@"  # PY, TMP (removed on exit), fail
 "$PY" -c "import matplotlib, numpy" 2>/dev/null || skip "no matplotlib/numpy"
-chart="$ROOT/scripts/plots/passive_bifurcation_chart.py"
+chart="$ROOT/plots/passive_bifurcation_chart.py"
 out="$TMP/diagram"
 mkdir -p "$out"
 {

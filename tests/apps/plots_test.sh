@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Checks of scripts/plots/walk_plots.py, stability_plots.py and gait_plots.py on small made-up
+# Checks of plots/walk_plots.py, stability_plots.py and gait_plots.py on small made-up
 # result folders: the pictures they print, and "error: <file>: ..." with exit code 1 for broken
 # inputs. Also checks that gait_plots.py, compare_gaits.py (exit 65, EX_DATAERR) and impact_map.py
 # report broken inputs through plot_io the same way.
@@ -7,7 +7,7 @@
 # Usage: plots_test.sh <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" root "$@"  # PY, TMP (removed on exit), fail
-PLOTS="$ROOT/scripts/plots"
+PLOTS="$ROOT/plots"
 "$PY" -c "import matplotlib, numpy" 2>/dev/null || skip "no matplotlib/numpy"
 
 # Runs a plotting script on a folder, keeping stdout, stderr and the exit code.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# scripts/plots/strike_study_chart.py on a made-up study folder: a lands-at-rest variant swept by
+# plots/strike_study_chart.py on a made-up `gaitopt study` folder: a lands-at-rest variant swept by
 # one controller (walks 0 .. 0.5 N s, fails at nominal under mass error, the failure read from
 # its sweep CSV), a strike variant whose solve failed; the table's rows, the CSV's failures and
 # the picture, and "error: <file>: ..." for a broken summary.
@@ -8,14 +8,20 @@
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" root "$@"  # PY, TMP (removed on exit), fail
 "$PY" -c "import matplotlib, numpy" 2>/dev/null || skip "no matplotlib/numpy"
-chart="$ROOT/scripts/plots/strike_study_chart.py"
+chart="$ROOT/plots/strike_study_chart.py"
 work="$TMP/work"
-mkdir -p "$work/v0_f0.15_z0.06" "$work/v0_f0.15_z0.06_computed_torque"
-touch "$work/v0_f0.15_z0.06.yaml" "$work/v0.1_f0.3_z0.yaml" "$work/notes.yaml"
-cat >"$work/v0_f0.15_z0.06/summary.json" <<'JSON'
+rest=mu2004_walk_friction_margin=0.15_zmp_margin=0.06_strike_velocity=0
+swept="$work/stability/$rest/0_computed_torque"
+mkdir -p "$work/runs/$rest" "$swept"
+# The study's solves.csv (configs/studies/strike_study.yaml's axes), the failed strike variant
+# listed first to check the rows come out sorted by strike, then margins.
+printf '%s\n' "gait,friction_margin,zmp_margin,strike_velocity,status,cost,folder" \
+  "mu2004_walk,0.3,0,0.1,Maximum_Iterations_Exceeded,900,failed_strike" \
+  "mu2004_walk,0.15,0.06,0,Solve_Succeeded,133.14,$rest" >"$work/solves.csv"
+cat >"$work/runs/$rest/summary.json" <<'JSON'
 {"status": "Solve_Succeeded", "cost": 133.14, "min_zmp_margin": 0.06, "max_friction_ratio": 0.45}
 JSON
-cat >"$work/v0_f0.15_z0.06_computed_torque/summary.json" <<'JSON'
+cat >"$swept/summary.json" <<'JSON'
 {"sweeps": {
   "push": {"walks_from": 0.0, "walks_to": 0.5,
            "fails_below": {"value": -0.25, "failure": "step 2: foot rotation"},
@@ -23,7 +29,7 @@ cat >"$work/v0_f0.15_z0.06_computed_torque/summary.json" <<'JSON'
   "mass_error": {"nominal": 0.0, "walks_from": null, "walks_to": null}}}
 JSON
 printf '%s\n' "value,steps_completed,failure" "-0.025,0,step 1: fall" "0,0,step 1: foot rotation" \
-  >"$work/v0_f0.15_z0.06_computed_torque/sweep_mass_error.csv"
+  >"$swept/sweep_mass_error.csv"
 
 "$PY" "$chart" "$work" "$TMP/out" >"$TMP/printed" || fail "exit $? on a good study"
 for ext in csv md png; do
@@ -32,6 +38,11 @@ for ext in csv md png; do
 done
 grep -qF "| 0 | 0.15 | 0.06 | 133.14 | 0 .. 0.5 | fails |" "$TMP/out/strike_study.md" ||
   fail "rest variant row: $(cat "$TMP/out/strike_study.md")"
+[[ $(sed -n 3p "$TMP/out/strike_study.md") == "| 0 |"* ]] || fail "rows not sorted by strike"
+printf '%s\n' "gait,zmp_margin,strike_velocity,folder" "mu2004_walk,0,0,x" >"$TMP/no_axis.csv"
+mkdir -p "$TMP/no_axis" && mv "$TMP/no_axis.csv" "$TMP/no_axis/solves.csv"
+"$PY" "$chart" "$TMP/no_axis" "$TMP/out2" >/dev/null 2>"$TMP/err" && fail "a study without margins passed"
+grep -q "friction_margin" "$TMP/err" || fail "missing column not named: $(cat "$TMP/err")"
 grep -qF "| 0.1 | 0.3 | 0 | solve failed |" "$TMP/out/strike_study.md" ||
   fail "failed solve row: $(cat "$TMP/out/strike_study.md")"
 grep -qF "0.75: step 3: foot rotation" "$TMP/out/strike_study.csv" || fail "failure not in csv"
@@ -39,8 +50,8 @@ grep -qF "at nominal: step 1: foot rotation" "$TMP/out/strike_study.csv" ||
   fail "nominal failure not in csv: $(cat "$TMP/out/strike_study.csv")"
 
 echo '{"cost": "high", "min_zmp_margin": 0.06, "max_friction_ratio": null}' \
-  >"$work/v0_f0.15_z0.06/summary.json"
+  >"$work/runs/$rest/summary.json"
 "$PY" "$chart" "$work" "$TMP/out" >/dev/null 2>"$TMP/err" && fail "a broken summary passed"
-grep -q "^error: $work/v0_f0.15_z0.06/summary.json: key 'cost': expected a number" "$TMP/err" ||
+grep -qF "error: $work/runs/$rest/summary.json: key 'cost': expected a number" "$TMP/err" ||
   fail "stderr: $(cat "$TMP/err")"
 echo "strike study chart: table, picture and a broken summary named"

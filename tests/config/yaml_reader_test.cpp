@@ -94,6 +94,33 @@ TEST(YamlReaderOverrides, ReplaceNestedListAndNewValuesBeforeTheChecks) {
   EXPECT_NE(message.find("expected a number in [0, 1] [m], got 5"), std::string::npos) << message;
 }
 
+TEST(YamlReaderOverrides, NullRemovesAKeySoItsDefaultApplies) {
+  const std::string path = writeYaml("sets_null.yaml", "a: 1\nm: {x: 2, y: 3}\nl: [1, 2]\n");
+  const YamlReader r = withSets(path, {"a=null", "m.y=~", "absent.k=null"});
+  EXPECT_FALSE(r.has("a"));
+  EXPECT_EQ(r.numberOr("a", 42, inRange(-100, 100, "")), 42);
+  EXPECT_TRUE(r.map("m").has("x"));
+  EXPECT_FALSE(r.map("m").has("y"));
+  EXPECT_FALSE(r.map("absent").has("k"));  // removing what is not there changes nothing
+  // A list item is not removed (that would renumber the rest): it becomes null.
+  EXPECT_EQ(errorOf([&] {
+              withSets(path, {"l[0]=null"}).numbers("l", inRange(0, 9, ""));
+            }).find("l[0]") != std::string::npos,
+            true);
+}
+
+// The items of a list as one line of YAML each, as a study passes them on as --set values.
+TEST(YamlReader, YamlTextsOfAListAndOfOneValue) {
+  const std::string path =
+      writeYaml("texts.yaml", "v: [1, word, [0.05, 0.06], {a: 1, b: [2]}]\nm: {x: 2}\n");
+  const YamlReader r = YamlReader::fromFile(path);
+  EXPECT_EQ(r.yamlTexts("v"),
+            (std::vector<std::string>{"1", "word", "[0.05, 0.06]", "{a: 1, b: [2]}"}));
+  EXPECT_EQ(r.yamlText("m"), "{x: 2}");
+  EXPECT_NE(errorOf([&] { r.yamlTexts("m"); }).find("expected a non-empty list"),
+            std::string::npos);
+}
+
 TEST(YamlReaderOverrides, PathsThatDoNotFitAreErrorsNamingSet) {
   const std::string path = writeYaml("sets_bad.yaml", "a: 1\nl:\n  - {n: 3}\n");
   for (const auto& [set, why] :

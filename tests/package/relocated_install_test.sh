@@ -19,7 +19,7 @@ cmake --install "$BUILD" --prefix "$TMP/prefix" >"$TMP/install.log" 2>&1 ||
   fail "cmake --install: $(tail -5 "$TMP/install.log")"
 mv "$TMP/prefix" "$TMP/moved"
 for f in share/gaitopt/configs/ocp/rabbit_kelly2017.yaml share/gaitopt/configs/grounds/rigid.yaml \
-         share/gaitopt/scripts/plots/gait_plots.py; do
+         share/gaitopt/plots/gait_plots.py; do
   [[ -f "$TMP/moved/$f" ]] || fail "not installed: $f"
 done
 mkdir "$TMP/work"

@@ -1,4 +1,4 @@
-"""Input checks shared by the plotting scripts in scripts/plots/.
+"""Input checks shared by the plotting scripts in plots/.
 
 Every problem with an input file is an InputError whose message starts with the file's path and
 says what is wrong; run_main turns it into "error: <message>" on stderr and exit code 1.
@@ -314,12 +314,13 @@ def panel_figure(draw, data, title, figsize, fontsize=9):
 # Entry point
 
 
-def run_main(main, usage):
-    """Calls main(RESULT_DIR) from the command line; usage (the script's docstring) when the
-    arguments are wrong, "error: <message>" and exit code 1 on an InputError."""
-    if len(sys.argv) != 2:
+def run_main(main, usage, arguments=1):
+    """Calls main(ARG, ...) with the command line's `arguments` arguments (a result folder, ...);
+    usage (the script's docstring) when there are not as many, "error: <message>" and exit code
+    1 on an InputError."""
+    if len(sys.argv) != 1 + arguments:
         sys.exit(usage)
     try:
-        main(sys.argv[1])
+        main(*sys.argv[1:])
     except InputError as e:
         sys.exit(f"error: {e}")

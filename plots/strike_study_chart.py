@@ -1,11 +1,12 @@
 #!/usr/bin/python3
-"""Cost against robustness of the strike study (scripts/strike_study.sh).
+"""Cost against robustness of the strike study (configs/studies/strike_study.yaml).
 
-Usage: strike_study_chart.py RUNS_DIR OUT_DIR
-RUNS_DIR holds one gait folder per variant, named v<V>_f<FRICTION_MARGIN>_z<ZMP_MARGIN>
-(summary.json of `gaitopt optimize`; none after a failed solve), and one
-`gaitopt stability` folder per variant and controller, NAME_<controller>/summary.json with the
-push and mass_error sweeps. Writes, printing their paths:
+Usage: strike_study_chart.py STUDY_DIR OUT_DIR
+STUDY_DIR is the folder `gaitopt study` wrote: solves.csv (one row per variant: the
+friction_margin, zmp_margin and strike_velocity labels and the run's folder), runs/FOLDER
+(summary.json of `gaitopt optimize`; none after a failed solve) and one `gaitopt stability`
+folder per variant and controller, stability/FOLDER/0_<controller>/summary.json with the push
+and mass_error sweeps. Writes, printing their paths:
   OUT_DIR/strike_study.csv  one row per variant and controller: strike velocity, margins, cost,
                             the optimum's ZMP margin and friction ratio, the walking intervals
                             (empty when the walk fails at nominal) and the failures beside them
@@ -18,14 +19,13 @@ A missing or malformed summary ends the script with "error: <file>: ..." and exi
 """
 import csv
 import os
-import re
 import sys
 
 import plot_io
 import plot_style as style
 from plot_io import InputError
 
-NAME = re.compile(r"^v([0-9.]+)_f([0-9.]+)_z([0-9.]+)$")
+AXES = ["strike_velocity", "friction_margin", "zmp_margin"]
 CONTROLLERS = ["computed_torque", "sliding_mode", "mu_sliding_mode"]
 # Sweep name in summary.json: (column prefix, scale to the table's unit, unit).
 SWEEPS = {"push": ("push", 1.0, "N s"), "mass_error": ("mass", 100.0, "%")}
@@ -63,12 +63,13 @@ def sweep_cells(path, s, sweep):
     return scale(w.get("walks_from")), scale(w.get("walks_to")), "; ".join(fails)
 
 
-def variant_rows(work, name, match):
+def variant_rows(study, variant):
     """The CSV rows of one variant: one per controller swept, one without controller when the
     solve failed."""
-    row = {"variant": name, "strike_velocity": float(match[1]),
-           "friction_margin": float(match[2]), "zmp_margin": float(match[3])}
-    gait = os.path.join(work, name, "summary.json")
+    name = variant["folder"]
+    v, f, z = (variant[axis] for axis in AXES)
+    row = {"variant": f"v{v:g}_f{f:g}_z{z:g}", **{axis: variant[axis] for axis in AXES}}
+    gait = os.path.join(study, "runs", name, "summary.json")
     if not os.path.exists(gait):
         return [dict(row, status="solve failed")]
     g = plot_io.read_json(gait)
@@ -79,7 +80,7 @@ def variant_rows(work, name, match):
                max_friction_ratio=g["max_friction_ratio"])
     rows = []
     for c in CONTROLLERS:
-        path = os.path.join(work, f"{name}_{c}", "summary.json")
+        path = os.path.join(study, "stability", name, f"0_{c}", "summary.json")
         if not os.path.exists(path):
             continue
         s = plot_io.read_json(path)
@@ -90,14 +91,20 @@ def variant_rows(work, name, match):
     return rows
 
 
-def read_study(work):
+def read_study(study):
     """Every variant's rows, by strike velocity, friction margin, ZMP margin."""
-    names = sorted((m for m in (NAME.match(os.path.splitext(f)[0]) for f in os.listdir(work)
-                                if f.endswith(".yaml")) if m),
-                   key=lambda m: tuple(float(m[i]) for i in (1, 2, 3)))
-    if not names:
-        raise InputError(f"{work}: no variant configs v<V>_f<F>_z<Z>.yaml")
-    return [r for m in names for r in variant_rows(work, m[0], m)]
+    path = os.path.join(study, "solves.csv")
+    header, rows = plot_io.read_rows(path, "study solve table")
+    plot_io.require_columns(path, header, [*AXES, "folder"])
+    variants = []
+    for line, r in enumerate(rows, start=2):
+        v = dict(zip(header, r))
+        try:
+            variants.append({**v, **{axis: float(v[axis]) for axis in AXES}})
+        except ValueError as e:
+            raise InputError(f"{path}: line {line}: {e}") from None
+    variants.sort(key=lambda v: tuple(v[axis] for axis in AXES))
+    return [r for v in variants for r in variant_rows(study, v)]
 
 
 def width(r, column):

@@ -1,10 +1,12 @@
 #!/usr/bin/python3
-"""The cost-robustness front of the gait designed with model variants (scripts/ensemble_front.sh).
+"""The cost-robustness front of the gait designed with model variants
+(configs/studies/ensemble_front.yaml).
 
-Usage: ensemble_front_chart.py OUT_DIR
-OUT_DIR holds solves.csv (width_percent, "default" for the default optimum or an ensemble width W
-[%], then converged, cost and the posture in degrees) and walks.csv (width_percent, ground,
-controller, plant_mass, steps, ...; scripts/walk_row.py). Writes, printing their paths:
+Usage: ensemble_front_chart.py STUDY_DIR DEFAULT_GAIT_DIR
+STUDY_DIR is the folder `gaitopt study` wrote: solves.csv (width_percent, the ensemble width W
+[%], then converged, cost and the posture in degrees) and walks.csv (width_percent, walk: the
+ground, controller, plant: the mass error, steps, ...); DEFAULT_GAIT_DIR holds the default
+optimum (summary.json's cost). Writes into STUDY_DIR, printing their paths:
   OUT_DIR/front.csv  one row per width: convergence, cost, its ratio to the default optimum's,
                      posture (degrees) and, per ground and controller, the plant-mass interval
                      walked 20 steps without a gap around the nominal (empty when the nominal fails)
@@ -22,6 +24,7 @@ from plot_io import InputError
 GROUNDS = ["rigid", "lcp", "dart"]
 CONTROLLERS = {"computed_torque": "computed torque", "mu_sliding_mode": "Mu's sliding mode"}
 POSTURE = ["max_torso_lean", "max_stance_knee_flexion", "max_swing_knee_flexion"]
+WALK_COLUMNS = ["width_percent", "walk", "controller", "plant", "steps"]
 
 
 def interval(walks):
@@ -40,38 +43,42 @@ def interval(walks):
 def read_walks(path):
     """{(width, ground, controller): {plant mass: steps}}"""
     header, rows = plot_io.read_rows(path, "walk table")
-    plot_io.require_columns(path, header, ["width_percent", "ground", "controller", "plant_mass",
-                                           "steps"])
+    plot_io.require_columns(path, header, WALK_COLUMNS)
     col = {name: header.index(name) for name in header}
     walks = {}
     for line, row in enumerate(rows, start=2):
         try:
-            key = (int(row[col["width_percent"]]), row[col["ground"]], row[col["controller"]])
-            walks.setdefault(key, {})[float(row[col["plant_mass"]])] = int(row[col["steps"]])
+            key = (int(row[col["width_percent"]]), row[col["walk"]], row[col["controller"]])
+            mass = round(1 + float(row[col["plant"]]), 6)
+            walks.setdefault(key, {})[mass] = int(row[col["steps"]] or 0)
         except (ValueError, IndexError) as e:
             raise InputError(f"{path}: line {line}: {e}") from None
     return walks
 
 
 def read_solves(path):
-    """(default optimum's cost, {width: {converged, cost, posture...}})"""
-    header, rows = plot_io.read_rows(path, "solve table", min_rows=2)
-    plot_io.require_columns(path, header, ["width_percent", "converged", "cost", *POSTURE])
+    """{width: {converged, cost, posture...}}"""
+    header, rows = plot_io.read_rows(path, "solve table")
+    posture = [f"{k}_deg" for k in POSTURE]
+    plot_io.require_columns(path, header, ["width_percent", "converged", "cost", *posture])
     col = {name: header.index(name) for name in header}
-    default, widths = None, {}
+    widths = {}
     for line, row in enumerate(rows, start=2):
         try:
             s = {"converged": row[col["converged"]] == "1", "cost": float(row[col["cost"]])}
-            s.update({k: float(row[col[k]]) if row[col[k]] else None for k in POSTURE})
-            if row[col["width_percent"]] == "default":
-                default = s["cost"]
-            else:
-                widths[int(row[col["width_percent"]])] = s
+            s.update({k: float(row[col[f"{k}_deg"]]) if row[col[f"{k}_deg"]] else None
+                      for k in POSTURE})
+            widths[int(row[col["width_percent"]])] = s
         except (ValueError, IndexError) as e:
             raise InputError(f"{path}: line {line}: {e}") from None
-    if default is None:
-        raise InputError(f"{path}: no row of the default optimum (width_percent 'default')")
-    return default, dict(sorted(widths.items()))
+    return dict(sorted(widths.items()))
+
+
+def default_cost(folder):
+    path = os.path.join(folder, "summary.json")
+    summary = plot_io.read_json(path)
+    plot_io.require_numbers(path, summary, ["cost"])
+    return summary["cost"]
 
 
 def rows_of(widths, walks, default_cost):
@@ -137,9 +144,9 @@ def draw(rows, path):
     style.save(fig, path)
 
 
-def main(out):
-    default, widths = read_solves(os.path.join(out, "solves.csv"))
-    rows = rows_of(widths, read_walks(os.path.join(out, "walks.csv")), default)
+def main(out, default_gait):
+    widths = read_solves(os.path.join(out, "solves.csv"))
+    rows = rows_of(widths, read_walks(os.path.join(out, "walks.csv")), default_cost(default_gait))
     write_tables(rows, out)
     draw(rows, os.path.join(out, "front.png"))
     for name in ("front.csv", "front.md", "front.png"):
@@ -147,4 +154,4 @@ def main(out):
 
 
 if __name__ == "__main__":
-    plot_io.run_main(main, __doc__)
+    plot_io.run_main(main, __doc__, arguments=2)

@@ -1,4 +1,4 @@
-"""The look every picture of scripts/plots/ shares: backend, font sizes, resolution, colours.
+"""The look every picture of plots/ shares: backend, font sizes, resolution, colours.
 
 A script calls pyplot() (once its input is checked, if importing matplotlib first would slow a
 failure down) and draws with the colours named here, so a tip, a phase or a failure looks the

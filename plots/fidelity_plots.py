@@ -4,7 +4,7 @@ joint torque and solve time of the five-link robot and its three-link and compas
 reductions against walking speed, and each reduction's ratio to the five-link value (the band
 of +-10 % marks where a small model answers within 10 %). A failed solve is a missing point.
 
-Usage: scripts/plots/fidelity_plots.py RESULT_DIR   (reads DIR/fidelity.csv, writes DIR/fidelity.png)
+Usage: plots/fidelity_plots.py RESULT_DIR   (reads DIR/fidelity.csv, writes DIR/fidelity.png)
 """
 import os
 

@@ -1,0 +1,56 @@
+#include "apps/study_commands/study_command.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "apps/command_runner.hpp"
+#include "config/overrides.hpp"
+#include "io/output/output_folder.hpp"
+#include "study/study_run.hpp"
+
+namespace gaitopt::apps {
+
+void runStudyCommand(const StudyOptions& o) {
+  const study::StudyConfig config =
+      study::loadStudyConfig(o.config_path, config::parseOverrides(o.sets));
+  std::vector<std::string> inputs = config.gaits;
+  for (const auto& poly : config.polynomial_gaits)
+    inputs.insert(inputs.end(), {poly.gait, poly.robot});
+  inputs.push_back(o.config_path);
+  const io::ResumableFolder folder(o.out_dir, inputs);
+  study::StudyTools tools{std::filesystem::read_symlink("/proc/self/exe").string(), {}};
+  if (!o.quiet)
+    tools.progress = [](const std::string& what) {
+      fmt::print("study: {}\n", what);
+      std::fflush(stdout);  // a line per run also when stdout is a file
+    };
+  const study::StudyCounts n = study::runStudy(config, folder.path(), tools);
+  fmt::print("study: {}: {} of {} solves converged, {} walks, {} sweeps; wrote {}/solves.csv{}\n",
+             config.name, n.converged, n.points, n.walks, n.sweeps, folder.path(),
+             config.walks.empty() ? "" : ", walks.csv");
+}
+
+void registerStudyCommand(CLI::App& app) {
+  auto options = std::make_shared<StudyOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "study", "Solve configs over combinations of config values, walk and sweep each optimum");
+  cmd->add_option("--config", options->config_path, "Study YAML (configs/studies/*.yaml)")
+      ->required()
+      ->option_text("FILE");
+  cmd->add_option("--out", options->out_dir, "Study folder (created; reruns resume in it)")
+      ->required()
+      ->option_text("DIR");
+  cmd->add_option("--set", options->sets, "Replace one value of the study config (repeatable)")
+      ->option_text("KEY=VALUE");
+  cmd->add_flag("--quiet", options->quiet, "No line per run");
+  cmd->footer(
+      "Each run is a gaitopt child process writing its own folder under DIR (runs/, walks/, "
+      "stability/, its output in FOLDER.log); DIR/solves.csv, by_axis.md, walks.csv and "
+      "stability.csv tabulate them. A failed solve is a row, not an error.");
+  cmd->callback([options] { runSubcommand([&] { runStudyCommand(*options); }); });
+}
+
+}  // namespace gaitopt::apps

@@ -1,0 +1,169 @@
+#include "study/study_config.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "config/yaml_reader.hpp"
+#include "ocp/problem/ocp_config.hpp"
+#include "sim/controllers/controller_registry.hpp"
+
+namespace gaitopt::study {
+namespace {
+
+using config::YamlReader;
+namespace fs = std::filesystem;
+
+/// The scenario options of `gaitopt simulate` and `gaitopt stability` a study may set.
+const std::vector<std::string> kScenarioOptions = {
+    "ground",     "cop-limit",    "steps",    "robot",      "uncertainty-on", "uncertainty-case",
+    "mass-error", "length-error", "friction", "gain-scale", "max-slip",       "restitution"};
+
+std::string relativeTo(const std::string& file, const std::string& path) {
+  return (fs::path(file).parent_path() / path).lexically_normal().string();
+}
+
+/// A label is a folder-name part: letters, digits and . _ + - only.
+bool plainLabel(const std::string& text) {
+  return !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 ||
+           std::string("._+-").find(c) != std::string::npos;
+  });
+}
+
+/// "phases[0].segments" is "segments".
+std::string columnName(const std::string& key) {
+  const std::string last = key.substr(key.find_last_of('.') + 1);
+  return last.substr(0, last.find('['));
+}
+
+/// `key: K, values: [...]`: one key, each value its YAML text, labelled by itself by default.
+StudyAxis keyAxis(const YamlReader& r) {
+  const std::string key = r.string("key");
+  StudyAxis axis{r.stringOr("name", columnName(key)), {}, {}};
+  for (const std::string& value : r.yamlTexts("values")) {
+    axis.values.push_back({{key, value}});
+    axis.labels.push_back(value);
+  }
+  return axis;
+}
+
+/// `name: N, values: [{K: V, ...}, ...], labels: [...]`: several keys set together per value.
+StudyAxis setsAxis(const YamlReader& r) {
+  StudyAxis axis{r.string("name"), {}, {}};
+  for (const YamlReader& item : r.list("values")) {
+    std::vector<config::Override> sets;
+    for (const std::string& key : item.keys()) sets.push_back({key, item.yamlText(key)});
+    axis.values.push_back(std::move(sets));
+  }
+  if (!r.has("labels")) r.fail("labels", "an axis of several keys needs a label per value");
+  return axis;
+}
+
+/// Every value loads with every gait (with the study's sets) as `--set` would load it.
+void checkValues(const YamlReader& r, const StudyAxis& axis, const std::vector<std::string>& gaits,
+                 const std::vector<config::Override>& sets) {
+  for (std::size_t i = 0; i < axis.values.size(); ++i) {
+    if (!plainLabel(axis.labels[i]))
+      r.fail(r.has("labels") ? "labels" : "values",
+             fmt::format("'{}' cannot name a folder: give labels of letters, digits and . _ + -",
+                         axis.labels[i]));
+    std::vector<config::Override> with = sets;
+    with.insert(with.end(), axis.values[i].begin(), axis.values[i].end());
+    for (const std::string& gait : gaits) try {
+        ocp::loadOcpConfig(gait, with);
+      } catch (const config::ConfigError& e) {
+        r.fail("values", fmt::format("{} refuses '{}': {}", gait, axis.labels[i], e.what()));
+      }
+  }
+}
+
+StudyAxis readAxis(const YamlReader& r, const std::vector<std::string>& gaits,
+                   const std::vector<config::Override>& sets) {
+  r.allowOnly({"key", "name", "values", "labels"});
+  StudyAxis axis = r.has("key") ? keyAxis(r) : setsAxis(r);
+  if (r.has("labels")) axis.labels = r.yamlTexts("labels");
+  if (axis.labels.size() != axis.values.size())
+    r.fail("labels", fmt::format("expected one label per value ({})", axis.values.size()));
+  checkValues(r, axis, gaits, sets);
+  return axis;
+}
+
+std::vector<ToolOption> readOptions(const YamlReader& r, const std::string& file) {
+  std::vector<ToolOption> options;
+  if (!r.has("options")) return options;
+  const YamlReader map = r.map("options");
+  map.allowOnly(kScenarioOptions);
+  for (const std::string& name : map.keys()) {
+    std::string value = map.string(name);
+    if (name == "robot") value = relativeTo(file, value);
+    options.push_back({name, value});
+  }
+  return options;
+}
+
+std::vector<std::string> controllers(const YamlReader& r) {
+  return r.choices("controllers", sim::controllerNames());
+}
+
+WalkBlock readWalk(const YamlReader& r) {
+  r.allowOnly({"name", "options", "controllers", "plant"});
+  WalkBlock w{r.string("name"), readOptions(r, r.file()), controllers(r), "", {}};
+  if (!plainLabel(w.name)) r.fail("name", "expected letters, digits and . _ + -");
+  const YamlReader plant = r.map("plant");
+  plant.allowOnly({"option", "values"});
+  w.plant_option = plant.choice(
+      "option", {"mass-error", "length-error", "uncertainty-case", "friction", "gain-scale"});
+  w.plant_values = plant.yamlTexts("values");
+  return w;
+}
+
+StabilityBlock readStability(const YamlReader& r) {
+  r.allowOnly({"options", "controllers", "sweeps"});
+  return {readOptions(r, r.file()), controllers(r), r.yamlTexts("sweeps")};
+}
+
+}  // namespace
+
+StudyConfig loadStudyConfig(const std::string& path,
+                            const std::vector<config::Override>& overrides) {
+  const auto root = YamlReader::fromFile(path, overrides);
+  root.allowOnly({"name", "description", "polynomial_gaits", "gaits", "set", "axes", "warm_start",
+                  "walks", "stability"});
+  StudyConfig c;
+  c.name = root.string("name");
+  root.stringOr("description", "");
+  c.path = path;
+  if (root.has("polynomial_gaits"))
+    for (const YamlReader& poly : root.list("polynomial_gaits")) {
+      poly.allowOnly({"gait", "robot"});
+      c.polynomial_gaits.push_back(
+          {relativeTo(path, poly.string("gait")), relativeTo(path, poly.string("robot"))});
+    }
+  if (root.has("gaits") || c.polynomial_gaits.empty())
+    for (const std::string& gait : root.yamlTexts("gaits"))
+      c.gaits.push_back(relativeTo(path, gait));
+  if (root.has("set")) {
+    const YamlReader set = root.map("set");
+    for (const std::string& key : set.keys()) c.sets.push_back({key, set.yamlText(key)});
+  }
+  for (const std::string& gait : c.gaits) try {
+      ocp::loadOcpConfig(gait, c.sets);
+    } catch (const config::ConfigError& e) {
+      root.fail("gaits", e.what());
+    }
+  if (root.has("axes"))
+    for (const YamlReader& axis : root.list("axes"))
+      c.axes.push_back(readAxis(axis, c.gaits, c.sets));
+  c.warm_from_previous =
+      root.has("warm_start") && root.choice("warm_start", {"none", "previous"}) == "previous";
+  if (root.has("walks"))
+    for (const YamlReader& walk : root.list("walks")) c.walks.push_back(readWalk(walk));
+  if (root.has("stability"))
+    for (const YamlReader& s : root.list("stability")) c.stability.push_back(readStability(s));
+  return c;
+}
+
+}  // namespace gaitopt::study

@@ -1,0 +1,125 @@
+#include "study/study_solve.hpp"
+
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "io/output/checked_write.hpp"
+
+namespace gaitopt::study {
+namespace fs = std::filesystem;
+namespace {
+
+using Json = nlohmann::ordered_json;
+using Pointer = nlohmann::json::json_pointer;
+
+/// `gaitopt poly` of a polynomial gait, else `gaitopt optimize` with the point's --set values.
+std::vector<std::string> solveArgs(const StudyPoint& p) {
+  if (!p.robot.empty()) return {"poly", "--robot", p.robot, "--gait", p.config};
+  std::vector<std::string> args = {"optimize", "--config", p.config, "--quiet"};
+  for (const config::Override& o : p.overrides) args.insert(args.end(), {"--set", o.text()});
+  return args;
+}
+
+/// The cost of the converged optimum (or the polynomial gait) in `dir`, or nothing.
+std::optional<double> costOf(const std::string& dir) {
+  const auto s = readSummary(dir);
+  if (!s || !s->value("converged", true)) return std::nullopt;
+  return s->at("cost").get<double>();
+}
+
+/// Moves `from` (and its log) to `to`, replacing what was there, its .failed twin and the exit
+/// status its failure recorded.
+void replaceWith(const std::string& from, const std::string& to) {
+  fs::remove_all(to);
+  fs::remove_all(to + ".failed");
+  fs::remove(to + ".exit");
+  fs::rename(from, to);
+  fs::rename(from + ".log", to + ".log");
+}
+
+/// Solves from the previous point's optimum into FOLDER.warm and keeps it when it is cheaper.
+void warmSolve(const StudyPoint& p, const StudyPoint& previous, const std::string& dir,
+               const StudyTools& t) {
+  const std::string cold = gaitFolder(p, dir), warm = cold + ".warm";
+  fs::remove_all(warm);
+  std::vector<std::string> args = solveArgs(p);
+  args.insert(args.end(), {"--warm-start", gaitFolder(previous, dir)});
+  runTool(t, args, warm, fmt::format("solve {} from {}", p.folder, previous.folder));
+  const auto cold_cost = costOf(cold), warm_cost = costOf(warm);
+  const bool keep_warm = warm_cost && (!cold_cost || *warm_cost < *cold_cost);
+  if (keep_warm) replaceWith(warm, cold);
+  fs::remove_all(warm);
+  fs::remove_all(warm + ".failed");
+  fs::remove(warm + ".log");
+  fs::remove(warm + ".exit");
+  io::writeFileAtomically(cold + ".start", keep_warm ? previous.folder : "guess");
+}
+
+}  // namespace
+
+std::string gaitFolder(const StudyPoint& point, const std::string& dir) {
+  return dir + "/runs/" + point.folder;
+}
+
+bool solved(const StudyPoint& point, const std::string& dir) {
+  return costOf(gaitFolder(point, dir)).has_value();
+}
+
+void solvePoint(const StudyConfig& c, const std::vector<StudyPoint>& points, std::size_t i,
+                const std::string& dir, const StudyTools& t) {
+  const StudyPoint& p = points[i];
+  const std::string out = gaitFolder(p, dir);
+  if (!fs::exists(out + "/summary.json") && !fs::exists(out + ".failed/summary.json"))
+    runTool(t, solveArgs(p), out, "solve " + p.folder);
+  // The .start file is written last: without it the warm solve is still to do.
+  if (c.warm_from_previous && p.previous && solved(points[*p.previous], dir) &&
+      !fs::exists(out + ".start"))
+    warmSolve(p, points[*p.previous], dir, t);
+}
+
+std::vector<std::string> solveColumns() {
+  return {"status",
+          "converged",
+          "iterations",
+          "cost",
+          "wall_time_s",
+          "factorizations",
+          "mumps_fallbacks",
+          "inertia_corrections",
+          "pivoting_factorizations",
+          "max_torso_lean_deg",
+          "max_stance_knee_flexion_deg",
+          "max_swing_knee_flexion_deg",
+          "start",
+          "folder"};
+}
+
+std::vector<std::string> solveRow(const StudyPoint& point, const std::string& dir) {
+  std::string folder = gaitFolder(point, dir);
+  if (!fs::exists(folder + "/summary.json")) folder += ".failed";
+  const auto s = readSummary(folder);
+  std::vector<std::string> row(solveColumns().size());
+  row[0] = s ? s->value("status", std::string("?")) : "no summary";
+  row.back() = point.folder;
+  if (!s) return row;
+  row[1] = s->value("converged", true) ? "1" : "0";
+  const char* at[] = {"/iterations",
+                      "/cost",
+                      "/wall_time_s",
+                      "/kkt/factorizations",
+                      "/kkt/mumps_fallbacks",
+                      "/kkt/inertia_corrections",
+                      "/kkt/pivoting_factorizations",
+                      "/posture_deg/max_torso_lean",
+                      "/posture_deg/max_stance_knee_flexion",
+                      "/posture_deg/max_swing_knee_flexion"};
+  for (std::size_t k = 0; k < std::size(at); ++k) row[2 + k] = numberText(*s, Pointer(at[k]));
+  std::ifstream start(gaitFolder(point, dir) + ".start");
+  std::string& from = row[row.size() - 2];
+  if (!std::getline(start, from)) from = "guess";
+  return row;
+}
+
+}  // namespace gaitopt::study
