@@ -1,0 +1,146 @@
+// The study's pieces without running a solve: a config's points (every combination, the last
+// axis fastest, several keys set together, the previous point of a warm start), the CSV quoting,
+// the per-axis summary (convergence counts, medians, MUMPS's share, spread within one gait) and
+// the walk table with a column per plant; and configs refused with the key and why.
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "config/config_error.hpp"
+#include "study/axis_summary.hpp"
+#include "study/study_config.hpp"
+#include "study/study_points.hpp"
+#include "study/study_table.hpp"
+#include "study/walk_pivot.hpp"
+
+namespace gaitopt::study {
+namespace {
+
+const std::string kOcp = std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/";
+
+std::string writeStudy(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string errorOf(const std::function<void()>& load) {
+  try {
+    load();
+  } catch (const config::ConfigError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(StudyPoints, EveryCombinationTheLastAxisFastestWithTheSetsFirst) {
+  const StudyConfig c = loadStudyConfig(writeStudy(
+      "points.yaml", "name: p\ngaits: [" + kOcp + "mu2004_walk.yaml, " + kOcp +
+                         "rabbit_kelly2017.yaml]\nset: {solver.tolerance: 1.0e-6}\naxes:\n"
+                         "  - {key: \"phases[0].segments\", values: [24, 30]}\n"
+                         "  - name: solver\n"
+                         "    values: [{solver.linear_solver: mumps, solver.mumps_pivot_order: 7},"
+                         " {solver.linear_solver: ldl}]\n"
+                         "    labels: [mumps-auto, ldl]\nwarm_start: previous\n"));
+  const std::vector<StudyPoint> points = studyPoints(c);
+  ASSERT_EQ(points.size(), 8u);
+  EXPECT_EQ(points[0].folder, "mu2004_walk_segments=24_solver=mumps-auto");
+  EXPECT_EQ(points[1].folder, "mu2004_walk_segments=24_solver=ldl");
+  EXPECT_EQ(points[2].folder, "mu2004_walk_segments=30_solver=mumps-auto");
+  EXPECT_EQ(points[4].gait, "rabbit_kelly2017");
+  // The study's set, then the axes' values in order: two keys for the first solver.
+  std::vector<std::string> texts;
+  for (const auto& o : points[0].overrides) texts.push_back(o.text());
+  EXPECT_EQ(texts,
+            (std::vector<std::string>{"solver.tolerance=1.0e-6", "phases[0].segments=24",
+                                      "solver.linear_solver=mumps", "solver.mumps_pivot_order=7"}));
+  // The previous point on the last axis: none at its first value, nor across gaits.
+  EXPECT_FALSE(points[0].previous);
+  EXPECT_EQ(points[1].previous, 0u);
+  EXPECT_FALSE(points[2].previous);
+  EXPECT_EQ(points[3].previous, 2u);
+  EXPECT_FALSE(points[4].previous);
+}
+
+TEST(StudyConfig, RefusedWithTheKeyAndWhy) {
+  const std::string gait = "gaits: [" + kOcp + "mu2004_walk.yaml]\n";
+  for (const auto& [yaml, why] : std::vector<std::pair<std::string, std::string>>{
+           {"axes: [{name: s, values: [{solver.linear_solver: ldl}]}]", "a label per value"},
+           {"axes: [{key: constraints.zmp_margin, values: [0.01, 0.02], labels: [a]}]",
+            "one label per value"},
+           {"axes: [{key: constraints.zmp_margin, values: [banana]}]", "refuses 'banana'"},
+           {"axes: [{key: constraints.no_such_key, values: [1]}]", "no_such_key"},
+           {"warm_start: always", "expected one of none, previous"},
+           {"stability: [{controllers: [computed_torque]}]", "sweeps"},
+           {"walks: [{name: a b, controllers: [computed_torque], plant: {option: mass-error, "
+            "values: [0]}}]",
+            "letters, digits"},
+           {"walks: [{name: w, controllers: [computed_torque], plant: {option: push, values: "
+            "[0]}}]",
+            "expected one of mass-error"}}) {
+    const std::string message =
+        errorOf([&] { loadStudyConfig(writeStudy("bad.yaml", "name: b\n" + gait + yaml + "\n")); });
+    EXPECT_NE(message.find(why), std::string::npos) << yaml << ": " << message;
+  }
+}
+
+TEST(StudyTable, CsvQuotesWhatWouldSplitAFieldAndMarkdownEscapesBars) {
+  const Table t{{"a", "b"}, {{"x, y", "say \"hi\""}, {"p|q", "line\nbreak"}}};
+  const std::string csv = ::testing::TempDir() + "t.csv", md = ::testing::TempDir() + "t.md";
+  writeCsv(t, csv);
+  writeMarkdown(t, md);
+  EXPECT_EQ(readFile(csv), "a,b\n\"x, y\",\"say \"\"hi\"\"\"\np|q,\"line\nbreak\"\n");
+  EXPECT_EQ(readFile(md), "| a | b |\n|---|---|\n| x, y | say \"hi\" |\n| p\\|q | line break |\n");
+}
+
+TEST(AxisSummary, CountsMediansMumpsShareAndTheSpreadWithinOneGait) {
+  StudyConfig c;
+  c.axes.push_back({"solver", {{}, {}}, {"mumps", "ldl"}});
+  Table solves{{"gait", "solver", "converged", "iterations", "cost", "wall_time_s",
+                "factorizations", "mumps_fallbacks"},
+               {{"a", "mumps", "1", "10", "100", "1", "10", "0"},
+                {"a", "ldl", "1", "20", "102", "3", "30", "3"},
+                {"b", "mumps", "0", "500", "9999", "9", "500", "0"},
+                {"b", "ldl", "1", "40", "5", "5", "40", "1"}}};
+  const Table s = axisSummary(c, solves);
+  ASSERT_EQ(s.rows.size(), 4u);
+  // Gait a: both converged, 2 % apart; the medians of 10 and 20 iterations, 1 and 3 s.
+  EXPECT_EQ(s.rows[0],
+            (std::vector<std::string>{"gait", "a", "2 of 2", "15", "2", "7.5 %", "2.00 %"}));
+  // Gait b's failed solve counts in the iterations but not in the spread.
+  EXPECT_EQ(s.rows[1][2], "1 of 2");
+  EXPECT_EQ(s.rows[1][6], "0.00 %");
+  // Per solver: the spread is within one gait (a's 100 and b's 5 are not compared).
+  EXPECT_EQ(s.rows[3],
+            (std::vector<std::string>{"solver", "ldl", "2 of 2", "30", "4", "5.7 %", "0.00 %"}));
+}
+
+TEST(WalkPivot, AColumnPerPlantEachCellTheStepsAndWhereItFell) {
+  const Table walks{
+      {"gait", "walk", "controller", "plant_option", "plant", "steps", "steps_requested",
+       "failure"},
+      {{"g", "rigid", "ct", "mass-error", "-0.1", "3", "20", "step 4: foot rotation: the CoP"},
+       {"g", "rigid", "ct", "mass-error", "0", "20", "20", ""},
+       {"g", "rigid", "smc", "mass-error", "0", "20", "20", ""}}};
+  const Table p = walkPivot(walks, 1);
+  EXPECT_EQ(p.header, (std::vector<std::string>{"gait", "walk", "controller", "mass-error -0.1",
+                                                "mass-error 0"}));
+  ASSERT_EQ(p.rows.size(), 2u);
+  EXPECT_EQ(p.rows[0], (std::vector<std::string>{"g", "rigid", "ct",
+                                                 "3 of 20 (step 4: foot rotation)", "20 of 20"}));
+  EXPECT_EQ(p.rows[1], (std::vector<std::string>{"g", "rigid", "smc", "", "20 of 20"}));
+}
+
+}  // namespace
+}  // namespace gaitopt::study
