@@ -1,5 +1,8 @@
 #include "study/study_run.hpp"
 
+#include <mutex>
+
+#include "parallel/parallel_for.hpp"
 #include "study/axis_summary.hpp"
 #include "study/study_points.hpp"
 #include "study/study_solve.hpp"
@@ -40,24 +43,67 @@ void writeBoth(const Table& table, const std::string& stem) {
   writeMarkdown(table, stem + ".md");
 }
 
+/// The rows of one point: its solve, and its walks and sweeps when it converged.
+struct PointRows {
+  std::vector<std::string> solve;
+  std::vector<std::vector<std::string>> walks, sweeps;
+};
+
+PointRows runPoint(const StudyConfig& c, const std::vector<StudyPoint>& points, std::size_t i,
+                   const std::string& dir, const StudyTools& t) {
+  solvePoint(c, points, i, dir, t);
+  PointRows rows{solveRow(points[i], dir), {}, {}};
+  if (!solved(points[i], dir)) return rows;
+  for (const WalkBlock& block : c.walks)
+    for (auto& row : walkPoint(block, points[i], dir, t)) rows.walks.push_back(std::move(row));
+  for (std::size_t b = 0; b < c.stability.size(); ++b)
+    for (auto& row : sweepPoint(c.stability[b], b, points[i], dir, t))
+      rows.sweeps.push_back(std::move(row));
+  return rows;
+}
+
+/// The first point of each line: the points along the last axis follow one another (a warm
+/// start needs the one before it), different lines are independent.
+std::vector<std::size_t> lineStarts(const std::vector<StudyPoint>& points) {
+  std::vector<std::size_t> starts;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (!points[i].previous) starts.push_back(i);
+  return starts;
+}
+
+/// Every point's rows, the lines spread over `jobs` workers.
+std::vector<PointRows> runPoints(const StudyConfig& c, const std::vector<StudyPoint>& points,
+                                 const std::string& dir, const StudyTools& t, int jobs) {
+  std::mutex print;
+  StudyTools locked = t;
+  if (t.progress)
+    locked.progress = [&](const std::string& what) {
+      const std::lock_guard<std::mutex> lock(print);
+      t.progress(what);
+    };
+  const std::vector<std::size_t> starts = lineStarts(points);
+  std::vector<PointRows> rows(points.size());
+  parallel::parallelFor(starts.size(), jobs, [&](std::size_t line) {
+    const std::size_t end = line + 1 < starts.size() ? starts[line + 1] : points.size();
+    for (std::size_t i = starts[line]; i < end; ++i) rows[i] = runPoint(c, points, i, dir, locked);
+  });
+  return rows;
+}
+
 }  // namespace
 
-StudyCounts runStudy(const StudyConfig& c, const std::string& dir, const StudyTools& t) {
+StudyCounts runStudy(const StudyConfig& c, const std::string& dir, const StudyTools& t, int jobs) {
   const std::vector<StudyPoint> points = studyPoints(c);
   Table solves = tableOf(c, solveColumns()), walks = tableOf(c, walkColumns()),
         sweeps = tableOf(c, sweepColumns());
   StudyCounts counts;
+  const std::vector<PointRows> rows = runPoints(c, points, dir, t, jobs);
   for (std::size_t i = 0; i < points.size(); ++i) {
-    solvePoint(c, points, i, dir, t);
-    addRow(solves, points[i], solveRow(points[i], dir));
+    addRow(solves, points[i], rows[i].solve);
     ++counts.points;
-    if (!solved(points[i], dir)) continue;
-    ++counts.converged;
-    for (const WalkBlock& block : c.walks)
-      for (const auto& row : walkPoint(block, points[i], dir, t)) addRow(walks, points[i], row);
-    for (std::size_t b = 0; b < c.stability.size(); ++b)
-      for (const auto& row : sweepPoint(c.stability[b], b, points[i], dir, t))
-        addRow(sweeps, points[i], row);
+    counts.converged += solved(points[i], dir) ? 1 : 0;
+    for (const auto& row : rows[i].walks) addRow(walks, points[i], row);
+    for (const auto& row : rows[i].sweeps) addRow(sweeps, points[i], row);
   }
   writeBoth(solves, dir + "/solves");
   writeMarkdown(axisSummary(c, solves), dir + "/by_axis.md");

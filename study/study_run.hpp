@@ -19,6 +19,11 @@ struct StudyCounts {
   int points = 0, converged = 0, walks = 0, sweeps = 0;
 };
 
-StudyCounts runStudy(const StudyConfig& config, const std::string& dir, const StudyTools& tools);
+/// Runs the study's lines (the points along its last axis, one after another: a warm start needs
+/// the point before) on `jobs` workers at once, each run a child process; the tables come out in
+/// the same order whatever `jobs` is. Times measured in a study are its runs' own, so a timing
+/// study is run with one job.
+StudyCounts runStudy(const StudyConfig& config, const std::string& dir, const StudyTools& tools,
+                     int jobs = 1);
 
 }  // namespace gaitopt::study

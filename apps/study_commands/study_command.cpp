@@ -9,6 +9,7 @@
 #include "apps/command_runner.hpp"
 #include "config/overrides.hpp"
 #include "io/output/output_folder.hpp"
+#include "parallel/parallel_for.hpp"
 #include "study/study_run.hpp"
 
 namespace gaitopt::apps {
@@ -27,7 +28,8 @@ void runStudyCommand(const StudyOptions& o) {
       fmt::print("study: {}\n", what);
       std::fflush(stdout);  // a line per run also when stdout is a file
     };
-  const study::StudyCounts n = study::runStudy(config, folder.path(), tools);
+  const study::StudyCounts n =
+      study::runStudy(config, folder.path(), tools, parallel::resolveJobs(o.jobs));
   fmt::print("study: {}: {} of {} solves converged, {} walks, {} sweeps; wrote {}/solves.csv{}\n",
              config.name, n.converged, n.points, n.walks, n.sweeps, folder.path(),
              config.walks.empty() ? "" : ", walks.csv");
@@ -45,6 +47,10 @@ void registerStudyCommand(CLI::App& app) {
       ->option_text("DIR");
   cmd->add_option("--set", options->sets, "Replace one value of the study config (repeatable)")
       ->option_text("KEY=VALUE");
+  cmd->add_option("--jobs", options->jobs,
+                  "Runs at once (default 1: the times a study measures are then undisturbed; 0: "
+                  "every core)")
+      ->check(CLI::Range(0, 1024));
   cmd->add_flag("--quiet", options->quiet, "No line per run");
   cmd->footer(
       "Each run is a gaitopt child process writing its own folder under DIR (runs/, walks/, "

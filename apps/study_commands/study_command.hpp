@@ -1,6 +1,6 @@
 #pragma once
 /// @file study_command.hpp
-/// `gaitopt study --config FILE --out DIR [--set KEY=VALUE]... [--quiet]`: a study of
+/// `gaitopt study --config FILE --out DIR [--set KEY=VALUE]... [--jobs N] [--quiet]`: a study of
 /// configs/studies/*.yaml (study/study_run.hpp): each gait config solved at every combination of
 /// the axes' values, each optimum walked and swept in closed loop, the tables written to DIR.
 /// Reruns resume in DIR: a run already done is not redone.
@@ -15,6 +15,7 @@ struct StudyOptions {
   std::string config_path;
   std::string out_dir;
   std::vector<std::string> sets;
+  int jobs = 1;
   bool quiet = false;
 };
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # End-to-end checks of `gaitopt study`: a study's solves against the same solves run by hand,
 # its walks against `gaitopt simulate`, the warm start kept only when cheaper, a rerun that
-# redoes nothing, and bad study configs refused before any solve.
+# redoes nothing, the same tables from two runs at once, and bad study configs refused before
+# any solve.
 # Usage: study_cli_test.sh <path to gaitopt binary> <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
@@ -77,13 +78,25 @@ run study --config "$TMP/study.yaml" --out "$TMP/s"
 if grep -q "study: solve\|study: walk" "$TMP/out"; then fail "(b) rerun redid: $(cat "$TMP/out")"; fi
 cmp -s "$TMP/s/solves.csv" "$TMP/solves_before.csv" || fail "(b) solves.csv changed on a rerun"
 
-# (c) Bad study configs: refused with the file, the key and why, before any solve.
+# (c) Two runs at once give the same tables in the same order (times aside).
+run study --config "$TMP/study.yaml" --out "$TMP/s2" --jobs 2 --quiet
+[[ $RC -eq 0 ]] || fail "(c) --jobs 2 exited $RC: $(cat "$TMP/err")"
+$PY - "$TMP/s" "$TMP/s2" <<'PY' || fail "(c) --jobs 2 tables differ"
+import csv, sys
+def rows(folder, name):
+    return [{k: v for k, v in r.items() if k != "wall_time_s"}
+            for r in csv.DictReader(open(f"{folder}/{name}"))]
+for name in ("solves.csv", "walks.csv"):
+    assert rows(sys.argv[1], name) == rows(sys.argv[2], name), name
+PY
+
+# (d) Bad study configs: refused with the file, the key and why, before any solve.
 bad() {  # NAME YAML EXPECTED
   printf '%s\n' "$2" >"$TMP/$1.yaml"
   run study --config "$TMP/$1.yaml" --out "$TMP/bad_$1"
-  [[ $RC -eq 2 ]] || fail "(c) $1: exit $RC, expected 2"
-  grep -q -- "$3" "$TMP/err" || fail "(c) $1: expected '$3' in: $(cat "$TMP/err")"
-  [[ ! -d "$TMP/bad_$1/runs" ]] || fail "(c) $1: solved before refusing"
+  [[ $RC -eq 2 ]] || fail "(d) $1: exit $RC, expected 2"
+  grep -q -- "$3" "$TMP/err" || fail "(d) $1: expected '$3' in: $(cat "$TMP/err")"
+  [[ ! -d "$TMP/bad_$1/runs" ]] || fail "(d) $1: solved before refusing"
 }
 bad value "name: b
 gaits: [$OCP/mu2004_walk.yaml]
