@@ -3,8 +3,8 @@
 # `gaitopt study` into OUT_DIR/NAME (a rerun resumes there), then the chart of those that have
 # one: strike_study (plots/strike_study_chart.py) and ensemble_front
 # (plots/ensemble_front_chart.py, beside the default optimum). The results/ folders the README
-# cites hold curated copies of their tables. The strike study takes about half an hour, the
-# others minutes each.
+# cites hold curated copies of their tables. Each takes minutes (the solver robustness study
+# about 15).
 # Usage: scripts/studies.sh BUILD_DIR OUT_DIR [NAME...]   (from the repository root; all when no
 #        NAME is given)
 set -euo pipefail

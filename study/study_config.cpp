@@ -91,6 +91,20 @@ StudyAxis readAxis(const YamlReader& r, const std::vector<std::string>& gaits,
   return axis;
 }
 
+/// The leaves of `set`, each as `--set` spells its key: `{solver: {tolerance: 1e-6}}` and
+/// `{solver.tolerance: 1e-6}` both set solver.tolerance (so `--set set.solver.tolerance=...` on
+/// the study config works too).
+void readSets(const YamlReader& set, const std::string& prefix,
+              std::vector<config::Override>& sets) {
+  for (const std::string& key : set.keys()) {
+    const std::string path = prefix.empty() ? key : prefix + "." + key;
+    if (set.isMap(key))
+      readSets(set.map(key), path, sets);
+    else
+      sets.push_back({path, set.yamlText(key)});
+  }
+}
+
 std::vector<ToolOption> readOptions(const YamlReader& r, const std::string& file) {
   std::vector<ToolOption> options;
   if (!r.has("options")) return options;
@@ -145,10 +159,7 @@ StudyConfig loadStudyConfig(const std::string& path,
   if (root.has("gaits") || c.polynomial_gaits.empty())
     for (const std::string& gait : root.yamlTexts("gaits"))
       c.gaits.push_back(relativeTo(path, gait));
-  if (root.has("set")) {
-    const YamlReader set = root.map("set");
-    for (const std::string& key : set.keys()) c.sets.push_back({key, set.yamlText(key)});
-  }
+  if (root.has("set")) readSets(root.map("set"), "", c.sets);
   for (const std::string& gait : c.gaits) try {
       ocp::loadOcpConfig(gait, c.sets);
     } catch (const config::ConfigError& e) {

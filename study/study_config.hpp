@@ -55,7 +55,7 @@ struct StudyConfig {
   /// and swept as the optima are.
   std::vector<PolynomialGait> polynomial_gaits;
   std::vector<std::string> gaits;      ///< OCP config paths
-  std::vector<config::Override> sets;  ///< set at every point
+  std::vector<config::Override> sets;  ///< set at every point (the leaves of `set`)
   std::vector<StudyAxis> axes;
   /// Each point is also solved from the optimum of the point before it on the last axis, and
   /// the cheaper optimum kept (a warm start reaches optima a cold start does not).

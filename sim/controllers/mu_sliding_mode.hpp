@@ -34,7 +34,7 @@
 /// against each other. Without T_c, on Mu's case 3 (the model twice the robot's mass) T^ pressed
 /// the trailing tip with 826 N, 2.8 times the robot's 292 N weight, 1 ms into the DSP, the torques
 /// hit their 150 N m limits and the leading tip lifted off at 4 ms
-/// (results/closed_loop_mu2004/mu_cases.md). The stance ankle is left out because in the SSP it
+/// (results/mu_cases/walks_by_plant.md). The stance ankle is left out because in the SSP it
 /// carries the whole robot's moment about the stance tip, which the DSP shares with the leading
 /// tip's force: carried, its -55 N m (t_h = 0.1 s) lifted the polynomial gait's leading tip off
 /// (0.30 m heel, model mass +60 %, which walks without T_c). The filter keeps a reaching transient

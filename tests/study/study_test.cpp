@@ -47,7 +47,8 @@ std::string readFile(const std::string& path) {
 TEST(StudyPoints, EveryCombinationTheLastAxisFastestWithTheSetsFirst) {
   const StudyConfig c = loadStudyConfig(writeStudy(
       "points.yaml", "name: p\ngaits: [" + kOcp + "mu2004_walk.yaml, " + kOcp +
-                         "rabbit_kelly2017.yaml]\nset: {solver.tolerance: 1.0e-6}\naxes:\n"
+                         "rabbit_kelly2017.yaml]\nset: {solver.tolerance: 1.0e-6, constraints: "
+                         "{zmp_margin: 0}}\naxes:\n"
                          "  - {key: \"phases[0].segments\", values: [24, 30]}\n"
                          "  - name: solver\n"
                          "    values: [{solver.linear_solver: mumps, solver.mumps_pivot_order: 7},"
@@ -62,9 +63,9 @@ TEST(StudyPoints, EveryCombinationTheLastAxisFastestWithTheSetsFirst) {
   // The study's set, then the axes' values in order: two keys for the first solver.
   std::vector<std::string> texts;
   for (const auto& o : points[0].overrides) texts.push_back(o.text());
-  EXPECT_EQ(texts,
-            (std::vector<std::string>{"solver.tolerance=1.0e-6", "phases[0].segments=24",
-                                      "solver.linear_solver=mumps", "solver.mumps_pivot_order=7"}));
+  EXPECT_EQ(texts, (std::vector<std::string>{"solver.tolerance=1.0e-6", "constraints.zmp_margin=0",
+                                             "phases[0].segments=24", "solver.linear_solver=mumps",
+                                             "solver.mumps_pivot_order=7"}));
   // The previous point on the last axis: none at its first value, nor across gaits.
   EXPECT_FALSE(points[0].previous);
   EXPECT_EQ(points[1].previous, 0u);
