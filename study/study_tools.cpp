@@ -32,9 +32,10 @@ int runTool(const StudyTools& t, std::vector<std::string> args, const std::strin
   args.insert(args.begin(), t.gaitopt);
   args.insert(args.end(), {"--out", out, "--no-plots"});
   const int status = io::runProgramInto(args, out + ".log");
-  // A run refused (bad input) or killed wrote no summary: remember why, so a rerun of the study
-  // does not start it again.
-  if (status != 0 && !std::filesystem::exists(out + "/summary.json"))
+  // A run refused (bad input) or killed wrote no summary, not even a failed solve's: remember
+  // why, so a rerun of the study does not start it again (deleting OUT.exit does).
+  if (status != 0 && !std::filesystem::exists(out + "/summary.json") &&
+      !std::filesystem::exists(out + ".failed/summary.json"))
     io::writeFileAtomically(out + ".exit", std::to_string(status));
   return status;
 }

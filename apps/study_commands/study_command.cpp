@@ -11,17 +11,15 @@
 #include "io/output/output_folder.hpp"
 #include "parallel/parallel_for.hpp"
 #include "study/study_run.hpp"
+#include "study/study_settings.hpp"
 
 namespace gaitopt::apps {
 
 void runStudyCommand(const StudyOptions& o) {
   const study::StudyConfig config =
       study::loadStudyConfig(o.config_path, config::parseOverrides(o.sets));
-  std::vector<std::string> inputs = config.gaits;
-  for (const auto& poly : config.polynomial_gaits)
-    inputs.insert(inputs.end(), {poly.gait, poly.robot});
-  inputs.push_back(o.config_path);
-  const io::ResumableFolder folder(o.out_dir, inputs);
+  const io::ResumableFolder folder(o.out_dir, study::studyInputs(config));
+  study::claimStudyFolder(config, o.sets, folder.path());
   study::StudyTools tools{std::filesystem::read_symlink("/proc/self/exe").string(), {}};
   if (!o.quiet)
     tools.progress = [](const std::string& what) {

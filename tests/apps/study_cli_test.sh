@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # End-to-end checks of `gaitopt study`: a study's solves against the same solves run by hand,
 # its walks against `gaitopt simulate`, the warm start kept only when cheaper, a rerun that
-# redoes nothing, the same tables from two runs at once, and bad study configs refused before
+# redoes nothing and one under other settings refused, the same tables from two runs at once, and bad study configs refused before
 # any solve.
 # Usage: study_cli_test.sh <path to gaitopt binary> <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
@@ -77,6 +77,12 @@ run study --config "$TMP/study.yaml" --out "$TMP/s"
 [[ $RC -eq 0 ]] || fail "(b) rerun exited $RC"
 if grep -q "study: solve\|study: walk" "$TMP/out"; then fail "(b) rerun redid: $(cat "$TMP/out")"; fi
 cmp -s "$TMP/s/solves.csv" "$TMP/solves_before.csv" || fail "(b) solves.csv changed on a rerun"
+
+# A rerun under other settings is refused, naming what differs, and runs nothing.
+run study --config "$TMP/study.yaml" --out "$TMP/s" --set 'walks[0].plant.values=[0]'
+[[ $RC -eq 2 ]] || fail "(b) a rerun with other settings exited $RC"
+grep -q "set" "$TMP/err" || fail "(b) the difference not named: $(cat "$TMP/err")"
+cmp -s "$TMP/s/solves.csv" "$TMP/solves_before.csv" || fail "(b) a refused rerun wrote solves.csv"
 
 # (c) Two runs at once give the same tables in the same order (times aside).
 run study --config "$TMP/study.yaml" --out "$TMP/s2" --jobs 2 --quiet
