@@ -29,13 +29,14 @@ std::vector<std::vector<std::string>> sweepRows(const std::string& controller,
                                                 const std::string& out, int status) {
   const auto s = readSummary(out);
   if (!s || !s->contains("sweeps"))
-    return {{controller, "", "", "", "", "",
-             fmt::format("stability exited {}: {}", status, lastLogLine(out)), "", ""}};
+    return {{controller, "", "", "", "",
+             fmt::format("stability exited {}: {}", status, lastLogLine(out)), "", "", "", ""}};
   std::vector<std::vector<std::string>> rows;
   for (const auto& [name, sweep] : s->at("sweeps").items()) {
     std::vector<std::string> row = {controller, name};
     for (const char* key : {"/nominal", "/walks_from", "/walks_to"})
       row.push_back(numberText(sweep, Pointer(key)));
+    row.push_back(sweep.value("nominal_failure", std::string()));
     for (const char* side : {"fails_below", "fails_above"})
       for (std::string& field : beyond(sweep, side)) row.push_back(std::move(field));
     rows.push_back(std::move(row));
@@ -77,8 +78,8 @@ std::vector<std::vector<std::string>> walkPoint(const WalkBlock& block, const St
 }
 
 std::vector<std::string> sweepColumns() {
-  return {"controller",  "sweep",         "nominal",     "walks_from",   "walks_to",
-          "fails_below", "failure_below", "fails_above", "failure_above"};
+  return {"controller",      "sweep",       "nominal",       "walks_from",  "walks_to",
+          "nominal_failure", "fails_below", "failure_below", "fails_above", "failure_above"};
 }
 
 std::vector<std::vector<std::string>> sweepPoint(const StabilityBlock& block, std::size_t index,

@@ -63,7 +63,10 @@ nlohmann::ordered_json walkingInterval(const SweepParameter& parameter,
   std::size_t c = 0;  // the point nearest the nominal value
   for (std::size_t i = 1; i < rows.size(); ++i)
     if (std::abs(rows[i].value - nominal) < std::abs(rows[c].value - nominal)) c = i;
-  if (!walks(rows[c])) return j;
+  if (!walks(rows[c])) {  // no interval: say why the nominal walk itself fails
+    j["nominal_failure"] = rows[c].failure;
+    return j;
+  }
   std::size_t lo = c, hi = c;
   while (lo > 0 && walks(rows[lo - 1])) --lo;
   while (hi + 1 < rows.size() && walks(rows[hi + 1])) ++hi;

@@ -81,6 +81,7 @@ TEST(WalkingInterval, NoneWhenTheNominalPointFalls) {
   EXPECT_TRUE(j.at("walks_from").is_null());
   EXPECT_TRUE(j.at("walks_to").is_null());
   EXPECT_FALSE(j.contains("fails_below"));
+  EXPECT_EQ(j.at("nominal_failure"), "fall");  // why there is no interval
 }
 
 TEST(WalkingInterval, NoneWithoutANominalValue) {
