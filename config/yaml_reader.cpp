@@ -257,6 +257,17 @@ std::string YamlReader::yamlText(const std::string& key) const {
   return flowText(child(key));
 }
 
+std::vector<std::optional<YamlReader>> YamlReader::maybeMaps(const std::string& key) const {
+  const YAML::Node n = child(key);
+  if (!n.IsSequence() || n.size() == 0) fail(key, "expected a non-empty list");
+  std::vector<std::optional<YamlReader>> items;
+  for (size_t i = 0; i < n.size(); ++i)
+    items.push_back(n[i].IsMap() ? std::optional<YamlReader>(std::in_place, file_, n[i],
+                                                             fmt::format("{}[{}]", keyPath(key), i))
+                                 : std::nullopt);
+  return items;
+}
+
 std::vector<std::string> YamlReader::keys() const {
   std::vector<std::string> out;
   if (!node_.IsMap()) return out;

@@ -67,6 +67,9 @@ class YamlReader {
   bool has(const std::string& key) const;
   /// Elements of the non-empty sequence under `key`, each a mapping.
   std::vector<YamlReader> list(const std::string& key) const;
+  /// For each element of the non-empty sequence under `key`, its reader when it is a mapping
+  /// (a list whose items are either a plain value or a mapping spelling it out).
+  std::vector<std::optional<YamlReader>> maybeMaps(const std::string& key) const;
   /// The mapping's keys in the file's order (empty when it is not a mapping).
   /// @throws ConfigError naming a key that is not plain text.
   std::vector<std::string> keys() const;

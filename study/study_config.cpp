@@ -62,32 +62,30 @@ StudyAxis setsAxis(const YamlReader& r) {
   return axis;
 }
 
-/// Every value loads with every gait (with the study's sets) as `--set` would load it.
-void checkValues(const YamlReader& r, const StudyAxis& axis, const std::vector<std::string>& gaits,
-                 const std::vector<config::Override>& sets) {
+/// Every value loads with every gait (with its sets) as `--set` would load it.
+void checkValues(const YamlReader& r, const StudyAxis& axis, const std::vector<StudyGait>& gaits) {
   for (std::size_t i = 0; i < axis.values.size(); ++i) {
     if (!plainLabel(axis.labels[i]))
       r.fail(r.has("labels") ? "labels" : "values",
              fmt::format("'{}' cannot name a folder: give labels of letters, digits and . _ + -",
                          axis.labels[i]));
-    std::vector<config::Override> with = sets;
-    with.insert(with.end(), axis.values[i].begin(), axis.values[i].end());
-    for (const std::string& gait : gaits) try {
-        ocp::loadOcpConfig(gait, with);
+    for (const StudyGait& gait : gaits) try {
+        std::vector<config::Override> with = gait.sets;
+        with.insert(with.end(), axis.values[i].begin(), axis.values[i].end());
+        ocp::loadOcpConfig(gait.path, with);
       } catch (const config::ConfigError& e) {
-        r.fail("values", fmt::format("{} refuses '{}': {}", gait, axis.labels[i], e.what()));
+        r.fail("values", fmt::format("{} refuses '{}': {}", gait.name, axis.labels[i], e.what()));
       }
   }
 }
 
-StudyAxis readAxis(const YamlReader& r, const std::vector<std::string>& gaits,
-                   const std::vector<config::Override>& sets) {
+StudyAxis readAxis(const YamlReader& r, const std::vector<StudyGait>& gaits) {
   r.allowOnly({"key", "name", "values", "labels"});
   StudyAxis axis = r.has("key") ? keyAxis(r) : setsAxis(r);
   if (r.has("labels")) axis.labels = r.yamlTexts("labels");
   if (axis.labels.size() != axis.values.size())
     r.fail("labels", fmt::format("expected one label per value ({})", axis.values.size()));
-  checkValues(r, axis, gaits, sets);
+  checkValues(r, axis, gaits);
   return axis;
 }
 
@@ -103,6 +101,33 @@ void readSets(const YamlReader& set, const std::string& prefix,
     else
       sets.push_back({path, set.yamlText(key)});
   }
+}
+
+/// `gaits`: each a path, or `{config: PATH, name: NAME, set: {...}}`; each loads with its sets.
+std::vector<StudyGait> readGaits(const YamlReader& root,
+                                 const std::vector<config::Override>& sets) {
+  std::vector<StudyGait> gaits;
+  const std::vector<std::string> texts = root.yamlTexts("gaits");
+  const std::vector<std::optional<YamlReader>> maps = root.maybeMaps("gaits");
+  for (std::size_t i = 0; i < texts.size(); ++i) {
+    StudyGait g{"", texts[i], sets};
+    if (const auto& entry = maps[i]) {
+      entry->allowOnly({"config", "name", "set"});
+      g.path = entry->string("config");
+      g.name = entry->stringOr("name", "");
+      if (entry->has("set")) readSets(entry->map("set"), "", g.sets);
+    }
+    g.path = relativeTo(root.file(), g.path);
+    if (g.name.empty()) g.name = fs::path(g.path).stem().string();
+    if (!plainLabel(g.name)) root.fail("gaits", fmt::format("'{}' cannot name a folder", g.name));
+    try {
+      ocp::loadOcpConfig(g.path, g.sets);
+    } catch (const config::ConfigError& e) {
+      root.fail("gaits", e.what());
+    }
+    gaits.push_back(std::move(g));
+  }
+  return gaits;
 }
 
 std::vector<ToolOption> readOptions(const YamlReader& r, const std::string& file) {
@@ -156,18 +181,10 @@ StudyConfig loadStudyConfig(const std::string& path,
       c.polynomial_gaits.push_back(
           {relativeTo(path, poly.string("gait")), relativeTo(path, poly.string("robot"))});
     }
-  if (root.has("gaits") || c.polynomial_gaits.empty())
-    for (const std::string& gait : root.yamlTexts("gaits"))
-      c.gaits.push_back(relativeTo(path, gait));
   if (root.has("set")) readSets(root.map("set"), "", c.sets);
-  for (const std::string& gait : c.gaits) try {
-      ocp::loadOcpConfig(gait, c.sets);
-    } catch (const config::ConfigError& e) {
-      root.fail("gaits", e.what());
-    }
+  if (root.has("gaits") || c.polynomial_gaits.empty()) c.gaits = readGaits(root, c.sets);
   if (root.has("axes"))
-    for (const YamlReader& axis : root.list("axes"))
-      c.axes.push_back(readAxis(axis, c.gaits, c.sets));
+    for (const YamlReader& axis : root.list("axes")) c.axes.push_back(readAxis(axis, c.gaits));
   c.warm_from_previous =
       root.has("warm_start") && root.choice("warm_start", {"none", "previous"}) == "previous";
   if (root.has("walks"))

@@ -48,13 +48,21 @@ struct PolynomialGait {
   std::string robot;  ///< configs/robots/*.yaml
 };
 
+/// An OCP config of the study, under a name of its own with values of its own set (a variant of
+/// a shipped problem without a file of its own: the ensemble with the cost of transport).
+struct StudyGait {
+  std::string name;  ///< the config's file name without .yaml unless the study names it
+  std::string path;
+  std::vector<config::Override> sets;  ///< the study's sets, then the gait's own
+};
+
 struct StudyConfig {
   std::string name;
   std::string path;  ///< of the YAML file
   /// Designed once each, without the axes and sets (which are OCP config values), then walked
   /// and swept as the optima are.
   std::vector<PolynomialGait> polynomial_gaits;
-  std::vector<std::string> gaits;      ///< OCP config paths
+  std::vector<StudyGait> gaits;
   std::vector<config::Override> sets;  ///< set at every point (the leaves of `set`)
   std::vector<StudyAxis> axes;
   /// Each point is also solved from the optimum of the point before it on the last axis, and

@@ -6,9 +6,9 @@ namespace gaitopt::study {
 namespace {
 
 /// The point of `gait` whose value index on each axis is `index`.
-StudyPoint pointAt(const StudyConfig& c, const std::string& gait,
+StudyPoint pointAt(const StudyConfig& c, const StudyGait& gait,
                    const std::vector<std::size_t>& index) {
-  StudyPoint p{std::filesystem::path(gait).stem().string(), gait, "", {}, c.sets, {}, {}};
+  StudyPoint p{gait.name, gait.path, "", {}, gait.sets, {}, {}};
   p.folder = p.gait;
   for (std::size_t a = 0; a < c.axes.size(); ++a) {
     const StudyAxis& axis = c.axes[a];
@@ -39,7 +39,7 @@ std::vector<StudyPoint> studyPoints(const StudyConfig& c) {
     points.push_back(
         {name, poly.gait, poly.robot, std::vector<std::string>(c.axes.size()), {}, name, {}});
   }
-  for (const std::string& gait : c.gaits) {
+  for (const StudyGait& gait : c.gaits) {
     std::vector<std::size_t> index(c.axes.size(), 0);
     do {
       points.push_back(pointAt(c, gait, index));

@@ -11,9 +11,9 @@ std::vector<std::string> studyInputs(const StudyConfig& c) {
   std::vector<std::string> inputs = {c.path};
   for (const PolynomialGait& poly : c.polynomial_gaits)
     inputs.insert(inputs.end(), {poly.gait, poly.robot});
-  for (const std::string& gait : c.gaits) {
-    inputs.push_back(gait);
-    for (std::string& input : ocp::ocpInputs(ocp::loadOcpConfig(gait, c.sets)))
+  for (const StudyGait& gait : c.gaits) {
+    inputs.push_back(gait.path);
+    for (std::string& input : ocp::ocpInputs(ocp::loadOcpConfig(gait.path, gait.sets)))
       if (!input.empty()) inputs.push_back(std::move(input));
   }
   for (const WalkBlock& walk : c.walks)

@@ -20,7 +20,8 @@ std::vector<std::string> walkColumns();
 
 /// Sweeps the optimum of `point` under each controller of `block`; one row per controller and
 /// sweep: controller, sweep, nominal value, the walking interval around it (or why the nominal
-/// walk fails), and the nearest values beyond it with their failures. `index` numbers the study's stability blocks.
+/// walk fails), and the nearest values beyond it with their failures. `index` numbers the study's
+/// stability blocks.
 std::vector<std::vector<std::string>> sweepPoint(const StabilityBlock& block, std::size_t index,
                                                  const StudyPoint& point, const std::string& dir,
                                                  const StudyTools& t);

@@ -74,6 +74,29 @@ TEST(StudyPoints, EveryCombinationTheLastAxisFastestWithTheSetsFirst) {
   EXPECT_FALSE(points[4].previous);
 }
 
+// A gait entry names a variant of a config and sets its own values after the study's.
+TEST(StudyPoints, AGaitEntryWithANameAndValuesOfItsOwn) {
+  const StudyConfig c = loadStudyConfig(writeStudy(
+      "entry.yaml", "name: e\nset: {solver.tolerance: 1.0e-6}\ngaits:\n  - config: " + kOcp +
+                        "mu2004_walk.yaml\n    name: wide\n    set: {constraints: "
+                        "{friction_margin: 0.3}}\n  - " +
+                        kOcp + "mu2004_walk.yaml\n"));
+  const std::vector<StudyPoint> points = studyPoints(c);
+  ASSERT_EQ(points.size(), 2u);
+  EXPECT_EQ(points[0].folder, "wide");
+  ASSERT_EQ(points[0].overrides.size(), 2u);
+  EXPECT_EQ(points[0].overrides[1].text(), "constraints.friction_margin=0.3");
+  EXPECT_EQ(points[1].folder, "mu2004_walk");
+  EXPECT_EQ(points[1].overrides.size(), 1u);
+  // A value the config refuses names the entry.
+  const std::string message = errorOf([&] {
+    loadStudyConfig(writeStudy(
+        "entry_bad.yaml",
+        "name: e\ngaits:\n  - config: " + kOcp + "mu2004_walk.yaml\n    set: {scheme: euler}\n"));
+  });
+  EXPECT_NE(message.find("scheme"), std::string::npos) << message;
+}
+
 TEST(StudyConfig, RefusedWithTheKeyAndWhy) {
   const std::string gait = "gaits: [" + kOcp + "mu2004_walk.yaml]\n";
   for (const auto& [yaml, why] : std::vector<std::pair<std::string, std::string>>{
