@@ -82,6 +82,8 @@ void checkValues(const YamlReader& r, const StudyAxis& axis, const std::vector<S
 StudyAxis readAxis(const YamlReader& r, const std::vector<StudyGait>& gaits) {
   r.allowOnly({"key", "name", "values", "labels"});
   StudyAxis axis = r.has("key") ? keyAxis(r) : setsAxis(r);
+  if (!plainLabel(axis.name))
+    r.fail("name", "expected letters, digits and . _ + - (a folder part)");
   if (r.has("labels")) axis.labels = r.yamlTexts("labels");
   if (axis.labels.size() != axis.values.size())
     r.fail("labels", fmt::format("expected one label per value ({})", axis.values.size()));

@@ -11,7 +11,6 @@ namespace gaitopt::study {
 namespace fs = std::filesystem;
 namespace {
 
-using Json = nlohmann::ordered_json;
 using Pointer = nlohmann::json::json_pointer;
 
 /// `gaitopt poly` of a polynomial gait, else `gaitopt optimize` with the point's --set values.

@@ -10,6 +10,8 @@ namespace {
 using Json = nlohmann::ordered_json;
 using Pointer = nlohmann::json::json_pointer;
 
+/// Steps walked and asked, the largest tracking error and slip, and the failure of the walk in
+/// `out`; for a walk that wrote no summary (refused input), its exit status and error.
 std::vector<std::string> walkRow(const std::string& out, int status) {
   const auto s = readSummary(out);
   if (!s) return {"", "", "", "", fmt::format("simulate exited {}: {}", status, lastLogLine(out))};
@@ -22,7 +24,7 @@ std::vector<std::string> walkRow(const std::string& out, int status) {
 std::vector<std::string> beyond(const Json& sweep, const char* side) {
   if (!sweep.contains(side)) return {"", ""};
   const Json& f = sweep.at(side);
-  return {fmt::format("{:.7g}", f.at("value").get<double>()), f.value("failure", std::string())};
+  return {numberText(f, Pointer("/value")), f.value("failure", std::string())};
 }
 
 std::vector<std::vector<std::string>> sweepRows(const std::string& controller,
