@@ -98,6 +98,12 @@ bool YamlReader::has(const std::string& key) const {
   return node_.IsMap() && node_[key];
 }
 
+YAML::Node YamlReader::nonEmptyList(const std::string& key) const {
+  const YAML::Node n = child(key);
+  if (!n.IsSequence() || n.size() == 0) fail(key, "expected a non-empty list");
+  return n;
+}
+
 YAML::Node YamlReader::child(const std::string& key) const {
   if (!has(key)) throw ConfigError(file_, keyPath(key), lineOf(node_), "missing required key");
   return node_[key];
@@ -224,8 +230,7 @@ YamlReader YamlReader::map(const std::string& key) const {
 }
 
 std::vector<YamlReader> YamlReader::list(const std::string& key) const {
-  const YAML::Node n = child(key);
-  if (!n.IsSequence() || n.size() == 0) fail(key, "expected a non-empty list");
+  const YAML::Node n = nonEmptyList(key);
   std::vector<YamlReader> items;
   for (size_t i = 0; i < n.size(); ++i) {
     const std::string path = fmt::format("{}[{}]", keyPath(key), i);
@@ -246,8 +251,7 @@ std::string flowText(const YAML::Node& node) {
 }  // namespace
 
 std::vector<std::string> YamlReader::yamlTexts(const std::string& key) const {
-  const YAML::Node n = child(key);
-  if (!n.IsSequence() || n.size() == 0) fail(key, "expected a non-empty list");
+  const YAML::Node n = nonEmptyList(key);
   std::vector<std::string> texts;
   for (const auto& item : n) texts.push_back(flowText(item));
   return texts;
@@ -258,8 +262,7 @@ std::string YamlReader::yamlText(const std::string& key) const {
 }
 
 std::vector<std::optional<YamlReader>> YamlReader::maybeMaps(const std::string& key) const {
-  const YAML::Node n = child(key);
-  if (!n.IsSequence() || n.size() == 0) fail(key, "expected a non-empty list");
+  const YAML::Node n = nonEmptyList(key);
   std::vector<std::optional<YamlReader>> items;
   for (size_t i = 0; i < n.size(); ++i)
     items.push_back(n[i].IsMap() ? std::optional<YamlReader>(std::in_place, file_, n[i],

@@ -81,6 +81,8 @@ class YamlReader {
 
  private:
   YAML::Node child(const std::string& key) const;
+  /// The sequence under `key`. @throws ConfigError unless it is one with at least one item.
+  YAML::Node nonEmptyList(const std::string& key) const;
   std::string keyPath(const std::string& key) const;
   int lineOf(const YAML::Node& node) const;
   void rejectDuplicateKeys() const;
