@@ -1,8 +1,6 @@
 // YamlReader: duplicate keys are errors naming the file, the key path and both lines, wherever
 // the mapping sits (top level, nested, inside a list); --set overrides replace values before the
 // checks, and a path that does not fit the document is an error naming --set.
-#include <fstream>
-#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -10,55 +8,42 @@
 #include <gtest/gtest.h>
 
 #include "config/yaml_reader.hpp"
+#include "support/config_text.hpp"
 
 namespace gaitopt::config {
 namespace {
 
-/// Writes `text` to a file in the test's temporary folder and returns its path.
-std::string writeYaml(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + name;
-  std::ofstream(path) << text;
-  return path;
-}
-
-/// The ConfigError message `read` throws, or "no error".
-std::string errorOf(const std::function<void()>& read) {
-  try {
-    read();
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using test::configErrorOf;
+using test::writeTempFile;
 
 TEST(YamlReader, DuplicateTopLevelKeyNamesFileKeyAndBothLines) {
-  const std::string path = writeYaml("dup_top.yaml", "a: 1\nb: 2\na: 3\n");
-  const std::string message = errorOf([&] { YamlReader::fromFile(path); });
+  const std::string path = writeTempFile("dup_top.yaml", "a: 1\nb: 2\na: 3\n");
+  const std::string message = configErrorOf([&] { YamlReader::fromFile(path); });
   EXPECT_EQ(message, path +
                          ":3: key 'a': duplicate key, first given at line 1; each key may "
                          "appear once in a mapping");
 }
 
 TEST(YamlReader, DuplicateKeyInANestedFlowMapping) {
-  const std::string path = writeYaml("dup_nested.yaml", "outer:\n  inner: {x: 1, x: 2}\n");
+  const std::string path = writeTempFile("dup_nested.yaml", "outer:\n  inner: {x: 1, x: 2}\n");
   const YamlReader root = YamlReader::fromFile(path);
-  const std::string message = errorOf([&] { root.map("outer").map("inner"); });
+  const std::string message = configErrorOf([&] { root.map("outer").map("inner"); });
   EXPECT_NE(message.find(path + ":2: key 'outer.inner.x': duplicate key, first given at line 2"),
             std::string::npos)
       << message;
 }
 
 TEST(YamlReader, DuplicateKeyInAListItem) {
-  const std::string path = writeYaml("dup_list.yaml", "links:\n  - mass: 1\n    mass: 2\n");
+  const std::string path = writeTempFile("dup_list.yaml", "links:\n  - mass: 1\n    mass: 2\n");
   const YamlReader root = YamlReader::fromFile(path);
-  const std::string message = errorOf([&] { root.list("links"); });
+  const std::string message = configErrorOf([&] { root.list("links"); });
   EXPECT_NE(message.find(":3: key 'links[0].mass': duplicate key, first given at line 2"),
             std::string::npos)
       << message;
 }
 
 TEST(YamlReader, DistinctKeysAreAccepted) {
-  const std::string path = writeYaml("distinct.yaml", "a: 1\nb: {a: 2}\n");
+  const std::string path = writeTempFile("distinct.yaml", "a: 1\nb: {a: 2}\n");
   const YamlReader root = YamlReader::fromFile(path);
   EXPECT_EQ(root.number("a", positive("[m]")), 1.0);
   EXPECT_EQ(root.map("b").number("a", positive("[m]")), 2.0);
@@ -78,7 +63,7 @@ YamlReader withSets(const std::string& path, const std::vector<std::string>& set
 
 TEST(YamlReaderOverrides, ReplaceNestedListAndNewValuesBeforeTheChecks) {
   const std::string path =
-      writeYaml("sets.yaml", "a: 1\nm: {x: 2}\nl:\n  - {n: 3}\n  - {n: 4}\nv: [1, 2]\n");
+      writeTempFile("sets.yaml", "a: 1\nm: {x: 2}\nl:\n  - {n: 3}\n  - {n: 4}\nv: [1, 2]\n");
   const YamlReader r = withSets(path, {"a=5", "m.x=6", "l[1].n=7", "m.y=8", "v=[9]", "new.k=1"});
   const auto any = inRange(-100, 100, "");
   EXPECT_EQ(r.number("a", any), 5);
@@ -89,13 +74,13 @@ TEST(YamlReaderOverrides, ReplaceNestedListAndNewValuesBeforeTheChecks) {
   EXPECT_EQ(r.numbers("v", any), std::vector<double>{9});  // a list replaced whole
   EXPECT_EQ(r.map("new").number("k", any), 1);
   // A value set is checked as one in the file, and the error names the --set.
-  const std::string message = errorOf([&] { r.number("a", inRange(0, 1, "[m]")); });
+  const std::string message = configErrorOf([&] { r.number("a", inRange(0, 1, "[m]")); });
   EXPECT_NE(message.find("(--set a=5, --set m.x=6"), std::string::npos) << message;
   EXPECT_NE(message.find("expected a number in [0, 1] [m], got 5"), std::string::npos) << message;
 }
 
 TEST(YamlReaderOverrides, NullRemovesAKeySoItsDefaultApplies) {
-  const std::string path = writeYaml("sets_null.yaml", "a: 1\nm: {x: 2, y: 3}\nl: [1, 2]\n");
+  const std::string path = writeTempFile("sets_null.yaml", "a: 1\nm: {x: 2, y: 3}\nl: [1, 2]\n");
   const YamlReader r = withSets(path, {"a=null", "m.y=~", "absent.k=null"});
   EXPECT_FALSE(r.has("a"));
   EXPECT_EQ(r.numberOr("a", 42, inRange(-100, 100, "")), 42);
@@ -103,7 +88,7 @@ TEST(YamlReaderOverrides, NullRemovesAKeySoItsDefaultApplies) {
   EXPECT_FALSE(r.map("m").has("y"));
   EXPECT_FALSE(r.map("absent").has("k"));  // removing what is not there changes nothing
   // A list item is not removed (that would renumber the rest): it becomes null.
-  EXPECT_EQ(errorOf([&] {
+  EXPECT_EQ(configErrorOf([&] {
               withSets(path, {"l[0]=null"}).numbers("l", inRange(0, 9, ""));
             }).find("l[0]") != std::string::npos,
             true);
@@ -112,17 +97,17 @@ TEST(YamlReaderOverrides, NullRemovesAKeySoItsDefaultApplies) {
 // The items of a list as one line of YAML each, as a study passes them on as --set values.
 TEST(YamlReader, YamlTextsOfAListAndOfOneValue) {
   const std::string path =
-      writeYaml("texts.yaml", "v: [1, word, [0.05, 0.06], {a: 1, b: [2]}]\nm: {x: 2}\n");
+      writeTempFile("texts.yaml", "v: [1, word, [0.05, 0.06], {a: 1, b: [2]}]\nm: {x: 2}\n");
   const YamlReader r = YamlReader::fromFile(path);
   EXPECT_EQ(r.yamlTexts("v"),
             (std::vector<std::string>{"1", "word", "[0.05, 0.06]", "{a: 1, b: [2]}"}));
   EXPECT_EQ(r.yamlText("m"), "{x: 2}");
-  EXPECT_NE(errorOf([&] { r.yamlTexts("m"); }).find("expected a non-empty list"),
+  EXPECT_NE(configErrorOf([&] { r.yamlTexts("m"); }).find("expected a non-empty list"),
             std::string::npos);
 }
 
 TEST(YamlReaderOverrides, PathsThatDoNotFitAreErrorsNamingSet) {
-  const std::string path = writeYaml("sets_bad.yaml", "a: 1\nl:\n  - {n: 3}\n");
+  const std::string path = writeTempFile("sets_bad.yaml", "a: 1\nl:\n  - {n: 3}\n");
   for (const auto& [set, why] :
        std::vector<std::pair<std::string, std::string>>{{"l[1].n=2", "no list item [1]"},
                                                         {"a.b=2", "runs through a value"},
@@ -131,7 +116,7 @@ TEST(YamlReaderOverrides, PathsThatDoNotFitAreErrorsNamingSet) {
                                                         {"=2", "expected KEY=VALUE"},
                                                         {".a=2", "expected a key path"},
                                                         {"a=[1", "not valid YAML"}}) {
-    const std::string message = errorOf([&] { withSets(path, {set}); });
+    const std::string message = configErrorOf([&] { withSets(path, {set}); });
     EXPECT_EQ(message.rfind("--set", 0), 0u) << set << ": " << message;
     EXPECT_NE(message.find(why), std::string::npos) << set << ": " << message;
   }

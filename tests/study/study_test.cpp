@@ -3,39 +3,26 @@
 // the per-axis summary (convergence counts, medians, MUMPS's share, spread within one gait) and
 // the walk table with a column per plant; and configs refused with the key and why.
 #include <fstream>
-#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
-#include "config/config_error.hpp"
 #include "study/axis_summary.hpp"
 #include "study/study_config.hpp"
 #include "study/study_points.hpp"
 #include "study/study_table.hpp"
 #include "study/walk_pivot.hpp"
+#include "support/config_text.hpp"
 
 namespace gaitopt::study {
 namespace {
 
 const std::string kOcp = std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/";
 
-std::string writeStudy(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + name;
-  std::ofstream(path) << text;
-  return path;
-}
-
-std::string errorOf(const std::function<void()>& load) {
-  try {
-    load();
-  } catch (const config::ConfigError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using test::configErrorOf;
+using test::writeTempFile;
 
 std::string readFile(const std::string& path) {
   std::ifstream in(path);
@@ -45,7 +32,7 @@ std::string readFile(const std::string& path) {
 }
 
 TEST(StudyPoints, EveryCombinationTheLastAxisFastestWithTheSetsFirst) {
-  const StudyConfig c = loadStudyConfig(writeStudy(
+  const StudyConfig c = loadStudyConfig(writeTempFile(
       "points.yaml", "name: p\ngaits: [" + kOcp + "mu2004_walk.yaml, " + kOcp +
                          "rabbit_kelly2017.yaml]\nset: {solver.tolerance: 1.0e-6, constraints: "
                          "{zmp_margin: 0}}\naxes:\n"
@@ -76,7 +63,7 @@ TEST(StudyPoints, EveryCombinationTheLastAxisFastestWithTheSetsFirst) {
 
 // A gait entry names a variant of a config and sets its own values after the study's.
 TEST(StudyPoints, AGaitEntryWithANameAndValuesOfItsOwn) {
-  const StudyConfig c = loadStudyConfig(writeStudy(
+  const StudyConfig c = loadStudyConfig(writeTempFile(
       "entry.yaml", "name: e\nset: {solver.tolerance: 1.0e-6}\ngaits:\n  - config: " + kOcp +
                         "mu2004_walk.yaml\n    name: wide\n    set: {constraints: "
                         "{friction_margin: 0.3}}\n  - " +
@@ -89,8 +76,8 @@ TEST(StudyPoints, AGaitEntryWithANameAndValuesOfItsOwn) {
   EXPECT_EQ(points[1].folder, "mu2004_walk");
   EXPECT_EQ(points[1].overrides.size(), 1u);
   // A value the config refuses names the entry.
-  const std::string message = errorOf([&] {
-    loadStudyConfig(writeStudy(
+  const std::string message = configErrorOf([&] {
+    loadStudyConfig(writeTempFile(
         "entry_bad.yaml",
         "name: e\ngaits:\n  - config: " + kOcp + "mu2004_walk.yaml\n    set: {scheme: euler}\n"));
   });
@@ -113,8 +100,8 @@ TEST(StudyConfig, RefusedWithTheKeyAndWhy) {
            {"walks: [{name: w, controllers: [computed_torque], plant: {option: push, values: "
             "[0]}}]",
             "expected one of mass-error"}}) {
-    const std::string message =
-        errorOf([&] { loadStudyConfig(writeStudy("bad.yaml", "name: b\n" + gait + yaml + "\n")); });
+    const std::string message = configErrorOf(
+        [&] { loadStudyConfig(writeTempFile("bad.yaml", "name: b\n" + gait + yaml + "\n")); });
     EXPECT_NE(message.find(why), std::string::npos) << yaml << ": " << message;
   }
 }
