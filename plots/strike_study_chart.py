@@ -10,7 +10,7 @@ and mass_error sweeps. Writes, printing their paths:
   OUT_DIR/strike_study.csv  one row per variant and controller: strike velocity, margins, cost,
                             the optimum's ZMP margin and friction ratio, the walking intervals
                             (empty when the walk fails at nominal) and the failures beside them
-                            (at nominal: read from the stability folder's sweep_<name>.csv)
+                            (at nominal: the sweep's nominal_failure in summary.json)
   OUT_DIR/strike_study.md   one row per variant: cost, then push and mass intervals per controller
   OUT_DIR/strike_study.png  cost against the widest push interval (left) and the widest mass
                             interval (right) over the controllers, one point per variant: colour
@@ -35,18 +35,6 @@ FIELDS = ["variant", "strike_velocity", "friction_margin", "zmp_margin", "status
           "mass_from", "mass_to", "push_fails", "mass_fails"]
 
 
-def nominal_failure(path, sweep, nominal):
-    """The failure of the walk at the sweep's nominal value, from sweep_<sweep>.csv beside
-    summary.json."""
-    csv_path = os.path.join(os.path.dirname(path), f"sweep_{sweep}.csv")
-    header, rows = plot_io.read_rows(csv_path, "sweep")
-    plot_io.require_columns(csv_path, header, ["value", "failure"])
-    at = {float(r[header.index("value")]): r[header.index("failure")] for r in rows}
-    if nominal not in at:
-        raise InputError(f"{csv_path}: no row at the nominal value {nominal:g}")
-    return at[nominal]
-
-
 def sweep_cells(path, s, sweep):
     """(from, to, failures) of one sweep, from and to None without a walking interval."""
     plot_io.require_keys(path, s, ["sweeps"])
@@ -57,8 +45,8 @@ def sweep_cells(path, s, sweep):
     fails = [f"{w[k]['value'] * unit:g}: {w[k]['failure']}"
              for k in ("fails_below", "fails_above") if k in w]
     if w.get("walks_from") is None:
-        plot_io.require_numbers(path, w, ["nominal"], prefix=f"sweeps.{sweep}.")
-        fails = [f"at nominal: {nominal_failure(path, sweep, w['nominal'])}"]
+        plot_io.require_keys(path, w, ["nominal_failure"])
+        fails = [f"at nominal: {w['nominal_failure']}"]
     scale = lambda x: None if x is None else x * unit
     return scale(w.get("walks_from")), scale(w.get("walks_to")), "; ".join(fails)
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # plots/strike_study_chart.py on a made-up `gaitopt study` folder: a lands-at-rest variant swept by
-# one controller (walks 0 .. 0.5 N s, fails at nominal under mass error, the failure read from
-# its sweep CSV), a strike variant whose solve failed; the table's rows, the CSV's failures and
+# one controller (walks 0 .. 0.5 N s, fails at nominal under mass error, the failure from
+# summary.json's nominal_failure), a strike variant whose solve failed; the table's rows, the CSV's failures and
 # the picture, and "error: <file>: ..." for a broken summary.
 # Needs Debian's python3-matplotlib; skips (ctest: skipped) without it.
 # Usage: strike_study_plots_test.sh <repo root>
@@ -26,10 +26,9 @@ cat >"$swept/summary.json" <<'JSON'
   "push": {"walks_from": 0.0, "walks_to": 0.5,
            "fails_below": {"value": -0.25, "failure": "step 2: foot rotation"},
            "fails_above": {"value": 0.75, "failure": "step 3: foot rotation"}},
-  "mass_error": {"nominal": 0.0, "walks_from": null, "walks_to": null}}}
+  "mass_error": {"nominal": 0.0, "walks_from": null, "walks_to": null,
+                 "nominal_failure": "step 1: foot rotation"}}}
 JSON
-printf '%s\n' "value,steps_completed,failure" "-0.025,0,step 1: fall" "0,0,step 1: foot rotation" \
-  >"$swept/sweep_mass_error.csv"
 
 "$PY" "$chart" "$work" "$TMP/out" >"$TMP/printed" || fail "exit $? on a good study"
 for ext in csv md png; do
