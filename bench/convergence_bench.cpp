@@ -21,6 +21,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <unistd.h>
@@ -158,6 +159,22 @@ std::string csvOf(const std::vector<Draw>& draws) {
   return text;
 }
 
+/// (problems converged, problems). A config's draw is a problem of its own; a library point is
+/// one problem however many starts it took: its first draw, and the neighbour-start draw that
+/// libraryDraws adds only for a point whose first draw failed (once per point).
+std::pair<int, int> problemTally(const std::vector<Draw>& draws) {
+  const std::string retry = " (neighbour start)";
+  int solved = 0, problems = 0;
+  for (const Draw& d : draws) {
+    const bool is_retry =
+        d.config.size() > retry.size() &&
+        d.config.compare(d.config.size() - retry.size(), retry.size(), retry) == 0;
+    problems += is_retry ? 0 : 1;  // a retry is a point already counted by its first draw
+    solved += d.converged ? 1 : 0;
+  }
+  return {solved, problems};
+}
+
 /// Per config: draws converged, the converged costs' range and spread, median iterations and
 /// time. The spread is (max - min) / min of the converged costs.
 void printTable(const std::vector<Draw>& draws) {
@@ -187,6 +204,12 @@ void printTable(const std::vector<Draw>& draws) {
   }
   fmt::print("\n{} of {} solves converged ({:.1f} %).\n", converged, draws.size(),
              100.0 * converged / static_cast<double>(draws.size()));
+  const auto [solved, problems] = problemTally(draws);
+  fmt::print(
+      "{} of {} problems converged ({:.1f} %): a config at a mesh from a start is one problem, "
+      "a library point one problem, solved when its polynomial start or its neighbour start "
+      "converged.\n",
+      solved, problems, 100.0 * solved / problems);
 }
 
 /// The draws of a CSV this program wrote (csvOf). @throws std::runtime_error when unreadable.
