@@ -1,6 +1,7 @@
 // The files of a library folder (library/library_folder.hpp, library_index.hpp): library.json
 // written by a run and read back by `gaitopt interpolate`, and index rows through index.csv and
-// index.json, every field.
+// index.json, every field; and the shipped library folders keyed by the files they are made from
+// now, so that `make demo-full` resumes them instead of refusing them.
 #include <cmath>
 #include <filesystem>
 
@@ -8,7 +9,9 @@
 
 #include "config/config_error.hpp"
 #include "io/io_test_dir.hpp"
+#include "io/settings_record.hpp"
 #include "io/strict_json.hpp"
+#include "library/library_config.hpp"
 #include "library/library_folder.hpp"
 
 namespace gaitopt::library {
@@ -135,6 +138,31 @@ TEST_F(LibraryFolderTest, AnIndexRowRoundTripsThroughJson) {
   expectSameRow(back, row);
   EXPECT_EQ(back.message, row.message);
   EXPECT_TRUE(toJson(row).at("cost_of_transport").is_null());  // JSON has no NaN
+}
+
+TEST(ShippedLibraries, AreKeyedByTheCurrentContentsOfTheirFiles) {
+  // A file edited since a library was made (a comment included) makes `gaitopt library` refuse
+  // to resume its folder: results/ must be remade, or its key renewed when the edit changes no
+  // value.
+  namespace fs = std::filesystem;
+  int checked = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(GAITOPT_SOURCE_DIR) / "results")) {
+    const fs::path json = entry.path() / "library.json";
+    if (!fs::exists(json)) continue;
+    const auto claim = io::readStrictJson(json.string());
+    const fs::path config_path = fs::path(GAITOPT_SOURCE_DIR) / "configs" / "library" /
+                                 (claim.at("name").get<std::string>() + ".yaml");
+    const LibraryConfig config = loadLibraryConfig(config_path.string());
+    SCOPED_TRACE(json.string());
+    EXPECT_EQ(claim.at("library_config_fnv1a"), io::fileFingerprint(config.path));
+    EXPECT_EQ(claim.at("ocp_config_fnv1a"), io::fileFingerprint(config.ocp_path));
+    EXPECT_EQ(fs::weakly_canonical(entry.path() / claim.at("ocp").get<std::string>()),
+              fs::weakly_canonical(config.ocp_path));
+    EXPECT_EQ(claim.at("robot_file_fnv1a"), io::fileFingerprint(config.base.robot_path));
+    EXPECT_EQ(claim.at("guess_gait_fnv1a"), io::fileFingerprint(config.base.guess_gait_path));
+    ++checked;
+  }
+  EXPECT_EQ(checked, 3);  // library_mu2004, library_cot_speed_mu2004, library_slope_mu2004
 }
 
 }  // namespace
