@@ -22,6 +22,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -43,6 +44,8 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr int kMeshes[] = {24, 27, 30, 33, 36};
+/// Appended to a library's name for the draws that retry its failed points from a neighbour.
+constexpr std::string_view kRetrySuffix = " (neighbour start)";
 
 /// One solve: the config, its SSP mesh, where it started, and how it ended.
 struct Draw {
@@ -142,7 +145,7 @@ std::vector<Draw> libraryDraws(const std::string& path, const std::string& scrat
       const auto from = std::find_if(near.begin(), near.end(), [&](int q) { return solved[q]; });
       if (from == near.end()) continue;
       const library::IndexRow row = library::solveLibraryPoint(setup, {p, *from});
-      draws.push_back(drawOf(name + " (neighbour start)", segments, row));
+      draws.push_back(drawOf(name + std::string(kRetrySuffix), segments, row));
       tried[p] = progress = true;
       solved[p] = row.converged;
     }
@@ -167,12 +170,11 @@ std::string csvOf(const std::vector<Draw>& draws) {
 /// one problem however many starts it took: its first draw, and the neighbour-start draw that
 /// libraryDraws adds only for a point whose first draw failed (once per point).
 std::pair<int, int> problemTally(const std::vector<Draw>& draws) {
-  const std::string retry = " (neighbour start)";
   int solved = 0, problems = 0;
   for (const Draw& d : draws) {
-    const bool is_retry =
-        d.config.size() > retry.size() &&
-        d.config.compare(d.config.size() - retry.size(), retry.size(), retry) == 0;
+    const std::string_view name = d.config;
+    const bool is_retry = name.size() > kRetrySuffix.size() &&
+                          name.substr(name.size() - kRetrySuffix.size()) == kRetrySuffix;
     problems += is_retry ? 0 : 1;  // a retry is a point already counted by its first draw
     solved += d.converged ? 1 : 0;
   }

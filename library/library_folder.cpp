@@ -65,7 +65,7 @@ LibraryFolder readLibraryFolder(const std::string& dir) {
   return {Grid(walk, std::move(config)), ocp::loadOcpConfig(ocp_path.string())};
 }
 
-void claimLibraryFolder(const LibrarySetup& s) {
+nlohmann::ordered_json libraryClaim(const LibrarySetup& s) {
   nlohmann::ordered_json axes;
   for (int a = 0; a < s.grid.dimensions(); ++a) axes[s.grid.axisName(a)] = s.grid.axes()[a];
   nlohmann::ordered_json claim = {
@@ -87,7 +87,11 @@ void claimLibraryFolder(const LibrarySetup& s) {
   // Values set on the command line change the library config without changing its file. Keyed
   // only when given, so a folder made without them still resumes.
   if (!s.result.config_overrides.empty()) claim["config_overrides"] = s.result.config_overrides;
-  io::claimSettings(s.out_dir + "/library.json", claim);
+  return claim;
+}
+
+void claimLibraryFolder(const LibrarySetup& s) {
+  io::claimSettings(s.out_dir + "/library.json", libraryClaim(s));
 }
 
 ScheduleState previousState(const LibrarySetup& s, const LibraryIndex& index, bool retry_failed) {

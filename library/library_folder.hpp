@@ -47,9 +47,13 @@ class FolderGaits {
 /// @throws config::ConfigError when DIR is not a library folder or library.json is malformed.
 LibraryFolder readLibraryFolder(const std::string& dir);
 
-/// Writes library.json for `setup`, or checks that the one there says the same: the grid, the
-/// base problem's path and the contents of the library, OCP, robot and guess gait files, and
-/// the rate of the points' trajectories.
+/// What library.json records for `setup`: the grid, the base problem's path from the folder, the
+/// contents of the library, OCP, robot and guess gait files, the rate and any --set values.
+nlohmann::ordered_json libraryClaim(const LibrarySetup& setup);
+
+/// Writes libraryClaim(setup) as library.json, or checks that the one there says the same: the
+/// grid, the base problem's path and the contents of the library, OCP, robot and guess gait files,
+/// and the rate of the points' trajectories.
 /// @throws config::ConfigError when the folder holds a library of another grid, base problem,
 ///         file contents or rate (a rerun would mix gaits of two libraries in one index).
 void claimLibraryFolder(const LibrarySetup& setup);
