@@ -65,7 +65,7 @@ Draw drawOf(const std::string& name, int segments, const std::string& start,
 /// The config at an SSP mesh of `segments` equal segments (mesh refinement left as configured).
 ocp::OcpConfig atMesh(ocp::OcpConfig config, int segments) {
   config.phases.front().segments = segments;
-  config.phases.front().mesh.clear();
+  config.phases.front().clearMesh();
   config.solver.progress = false;
   return config;
 }

@@ -3,8 +3,10 @@
 /// (constraints.dsp_reduced_coordinates, ocp/problem/dsp_chart.hpp), on each five-link problem with
 /// a double support: solve time (median of `repeats` in this process), iterations, cost, and on the
 /// 1 kHz export the DSP tip's drift, foot B's centre of pressure and the friction ratio; the drift
-/// at the collocation points themselves beside it. Meshes: the config's equal segments, and a DSP
-/// mesh finer after the impact. Usage: dsp_coordinates [repeats]   (prints a markdown table)
+/// at the collocation points themselves beside it, and the export's rates and accelerations against
+/// the differences of its angles and rates (gaits/export/export_checks.hpp). Meshes: the config's
+/// equal segments, and a DSP graded from 5 ms after the impact. Usage: dsp_coordinates [repeats]
+/// (prints a markdown table)
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -25,31 +27,37 @@ using namespace gaitopt;
 struct Variant {
   const char* name;
   bool reduced;
-  std::vector<double> mesh;  ///< of the DSP; empty: the config's equal segments
+  int segments;          ///< of the DSP; 0: the config's
+  double first_segment;  ///< PhaseConfig::first_segment; 0: equal segments
 };
 
-/// The DSP's first segment shortened to 10 ms: the forces change fastest after the impact.
-const std::vector<double> kGraded = {0, 0.1, 0.28, 0.46, 0.64, 0.82, 1.0};
-
-const std::vector<Variant> kVariants = {{"theta, equal segments", false, {}},
-                                        {"reduced, equal segments", true, {}},
-                                        {"theta, finer after impact", false, kGraded},
-                                        {"reduced, finer after impact", true, kGraded}};
+/// Graded: a 5 ms first DSP segment, each later one at most 1.5 times the one before (the forces
+/// change fastest after the impact), 7 segments instead of 6.
+const std::vector<Variant> kVariants = {{"theta, equal segments", false, 0, 0.0},
+                                        {"reduced, equal segments", true, 0, 0.0},
+                                        {"theta, graded", false, 7, 0.05},
+                                        {"reduced, graded", true, 7, 0.05}};
 
 void printRow(const std::string& config, const Variant& v, int repeats) {
   ocp::OcpConfig c = ocp::loadOcpConfig(std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/" + config);
   c.dsp_reduced_coordinates = v.reduced;
-  c.phases.back().mesh = v.mesh;
+  c.phases.back().clearMesh();
+  if (v.segments > 0) c.phases.back().segments = v.segments;
+  c.phases.back().first_segment = v.first_segment;
   const dynamics::Model model = ocp::problemModel(c);
   const ocp::GaitProblem p = ocp::buildGaitProblem(model, c, ocp::polynomialGuess(model, c));
   const bench::TimedSolve s = bench::solveRepeated(p.nlp, c.solver, repeats, 2.0);
   const Eigen::VectorXd& x = s.last.x;
   const gaits::Trajectory dense = ocp::reconstructDense(p, model, x, 1000.0);
   const double friction = gaits::maxFrictionRatio(dense);
-  fmt::print("| {} | {} | {} | {} | {:.6g} | {:.3f} | {:.1e} | {:.1e} | {:+.4f} | {:.3f} |\n",
-             config, v.name, s.last.success ? "yes" : "no", s.last.iterations, s.last.cost, s.wall,
-             gaits::maxDspTipDrift(ocp::reconstruct(p, model, x), model),
-             gaits::maxDspTipDrift(dense, model), gaits::minFootCopMargin(dense, model), friction);
+  fmt::print(
+      "| {} | {} | {} | {} | {:.6g} | {:.3f} | {:.1e} | {:.1e} | {:+.4f} | {:.4f} | {:.2f} | "
+      "{:.2f} "
+      "|\n",
+      config, v.name, s.last.success ? "yes" : "no", s.last.iterations, s.last.cost, s.wall,
+      gaits::maxDspTipDrift(ocp::reconstruct(p, model, x), model),
+      gaits::maxDspTipDrift(dense, model), gaits::minFootCopMargin(dense, model), friction,
+      100 * gaits::maxRateMismatch(dense), 100 * gaits::maxAccelerationMismatch(dense));
 }
 
 }  // namespace
@@ -58,8 +66,9 @@ int main(int argc, char** argv) {
   const int repeats = argc > 1 ? std::atoi(argv[1]) : 3;
   fmt::print(
       "| config | DSP | converged | iterations | cost | wall s | tip drift at the points m | "
-      "tip drift at 1 kHz m | least foot-B CoP margin at 1 kHz m | friction ratio at 1 kHz |\n"
-      "|---|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
+      "tip drift at 1 kHz m | least foot-B CoP margin at 1 kHz m | friction ratio at 1 kHz | "
+      "rate mismatch % of peak | acceleration mismatch % of peak |\n"
+      "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const char* config : {"mu2004_walk.yaml", "mu2004_walk_robust.yaml", "mu2004_walk_cot.yaml"})
     for (const Variant& v : kVariants) printRow(config, v, repeats);
   fmt::print("\nMedians of {} solves per row in one process (one for a solve over 2 s).\n",

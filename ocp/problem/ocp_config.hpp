@@ -22,8 +22,20 @@ struct PhaseConfig {
   double duration_max = 0;
   int segments = 0;
   std::vector<double> mesh;  ///< segment boundaries as fractions of T; empty: equal segments
+  /// Fraction of T spanned by the first segment, each later one at most 1.5 times the one before
+  /// and the rest equal (a mesh finer after an impact that follows the segment count); 0: equal
+  /// segments. Not with `mesh`.
+  double first_segment = 0;
 
   bool freeDuration() const { return duration_max > 0; }
+  /// The segment boundaries the phase is built on: `mesh` if given, else the graded one of
+  /// `first_segment` (on 2 segments or more), else empty (equal segments).
+  std::vector<double> fractions() const;
+  /// Equal segments from now on (a mesh continuation or a refinement replaces the mesh).
+  void clearMesh() {
+    mesh.clear();
+    first_segment = 0;
+  }
 };
 
 /// Weights of the running-cost terms; those at 0 are left out. Cost of transport is the

@@ -120,7 +120,7 @@ Phase addPhaseVariables(Nlp& nlp, const dynamics::Model& model, const OcpConfig&
                              .nu = phase.point.u.size,
                              .nz = phase.point.algebraicSize(),
                              .nq = phase.point.q.size,
-                             .mesh = spec.mesh.mesh};
+                             .mesh = spec.mesh.fractions()};
   PhaseLayout& l = phase.layout;
   l.validate();
   l.duration_index = shared_duration ? *shared_duration : addDuration(nlp, spec.mesh, phase.name());

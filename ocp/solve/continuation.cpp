@@ -100,7 +100,8 @@ OcpConfig withSolvedDurations(OcpConfig config, const GaitProblem& problem,
 /// Whether `segments` equal segments per phase are the configured mesh already.
 bool isConfiguredMesh(const OcpConfig& config, const std::vector<int>& segments) {
   for (size_t i = 0; i < config.phases.size(); ++i)
-    if (config.phases[i].segments != segments[i] || !config.phases[i].mesh.empty()) return false;
+    if (config.phases[i].segments != segments[i] || !config.phases[i].fractions().empty())
+      return false;
   return true;
 }
 

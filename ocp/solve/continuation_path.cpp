@@ -89,7 +89,7 @@ bool pathMoves(const OcpConfig& target) {
 OcpConfig onSegments(OcpConfig config, const std::vector<int>& segments) {
   for (size_t i = 0; i < config.phases.size() && i < segments.size(); ++i) {
     config.phases[i].segments = segments[i];
-    config.phases[i].mesh.clear();
+    config.phases[i].clearMesh();
   }
   return config;
 }

@@ -25,6 +25,7 @@ bool refine(OcpConfig& config, const GaitProblem& p, const SolveResult& r,
   for (size_t i = 0; i < phases.size(); ++i) {
     const PhaseLayout& l = phases[i]->layout;
     PhaseConfig& phase = config.phases[i];
+    phase.clearMesh();
     phase.mesh = refinedMesh(l, errors[i], config.refinement.tolerance);
     changed = changed || static_cast<int>(phase.mesh.size()) - 1 != l.segments;
     phase.segments = static_cast<int>(phase.mesh.size()) - 1;

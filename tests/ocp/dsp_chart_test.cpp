@@ -116,6 +116,29 @@ TEST(DspChart, ConfigReadsTheSwitchAndAPhaseMesh) {
   const std::string typo =
       test::loadEditedOcpConfig(file, "  friction_margin: 0.15", "  dsp_reduced_coordinate: true");
   EXPECT_NE(typo.find("dsp_reduced_coordinates"), std::string::npos) << typo;  // names the key
+  const std::string both = test::loadEditedOcpConfig(
+      file, dsp,
+      "  - {name: DSP, duration: 0.1, segments: 2, mesh: [0, 0.25, 1], first_segment: 0.1}");
+  EXPECT_NE(both.find("either mesh or first_segment"), std::string::npos) << both;
+  const std::string one = test::loadEditedOcpConfig(
+      file, dsp, "  - {name: DSP, duration: 0.1, segments: 1, first_segment: 0.1}");
+  EXPECT_NE(one.find("needs at least 2 segments"), std::string::npos) << one;
+}
+
+TEST(DspChart, AGradedPhaseGrowsByAtMostHalfThenSharesTheRestEqually) {
+  PhaseConfig p{.name = "DSP", .duration = 0.1, .segments = 7, .first_segment = 0.05};
+  // 5 ms, 7.5 ms, 11.25 ms, 16.875 ms, then the 59.375 ms left in three equal parts.
+  const std::vector<double> expected = {
+      0, 0.05, 0.125, 0.2375, 0.40625, 0.40625 + 0.59375 / 3, 0.40625 + 2 * 0.59375 / 3, 1};
+  const std::vector<double> f = p.fractions();
+  ASSERT_EQ(f.size(), expected.size());
+  for (size_t k = 0; k < f.size(); ++k) EXPECT_NEAR(f[k], expected[k], 1e-15) << k;
+  p.segments = 2;  // one segment after the first: it takes all that is left
+  EXPECT_EQ(p.fractions(), (std::vector<double>{0, 0.05, 1}));
+  p.mesh = {0, 0.5, 1};  // an explicit mesh wins
+  EXPECT_EQ(p.fractions(), p.mesh);
+  p.clearMesh();
+  EXPECT_TRUE(p.fractions().empty());
 }
 
 /// The default problem solved with the DSP in reduced coordinates (or theta collocated).
@@ -127,7 +150,8 @@ struct DspSolve {
 DspSolve solveDefaultDsp(const dynamics::Model& model, bool reduced) {
   auto c = reducedConfig("mu2004_walk.yaml");
   c.dsp_reduced_coordinates = reduced;
-  c.phases.back().mesh = kGradedMesh;
+  c.phases.back().segments = 7;
+  c.phases.back().first_segment = 0.05;  // graded from 5 ms (results/dsp_coordinates.md)
   DspSolve s{buildGaitProblem(model, c, polynomialGuess(model, c)), {}};
   s.result = solveWithIpopt(s.problem.nlp, c.solver);
   return s;
@@ -143,13 +167,20 @@ TEST(DspChart, DefaultOptimumsDenseExportHoldsTheTipAtThePointsAndBetweenThem) {
   RecordProperty("drift_at_points_m", fmt::format("{:.2e}", at_points));
   RecordProperty("drift_between_points_m", fmt::format("{:.2e}", between));
   EXPECT_LT(at_points, 1e-6);  // the export contract's DSP tip bound; measured 1e-13 for both
-  EXPECT_LT(between, 1e-4);
+  EXPECT_LT(between, 1e-6);
   // The export is the pinned chain's motion: E does not accelerate, the equations of motion
-  // hold, the rates are the angles' derivatives and foot B's CoP stays on the foot.
+  // hold, the rates and accelerations are the derivatives of the angles and rates (issue 34:
+  // 0.2 % and 1 % of their peaks; measured 0.13 % and 0.91 %), and on the graded mesh the tip
+  // force and foot B's CoP keep between the points the bounds they meet at them (on a 10 ms
+  // first segment the force left the cone by 1 % and the CoP moved 1.4 cm).
   EXPECT_LT(gaits::maxTipAcceleration(dense, model), 1e-9);
   EXPECT_LT(gaits::maxDynamicsResidual(dense, model), 1e-9);
   EXPECT_LT(gaits::maxRateMismatch(dense), 2e-3);
-  EXPECT_GT(gaits::minFootCopMargin(dense, model), 0.0);
+  EXPECT_LT(gaits::maxAccelerationMismatch(dense), 1e-2);
+  const OcpConfig c = loadOcpConfig(kDir + "mu2004_walk.yaml");
+  EXPECT_LT(gaits::maxFrictionRatio(dense), (model.friction() - c.friction_margin) * (1 + 1e-3));
+  const gaits::Trajectory points = reconstruct(s.problem, model, s.result.x);
+  EXPECT_GT(gaits::minFootCopMargin(dense, model), gaits::minFootCopMargin(points, model) - 1e-3);
 
   // Collocating theta misses both bounds: the test tells the two apart.
   const DspSolve theta = solveDefaultDsp(model, false);
