@@ -51,9 +51,8 @@ void printRow(const std::string& config, const Variant& v, int repeats) {
   const gaits::Trajectory dense = ocp::reconstructDense(p, model, x, 1000.0);
   const double friction = gaits::maxFrictionRatio(dense);
   fmt::print(
-      "| {} | {} | {} | {} | {:.6g} | {:.3f} | {:.1e} | {:.1e} | {:+.4f} | {:.4f} | {:.2f} | "
-      "{:.2f} "
-      "|\n",
+      "| {} | {} | {} | {} | {:.6g} | {:.3f} | {:.1e} | {:.1e} | {:+.4f} | {:.4f} | {:.2f} "
+      "| {:.2f} |\n",
       config, v.name, s.last.success ? "yes" : "no", s.last.iterations, s.last.cost, s.wall,
       gaits::maxDspTipDrift(ocp::reconstruct(p, model, x), model),
       gaits::maxDspTipDrift(dense, model), gaits::minFootCopMargin(dense, model), friction,

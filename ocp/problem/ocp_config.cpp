@@ -217,7 +217,7 @@ std::vector<double> PhaseConfig::fractions() const {
   // Each segment at most kGrowth times the one before, else an equal share of what is left: a
   // jump in segment length is a jump in the export's jerk at the shared point, which 1 kHz
   // differences of the rates see (doubling after a 5 ms first segment: 0.97 % of the peak
-  // acceleration; growing by 1.5: 0.91 %; configs/ocp/mu2004_walk.yaml).
+  // acceleration; growing by 1.5: 0.91 %; results/dsp_coordinates.md).
   constexpr double kGrowth = 1.5;
   std::vector<double> f{0.0};
   double length = first_segment;

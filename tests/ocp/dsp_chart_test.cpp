@@ -161,7 +161,8 @@ TEST(DspChart, DefaultOptimumsDenseExportHoldsTheTipAtThePointsAndBetweenThem) {
   const auto model = dynamics::loadRobot(loadOcpConfig(kDir + "mu2004_walk.yaml").robot_path);
   const DspSolve s = solveDefaultDsp(model, true);
   ASSERT_TRUE(s.result.success) << s.result.status;
-  const double at_points = gaits::maxDspTipDrift(reconstruct(s.problem, model, s.result.x), model);
+  const gaits::Trajectory points = reconstruct(s.problem, model, s.result.x);
+  const double at_points = gaits::maxDspTipDrift(points, model);
   const gaits::Trajectory dense = reconstructDense(s.problem, model, s.result.x, 1000.0);
   const double between = gaits::maxDspTipDrift(dense, model);
   RecordProperty("drift_at_points_m", fmt::format("{:.2e}", at_points));
@@ -179,7 +180,6 @@ TEST(DspChart, DefaultOptimumsDenseExportHoldsTheTipAtThePointsAndBetweenThem) {
   EXPECT_LT(gaits::maxAccelerationMismatch(dense), 1e-2);
   const OcpConfig c = loadOcpConfig(kDir + "mu2004_walk.yaml");
   EXPECT_LT(gaits::maxFrictionRatio(dense), (model.friction() - c.friction_margin) * (1 + 1e-3));
-  const gaits::Trajectory points = reconstruct(s.problem, model, s.result.x);
   EXPECT_GT(gaits::minFootCopMargin(dense, model), gaits::minFootCopMargin(points, model) - 1e-3);
 
   // Collocating theta misses both bounds: the test tells the two apart.
