@@ -8,9 +8,9 @@
 #include "dynamics/joint_coordinates.hpp"
 #include "ocp/problem/dsp_chart.hpp"
 #include "ocp/problem/ground_contact.hpp"
+#include "ocp/problem/interior_work.hpp"
 #include "ocp/problem/jerk_limit.hpp"
 #include "ocp/problem/path_functions.hpp"
-#include "ocp/problem/quarter_work.hpp"
 #include "ocp/transcription/biped_dynamics.hpp"
 
 namespace gaitopt::ocp {
@@ -92,13 +92,13 @@ void addPhaseCost(Nlp& nlp, const dynamics::Model& model, const OcpConfig& c, co
   addPathConstraint(nlp, phase, "work_split", std::make_shared<WorkSplit>(phase.point));
   const double weight = c.cost.abs_work + c.cost.cost_of_transport /
                                               (model.totalMass() * model.gravity() * c.step_length);
-  // Hermite-Simpson: the work is also split at the segments' quarter points (quarter_work.hpp),
-  // so it holds between the points; the points then carry the five-point rule's weights.
-  const bool quarters = phase.layout.scheme == Scheme::kHermiteSimpson;
+  // Hermite-Simpson: the work is also split inside the segments (interior_work.hpp), so it holds
+  // between the points; the points then carry their share of the composite Simpson rule.
+  const bool interior = phase.layout.scheme == Scheme::kHermiteSimpson;
   nlp.addCost(std::make_unique<QuadratureCost>(
       phase.name() + "_abs_work", phase.layout, std::make_shared<AbsoluteWork>(phase.point, weight),
-      quarters ? fivePointWeights(phase.layout) : Eigen::VectorXd()));
-  if (quarters) addQuarterWork(nlp, phase, weight);
+      interior ? pointWeights(phase.layout) : Eigen::VectorXd()));
+  if (interior) addInteriorWork(nlp, phase, weight);
 }
 
 }  // namespace

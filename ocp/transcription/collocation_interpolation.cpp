@@ -6,34 +6,27 @@
 namespace gaitopt::ocp {
 namespace {
 
-constexpr int kMaxBasis = 3;
-using Basis = std::array<double, kMaxBasis>;
-
-/// Lagrange basis at s = tau / h on the points of one segment: (0, 1) for trapezoidal,
-/// (0, 1/2, 1) for Hermite-Simpson.
-Basis lagrange(Scheme scheme, double s) {
-  if (scheme == Scheme::kTrapezoidal) return {1 - s, s, 0};
-  return {(2 * s - 1) * (s - 1), 4 * s * (1 - s), s * (2 * s - 1)};
-}
-
-/// Integrals of the same basis from 0 to s, in units of h; at s = 1 they are the trapezoid
-/// and Simpson weights, at s = 1/2 (5/24, 1/3, -1/24), the separated Hermite condition.
-Basis lagrangeIntegral(Scheme scheme, double s) {
-  if (scheme == Scheme::kTrapezoidal) return {s - s * s / 2, s * s / 2, 0};
-  const double s2 = s * s, s3 = s2 * s;
-  return {2 * s3 / 3 - 3 * s2 / 2 + s, 2 * s2 - 4 * s3 / 3, 2 * s3 / 3 - s2 / 2};
-}
-
-/// Integrals of lagrangeIntegral from 0 to s, in units of h^2. At s = 1 they meet the
+/// Integrals of lagrangeBasisIntegral from 0 to s, in units of h^2. At s = 1 they meet the
 /// scheme's own position update: (1/6, 1/3, 0) h^2 for Hermite-Simpson, (1/3, 1/6) for
 /// trapezoidal.
-Basis lagrangeDoubleIntegral(Scheme scheme, double s) {
+SegmentBasis lagrangeDoubleIntegral(Scheme scheme, double s) {
   const double s2 = s * s, s3 = s2 * s, s4 = s3 * s;
   if (scheme == Scheme::kTrapezoidal) return {s2 / 2 - s3 / 6, s3 / 6, 0};
   return {s4 / 6 - s3 / 2 + s2 / 2, 2 * s3 / 3 - s4 / 3, s4 / 6 - s3 / 6};
 }
 
 }  // namespace
+
+SegmentBasis lagrangeBasis(Scheme scheme, double s) {
+  if (scheme == Scheme::kTrapezoidal) return {1 - s, s, 0};
+  return {(2 * s - 1) * (s - 1), 4 * s * (1 - s), s * (2 * s - 1)};
+}
+
+SegmentBasis lagrangeBasisIntegral(Scheme scheme, double s) {
+  if (scheme == Scheme::kTrapezoidal) return {s - s * s / 2, s * s / 2, 0};
+  const double s2 = s * s, s3 = s2 * s;
+  return {2 * s3 / 3 - 3 * s2 / 2 + s, 2 * s2 - 4 * s3 / 3, 2 * s3 / 3 - s2 / 2};
+}
 
 int segmentAt(const PhaseLayout& layout, double t, double total) {
   const double s = t / total;
@@ -63,7 +56,8 @@ SegmentPlace placeOf(const PhaseLayout& l, const Eigen::VectorXd& decision, doub
 
 Eigen::VectorXd interpolatePoint(const PhaseLayout& l, const Eigen::VectorXd& decision, double t) {
   const SegmentPlace p = placeOf(l, decision, t);
-  const Basis value = lagrange(l.scheme, p.s), integral = lagrangeIntegral(l.scheme, p.s);
+  const SegmentBasis value = lagrangeBasis(l.scheme, p.s),
+                     integral = lagrangeBasisIntegral(l.scheme, p.s);
   Eigen::VectorXd point = Eigen::VectorXd::Zero(l.pointSize());
   for (int j = 0; j < p.count; ++j)
     point += value[static_cast<size_t>(j)] * l.point(decision, p.first + j);
@@ -80,7 +74,7 @@ Eigen::VectorXd exportPoint(const PhaseLayout& l, const Eigen::VectorXd& decisio
   Eigen::VectorXd point = interpolatePoint(l, decision, t);
   if (l.nq == 0) return point;
   const SegmentPlace p = placeOf(l, decision, t);
-  const Basis twice = lagrangeDoubleIntegral(l.scheme, p.s);
+  const SegmentBasis twice = lagrangeDoubleIntegral(l.scheme, p.s);
   for (int i = 0; i < l.nq; ++i) {  // q = q_k + v_k (t - t_k) + double integral of a
     double q = decision(l.x(p.first, i)) + p.h * p.s * decision(l.x(p.first, l.nq + i));
     for (int j = 0; j < p.count; ++j)

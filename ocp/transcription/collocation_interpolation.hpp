@@ -8,10 +8,21 @@
 /// In the second-order form x = (q, v) the derivative of q is the interpolated v of the points
 /// and that of v the interpolated acceleration.
 #include <Eigen/Core>
+#include <array>
 
 #include "ocp/transcription/collocation.hpp"
 
 namespace gaitopt::ocp {
+
+/// Weights of a segment's points, (0, 1) for trapezoidal, (0, 1/2, 1) for Hermite-Simpson.
+using SegmentBasis = std::array<double, 3>;
+
+/// The Lagrange basis on a segment's points at local time s = tau / h in [0, 1].
+SegmentBasis lagrangeBasis(Scheme scheme, double s);
+
+/// Integrals of the Lagrange basis from 0 to s, in units of h; at s = 1 they are the trapezoid
+/// and Simpson weights, at s = 1/2 (5/24, 1/3, -1/24), the separated Hermite condition.
+SegmentBasis lagrangeBasisIntegral(Scheme scheme, double s);
 
 /// The segment holding phase time t (clamped to the phase), for duration `total`.
 int segmentAt(const PhaseLayout& layout, double t, double total);
