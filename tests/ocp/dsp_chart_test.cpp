@@ -126,7 +126,7 @@ TEST(DspChart, ConfigReadsTheSwitchAndAPhaseMesh) {
 }
 
 TEST(DspChart, AGradedPhaseGrowsByAtMostHalfThenSharesTheRestEqually) {
-  PhaseConfig p{.name = "DSP", .duration = 0.1, .segments = 7, .first_segment = 0.05};
+  PhaseConfig p{.name = "DSP", .duration = 0.1, .segments = 7, .mesh = {}, .first_segment = 0.05};
   // 5 ms, 7.5 ms, 11.25 ms, 16.875 ms, then the 59.375 ms left in three equal parts.
   const std::vector<double> expected = {
       0, 0.05, 0.125, 0.2375, 0.40625, 0.40625 + 0.59375 / 3, 0.40625 + 2 * 0.59375 / 3, 1};
