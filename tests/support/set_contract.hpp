@@ -110,11 +110,16 @@ inline std::vector<std::string> checkConstraintSet(const ocp::ConstraintSet& set
   const Eigen::MatrixXd hess_lower = denseChecked(ht, n, n, true, "Hessian", broken);
   const Eigen::MatrixXd hess = hess_lower.selfadjointView<Eigen::Lower>();
 
+  // J(z)^T lambda from the triplets, O(nonzeros): a dense m x n Jacobian per difference made the
+  // contract quadratic in the problem's size (entries outside the matrix are reported above).
   auto lagrangianGradient = [&](const Eigen::VectorXd& z) -> Eigen::VectorXd {
-    std::vector<std::string> ignored;
     ocp::Triplets t;
     set.jacobian(z, t);
-    return denseChecked(t, m, n, false, "", ignored).transpose() * lambda;
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(n);
+    for (const auto& e : t)
+      if (e.row() >= 0 && e.row() < m && e.col() >= 0 && e.col() < n)
+        g(e.col()) += e.value() * lambda(e.row());
+    return g;
   };
   Eigen::MatrixXd fd_jac(m, n), fd_hess(n, n);
   for (int k = 0; k < n; ++k) {
