@@ -155,8 +155,7 @@ void InteriorWorkCost::hessian(const Eigen::VectorXd&, double factor, Triplets& 
 }
 
 Eigen::VectorXd pointWeights(const PhaseLayout& layout) {
-  const double end = 1.0 / (3.0 * kWorkSubIntervals);
-  const double middle = (kWorkSubIntervals / 2 % 2 == 1 ? 4.0 : 2.0) * end;
+  const double end = simpsonWeight(0), middle = simpsonWeight(kWorkSubIntervals / 2);
   Eigen::VectorXd w = Eigen::VectorXd::Zero(layout.points());
   for (int k = 0; k < layout.segments; ++k) {
     const double h = layout.segmentFraction(k);

@@ -21,6 +21,13 @@ namespace gaitopt::ocp {
 /// integrated (even).
 inline constexpr int kWorkSubIntervals = 8;
 
+/// Composite Simpson weight, in units of h, of sub-interval end i (0 .. kWorkSubIntervals): 1 at
+/// the segment's ends, 4 at odd ends and 2 at even ones, over 3 kWorkSubIntervals.
+constexpr double simpsonWeight(int i) {
+  const double w = i == 0 || i == kWorkSubIntervals ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0);
+  return w / (3.0 * kWorkSubIntervals);
+}
+
 /// The split slacks of one phase: per segment k and sample r (the sub-interval ends inside the
 /// segment but its midpoint, in time order), s+ (n) then s- (n), all >= 0.
 struct InteriorSlacks {
@@ -30,8 +37,8 @@ struct InteriorSlacks {
   int samples() const { return kWorkSubIntervals - 2; }
   /// Local time s in (0, 1) of sample r.
   double at(int r) const { return static_cast<double>(end(r)) / kWorkSubIntervals; }
-  /// Composite Simpson weight of sample r in units of h: 4 at odd ends, 2 at even ones, / 3.
-  double weight(int r) const { return (end(r) % 2 == 1 ? 4.0 : 2.0) / (3.0 * kWorkSubIntervals); }
+  /// Composite Simpson weight of sample r in units of h.
+  double weight(int r) const { return simpsonWeight(end(r)); }
   /// The sub-interval end (1 .. kWorkSubIntervals - 1, the midpoint skipped) of sample r.
   int end(int r) const { return r + 1 < kWorkSubIntervals / 2 ? r + 1 : r + 2; }
   int size() const { return segments * samples() * 2 * n; }
