@@ -28,6 +28,10 @@ install(TARGETS ${gaitopt_targets} gaitopt_options EXPORT gaitoptTargets
 set_target_properties(gaitopt_kkt PROPERTIES EXPORT_NAME kkt)
 install(TARGETS gaitopt_kkt EXPORT gaitoptTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/gaitopt)
+# The DART plant's module (sim/CMakeLists.txt) beside it, where walkDart's dlopen looks.
+if(TARGET gaitopt_dart)
+  install(TARGETS gaitopt_dart LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/gaitopt)
+endif()
 set_target_properties(gaitopt_cli PROPERTIES
   INSTALL_RPATH "$ORIGIN/../${CMAKE_INSTALL_LIBDIR}/gaitopt")
 install(TARGETS gaitopt_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

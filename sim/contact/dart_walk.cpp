@@ -271,11 +271,9 @@ class DartPlant {
   bool started_ = false;
 };
 
-}  // namespace
-
-WalkResult walkDart(const dynamics::Model& plant, const Controller& controller,
-                    const Reference& ref, const DartGround& ground, const WalkPlan& plan,
-                    const WalkLog& log, const VecD& theta0, const VecD& dtheta0) {
+WalkResult walkInDart(const dynamics::Model& plant, const Controller& controller,
+                      const Reference& ref, const DartGround& ground, const WalkPlan& plan,
+                      const WalkLog& log, const VecD& theta0, const VecD& dtheta0) {
   auto dart = std::make_shared<DartPlant>(plant, ground);
   const FreeBaseGround free_base{"dart", ground.time_step,
                                  [dart](const FreeBaseState& s, const TorqueFeedback& torque) {
@@ -284,4 +282,11 @@ WalkResult walkDart(const dynamics::Model& plant, const Controller& controller,
   return walkFreeBase(plant, controller, ref, free_base, plan, log, theta0, dtheta0);
 }
 
+}  // namespace
+
 }  // namespace gaitopt::sim
+
+/// What dart_walk_module.cpp looks up in this module (kDartModuleEntry).
+extern "C" __attribute__((visibility("default"))) gaitopt::sim::DartWalk gaitopt_dart_walk() {
+  return &gaitopt::sim::walkInDart;
+}
