@@ -33,7 +33,7 @@ namespace gaitopt::sim {
 /// (FCL, Assimp, urdfdom, Octomap: 80 000 symbol relocations) live in a module of their own,
 /// libgaitopt_dart.so beside libpardiso.so (dart_walk_module.cpp), loaded at the first DART walk:
 /// linked into the tool, they took 15 ms of the dynamic linker's time at every start of every
-/// command (gaitopt --version 21 ms against 6 ms without them), a fifth of a whole default solve.
+/// command (gaitopt --version 21 ms against 8 ms without them), 12 % of a whole default solve.
 /// @throws std::invalid_argument when this build has no DART (cmake -DGAITOPT_DART=ON),
 /// std::runtime_error when the module cannot be loaded.
 WalkResult walkDart(const dynamics::Model& plant, const Controller& controller,
