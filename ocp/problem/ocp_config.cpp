@@ -84,7 +84,7 @@ void readConstraints(const YamlReader& r, OcpConfig& c) {
   r.allowOnly({"torque_limits", "knee_limits", "angle_range", "rate_limit", "joint_velocity_limits",
                "swing_descends", "trailing_lifts", "ground_contact", "impact_friction", "zmp",
                "clearance", "friction_margin", "zmp_margin", "min_normal_force",
-               "dsp_reduced_coordinates", "jerk_limit"});
+               "dsp_reduced_coordinates", "jerk_limit", "interior_contact"});
   c.ground_contact = r.booleanOr("ground_contact", true);
   c.impact_friction = r.booleanOr("impact_friction", true);
   c.zmp = r.booleanOr("zmp", true);
@@ -94,6 +94,13 @@ void readConstraints(const YamlReader& r, OcpConfig& c) {
   c.min_normal_force = r.numberOr("min_normal_force", 0.0, config::inRange(0, 1e4, "[N]"));
   if (c.min_normal_force > 0 && !c.ground_contact)
     r.fail("min_normal_force", "a least normal force needs ground_contact: true");
+  const double interior =
+      r.numberOr("interior_contact", 0, config::inRange(0, 32, "(sub-intervals)"));
+  if (interior != 0 && (interior < 4 || std::fmod(interior, 2.0) != 0))
+    r.fail("interior_contact", "expected 0 or an even number of sub-intervals >= 4");
+  if (interior > 0 && !c.ground_contact)
+    r.fail("interior_contact", "interior contact rows need ground_contact: true");
+  c.interior_contact = static_cast<int>(interior);
   if (r.has("clearance")) c.clearance = readClearance(r.map("clearance"));
   c.torque_limits = r.booleanOr("torque_limits", true);
   c.knee_limits = r.booleanOr("knee_limits", true);

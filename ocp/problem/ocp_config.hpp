@@ -102,6 +102,9 @@ struct OcpConfig {
   /// |ddtheta_{p+1} - ddtheta_p| <= J (t_{p+1} - t_p) between consecutive points [rad/s^3]
   /// (jerk_limit.hpp; 0: off)
   double jerk_limit = 0;
+  /// The single support's contact rows also at the interior ends of this many equal
+  /// sub-intervals of every segment (interior_contact.hpp; 0: at the points only)
+  int interior_contact = 0;
   /// |dq_j| <= the robot's velocity_limit per joint, dq = M dtheta (Mu 2.41)
   bool joint_velocity_limits = false;
   bool swing_descends = true;  ///< swing tip vertical velocity <= 0 at strike

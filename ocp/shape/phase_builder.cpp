@@ -8,6 +8,7 @@
 #include "dynamics/joint_coordinates.hpp"
 #include "ocp/problem/dsp_chart.hpp"
 #include "ocp/problem/ground_contact.hpp"
+#include "ocp/problem/interior_contact.hpp"
 #include "ocp/problem/interior_work.hpp"
 #include "ocp/problem/jerk_limit.hpp"
 #include "ocp/problem/path_functions.hpp"
@@ -154,9 +155,12 @@ void addPhaseSets(Nlp& nlp, const dynamics::Model& model, const OcpConfig& c, co
     const auto zmp_foot = c.zmp && model.joints().front().actuated
                               ? std::optional<dynamics::Foot>(marginFoot(model, c))
                               : std::nullopt;
-    addPathConstraint(nlp, phase, "ground_contact",
-                      std::make_shared<GroundContact>(model, phase.point, zmp_foot, c.step_length,
-                                                      frictionBound(model, c), c.min_normal_force));
+    const auto contact = std::make_shared<const GroundContact>(
+        model, phase.point, zmp_foot, c.step_length, frictionBound(model, c), c.min_normal_force);
+    addPathConstraint(nlp, phase, "ground_contact", contact);
+    if (c.interior_contact > 0 && !phase.doubleSupport())
+      nlp.addConstraint(std::make_unique<InteriorContact>(phase.name() + "_interior_contact", phase,
+                                                          contact, c.interior_contact));
   }
   if (!phase.doubleSupport() && c.clearance.enabled)
     nlp.addConstraint(std::make_unique<SwingClearance>(model, phase, c.clearance));

@@ -4,18 +4,12 @@
 #include <array>
 
 namespace gaitopt::ocp {
-namespace {
 
-/// Integrals of lagrangeBasisIntegral from 0 to s, in units of h^2. At s = 1 they meet the
-/// scheme's own position update: (1/6, 1/3, 0) h^2 for Hermite-Simpson, (1/3, 1/6) for
-/// trapezoidal.
 SegmentBasis lagrangeDoubleIntegral(Scheme scheme, double s) {
   const double s2 = s * s, s3 = s2 * s, s4 = s3 * s;
   if (scheme == Scheme::kTrapezoidal) return {s2 / 2 - s3 / 6, s3 / 6, 0};
   return {s4 / 6 - s3 / 2 + s2 / 2, 2 * s3 / 3 - s4 / 3, s4 / 6 - s3 / 6};
 }
-
-}  // namespace
 
 SegmentBasis lagrangeBasis(Scheme scheme, double s) {
   if (scheme == Scheme::kTrapezoidal) return {1 - s, s, 0};

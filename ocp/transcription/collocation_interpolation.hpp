@@ -24,6 +24,11 @@ SegmentBasis lagrangeBasis(Scheme scheme, double s);
 /// and Simpson weights, at s = 1/2 (5/24, 1/3, -1/24), the separated Hermite condition.
 SegmentBasis lagrangeBasisIntegral(Scheme scheme, double s);
 
+/// Integrals of lagrangeBasisIntegral from 0 to s, in units of h^2: with them q = q_k + v_k h s +
+/// h^2 sum_j . a_j is the export's angle (exportPoint). At s = 1 they meet the scheme's own
+/// position update: (1/6, 1/3, 0) for Hermite-Simpson, (1/3, 1/6) for trapezoidal.
+SegmentBasis lagrangeDoubleIntegral(Scheme scheme, double s);
+
 /// The segment holding phase time t (clamped to the phase), for duration `total`.
 int segmentAt(const PhaseLayout& layout, double t, double total);
 

@@ -91,11 +91,12 @@ const std::map<std::string, std::unique_ptr<Shipped>>& shippedProblems() {
       all.emplace(name + "_variants",
                   coarseProblem(loadOcpConfig((dir / (name + ".yaml")).string(), variants())));
     // The closed loop's computed-torque law in single support (computed_torque_law.hpp), with
-    // the least normal force on the contact rows.
+    // the least normal force on the contact rows, also between the points (interior_contact.hpp).
     std::vector<config::Override> ct = variants();
     ct[1] = config::parseOverride(
         "variant_feedback={law: computed_torque, kp: 400, kd: 40, dsp_kp: 300, dsp_kd: 30}");
     ct.push_back(config::parseOverride("constraints.min_normal_force=50"));
+    ct.push_back(config::parseOverride("constraints.interior_contact=4"));
     all.emplace("mu2004_walk_computed_torque_variants",
                 coarseProblem(loadOcpConfig((dir / "mu2004_walk.yaml").string(), ct)));
     return all;
@@ -178,6 +179,7 @@ TEST(SetContractCoverage, EverySetOfTheGaitProblemIsChecked) {
                            "ssp_dynamics",
                            "ssp_knees",
                            "ssp_ground_contact",
+                           "ssp_interior_contact",
                            "ssp_clearance",
                            "ssp_work_split",
                            "dsp_defects",
