@@ -91,6 +91,8 @@ std::vector<std::string> solveColumns() {
           "max_torso_lean_deg",
           "max_stance_knee_flexion_deg",
           "max_swing_knee_flexion_deg",
+          "min_normal_force_between_N",
+          "min_foot_cop_margin_between_m",
           "start",
           "folder"};
 }
@@ -113,7 +115,9 @@ std::vector<std::string> solveRow(const StudyPoint& point, const std::string& di
                       "/kkt/pivoting_factorizations",
                       "/posture_deg/max_torso_lean",
                       "/posture_deg/max_stance_knee_flexion",
-                      "/posture_deg/max_swing_knee_flexion"};
+                      "/posture_deg/max_swing_knee_flexion",
+                      "/between_nodes/min_normal_force",
+                      "/between_nodes/min_foot_cop_margin"};
   for (std::size_t k = 0; k < std::size(at); ++k) row[2 + k] = numberText(*s, Pointer(at[k]));
   std::ifstream start(gaitFolder(point, dir) + ".start");
   std::string& from = row[row.size() - 2];
