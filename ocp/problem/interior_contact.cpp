@@ -20,12 +20,6 @@ std::vector<double> sampleTimes(int sub_intervals) {
   return s;
 }
 
-Eigen::VectorXd readLocal(const Eigen::VectorXd& x, const std::vector<int>& indices) {
-  Eigen::VectorXd local(static_cast<Eigen::Index>(indices.size()));
-  for (size_t i = 0; i < indices.size(); ++i) local(static_cast<Eigen::Index>(i)) = x(indices[i]);
-  return local;
-}
-
 int rowCount(const Phase& phase, const GroundContact& contact, int sub_intervals) {
   if (phase.doubleSupport())
     throw std::invalid_argument("interior contact rows: single support only");
@@ -91,7 +85,7 @@ void InteriorContact::values(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorX
   const int m = contact_->rows();
   int row = 0;
   for (int k = 0; k < phase_.layout.segments; ++k) {
-    const Eigen::VectorXd local = readLocal(x, localVariables(k));
+    const Eigen::VectorXd local = gather(x, localVariables(k));
     for (double s : samples_) {
       contact_->evaluate(sampleMap(k, s) * local, g.segment(row, m));
       row += m;
@@ -107,7 +101,7 @@ void InteriorContact::jacobian(const Eigen::VectorXd& x, Triplets& out) const {
   int row = 0;
   for (int k = 0; k < phase_.layout.segments; ++k) {
     const std::vector<int> vars = localVariables(k);
-    const Eigen::VectorXd local = readLocal(x, vars);
+    const Eigen::VectorXd local = gather(x, vars);
     for (double s : samples_) {
       const Eigen::MatrixXd map = sampleMap(k, s);
       contact_->jacobian(map * local, jac);
@@ -129,12 +123,12 @@ void InteriorContact::hessian(const Eigen::VectorXd& x, const Eigen::VectorXd& l
   int row = 0;
   for (int k = 0; k < phase_.layout.segments; ++k) {
     const std::vector<int> vars = localVariables(k);
-    const Eigen::VectorXd local = readLocal(x, vars);
+    const Eigen::VectorXd local = gather(x, vars);
     Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(motion, motion);
     for (double s : samples_) {
-      const Eigen::MatrixXd map = sampleMap(k, s).leftCols(motion);
-      contact_->hessian(sampleMap(k, s) * local, lambda.segment(row, m), hess);
-      sum += map.transpose() * hess * map;
+      const Eigen::MatrixXd map = sampleMap(k, s);
+      contact_->hessian(map * local, lambda.segment(row, m), hess);
+      sum += map.leftCols(motion).transpose() * hess * map.leftCols(motion);
       row += m;
     }
     for (int c = 0; c < motion; ++c)

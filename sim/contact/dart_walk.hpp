@@ -41,9 +41,7 @@ WalkResult walkDart(const dynamics::Model& plant, const Controller& controller,
                     const WalkLog& log = {}, const VecD& theta0 = {}, const VecD& dtheta0 = {});
 
 /// walkDart's signature, as the module hands it over.
-using DartWalk = WalkResult (*)(const dynamics::Model&, const Controller&, const Reference&,
-                                const DartGround&, const WalkPlan&, const WalkLog&, const VecD&,
-                                const VecD&);
+using DartWalk = decltype(&walkDart);
 
 /// The module's one exported symbol: a function returning its DartWalk.
 inline constexpr const char* kDartModuleEntry = "gaitopt_dart_walk";
