@@ -155,8 +155,8 @@ WalkBlock readWalk(const YamlReader& r) {
   if (!plainLabel(w.name)) r.fail("name", "expected letters, digits and . _ + -");
   const YamlReader plant = r.map("plant");
   plant.allowOnly({"option", "values"});
-  w.plant_option = plant.choice(
-      "option", {"mass-error", "length-error", "uncertainty-case", "friction", "gain-scale"});
+  w.plant_option = plant.choice("option", {"mass-error", "length-error", "push", "uncertainty-case",
+                                           "friction", "gain-scale"});
   w.plant_values = plant.yamlTexts("values");
   return w;
 }

@@ -93,6 +93,8 @@ std::vector<std::string> solveColumns() {
           "max_swing_knee_flexion_deg",
           "min_normal_force_between_N",
           "min_foot_cop_margin_between_m",
+          "strike_normal_velocity_m_s",
+          "impulse_trailing_cone_ratio",
           "start",
           "folder"};
 }
@@ -117,7 +119,9 @@ std::vector<std::string> solveRow(const StudyPoint& point, const std::string& di
                       "/posture_deg/max_stance_knee_flexion",
                       "/posture_deg/max_swing_knee_flexion",
                       "/between_nodes/min_normal_force",
-                      "/between_nodes/min_foot_cop_margin"};
+                      "/between_nodes/min_foot_cop_margin",
+                      "/strike/normal_velocity",
+                      "/strike/impulse_trailing_cone_ratio"};
   for (std::size_t k = 0; k < std::size(at); ++k) row[2 + k] = numberText(*s, Pointer(at[k]));
   std::ifstream start(gaitFolder(point, dir) + ".start");
   std::string& from = row[row.size() - 2];

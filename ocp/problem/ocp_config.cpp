@@ -83,12 +83,15 @@ ClearanceProfile readClearance(const YamlReader& r) {
 void readConstraints(const YamlReader& r, OcpConfig& c) {
   r.allowOnly({"torque_limits", "knee_limits", "angle_range", "rate_limit", "joint_velocity_limits",
                "swing_descends", "trailing_lifts", "ground_contact", "impact_friction", "zmp",
-               "clearance", "friction_margin", "zmp_margin", "min_normal_force",
-               "dsp_reduced_coordinates", "jerk_limit", "interior_contact"});
+               "clearance", "friction_margin", "impulse_friction_margin", "zmp_margin",
+               "min_normal_force", "dsp_reduced_coordinates", "jerk_limit", "interior_contact"});
   c.ground_contact = r.booleanOr("ground_contact", true);
   c.impact_friction = r.booleanOr("impact_friction", true);
   c.zmp = r.booleanOr("zmp", true);
   c.friction_margin = r.numberOr("friction_margin", 0.0, config::inRange(0, 1, "(of mu)"));
+  if (r.has("impulse_friction_margin"))
+    c.impulse_friction_margin =
+        r.number("impulse_friction_margin", config::inRange(0, 1, "(of mu)"));
   c.zmp_margin = r.numberOr("zmp_margin", 0.0, config::inRange(0, 1, "[m]"));
   if (c.zmp_margin > 0 && !c.zmp) r.fail("zmp_margin", "a ZMP margin needs zmp: true");
   c.min_normal_force = r.numberOr("min_normal_force", 0.0, config::inRange(0, 1e4, "[N]"));
@@ -295,6 +298,15 @@ double frictionBound(const dynamics::Model& model, const OcpConfig& config) {
   const double mu = model.friction() - config.friction_margin;
   if (!(mu > 0))
     throw std::invalid_argument("friction_margin must be below the robot's friction coefficient");
+  return mu;
+}
+
+double impulseFrictionBound(const dynamics::Model& model, const OcpConfig& config) {
+  if (!config.impulse_friction_margin) return frictionBound(model, config);
+  const double mu = model.friction() - *config.impulse_friction_margin;
+  if (!(mu > 0))
+    throw std::invalid_argument(
+        "impulse_friction_margin must be below the robot's friction coefficient");
   return mu;
 }
 

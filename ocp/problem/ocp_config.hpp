@@ -2,6 +2,7 @@
 /// @file ocp_config.hpp
 /// configs/ocp/*.yaml: which robot, which phases, the mesh and scheme, the cost, the constraint
 /// switches and the solver options (docs/design.md#configs). Paths are relative to the file.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -123,6 +124,11 @@ struct OcpConfig {
   /// Friction cones narrowed to |F_t| <= (mu - friction_margin) F_n, forces and impulses, so a
   /// tracking error does not make the optimum slip (dimensionless, < the robot's mu).
   double friction_margin = 0;
+  /// The impact impulses' own margin, |P_t| <= (mu - m) P_n, when it differs from
+  /// friction_margin (unset: friction_margin). The impulse cone is scale-free: it binds a strike
+  /// of 1 mm/s as hard as one of 1 m/s, and a margin on it prices every designed strike
+  /// (docs/optimal_gaits.md#what-the-strike-costs).
+  std::optional<double> impulse_friction_margin;
   /// With zmp: the ZMP (and in the DSP foot B's own CoP) kept this far inside [-heel, toe], so a
   /// tracking error does not rotate the foot about its edge [m], < half the foot.
   double zmp_margin = 0;
@@ -158,6 +164,9 @@ dynamics::Model problemModel(const OcpConfig& config);
 /// The friction coefficient of the optimiser's cones: the robot's, less the configured margin.
 /// @throws std::invalid_argument when the margin leaves no cone.
 double frictionBound(const dynamics::Model& model, const OcpConfig& config);
+/// mu - the impulses' margin (OcpConfig::impulse_friction_margin, else friction_margin): the
+/// impact impulses' cone. @throws std::invalid_argument when it leaves no cone.
+double impulseFrictionBound(const dynamics::Model& model, const OcpConfig& config);
 
 /// The foot the optimiser keeps the ZMP and CoP on: the robot's, shortened by zmp_margin at the
 /// heel and at the toe. @throws std::invalid_argument when the margin leaves no foot.

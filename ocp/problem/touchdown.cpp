@@ -79,7 +79,7 @@ Touchdown Touchdown::add(Nlp& nlp, const dynamics::Model& model, const OcpConfig
   if (c.ground_contact && c.impact_friction) {
     const Slice impulses = l.inDecision(l.impulses());
     addLink(nlp, prefix + "impulse_cones", 3 * impulses.size / 2, impulses.indices(), 0,
-            ImpulseCones{frictionBound(model, c)}, 0.0, kInf);
+            ImpulseCones{impulseFrictionBound(model, c)}, 0.0, kInf);
   }
   t.rates_after_ = l.inDecision(l.rates_after).indices();
   t.impact_ = l;

@@ -22,6 +22,7 @@ bool continued(const OcpConfig& c, const std::string& group) {
 OcpConfig easiest(OcpConfig c) {
   if (continued(c, "margins")) {
     c.friction_margin = 0;
+    if (c.impulse_friction_margin) c.impulse_friction_margin = 0;
     c.zmp_margin = 0;
     c.min_normal_force = 0;
   }
@@ -37,7 +38,8 @@ OcpConfig easiest(OcpConfig c) {
 bool moves(const OcpConfig& c, const std::string& group) {
   if (!continued(c, group)) return false;
   if (group == "margins")
-    return c.friction_margin > 0 || c.zmp_margin > 0 || c.min_normal_force > 0;
+    return c.friction_margin > 0 || c.impulse_friction_margin.value_or(0) > 0 || c.zmp_margin > 0 ||
+           c.min_normal_force > 0;
   if (group == "strike") return c.touchdown.normal_min > 0;
   return c.cost.abs_work > 0 || c.cost.cost_of_transport > 0;
 }
@@ -69,6 +71,9 @@ OcpConfig configAt(const OcpConfig& target, double progress) {
   };
   OcpConfig c = target;
   c.friction_margin = at(easy.friction_margin, target.friction_margin, "margins");
+  if (target.impulse_friction_margin)
+    c.impulse_friction_margin =
+        at(*easy.impulse_friction_margin, *target.impulse_friction_margin, "margins");
   c.zmp_margin = at(easy.zmp_margin, target.zmp_margin, "margins");
   c.min_normal_force = at(easy.min_normal_force, target.min_normal_force, "margins");
   c.touchdown.normal_min = at(easy.touchdown.normal_min, target.touchdown.normal_min, "strike");
@@ -78,8 +83,13 @@ OcpConfig configAt(const OcpConfig& target, double progress) {
 }
 
 PathParameters pathParameters(const OcpConfig& c) {
-  return {c.friction_margin,      c.zmp_margin,           c.min_normal_force,
-          c.touchdown.normal_min, c.touchdown.normal_max, c.cost};
+  return {c.friction_margin,
+          c.impulse_friction_margin.value_or(c.friction_margin),
+          c.zmp_margin,
+          c.min_normal_force,
+          c.touchdown.normal_min,
+          c.touchdown.normal_max,
+          c.cost};
 }
 
 bool pathMoves(const OcpConfig& target) {

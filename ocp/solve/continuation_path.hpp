@@ -20,6 +20,7 @@ namespace gaitopt::ocp {
 /// The values a continuation moves, at one progress.
 struct PathParameters {
   double friction_margin = 0;
+  double impulse_friction_margin = 0;  ///< the impulses' (OcpConfig::impulse_friction_margin)
   double zmp_margin = 0;
   double min_normal_force = 0;                              ///< [N]
   double normal_velocity_min = 0, normal_velocity_max = 0;  ///< strike design only [m/s]

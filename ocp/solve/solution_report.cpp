@@ -66,6 +66,7 @@ nlohmann::ordered_json solverSettings(const OcpConfig& config) {
 
 nlohmann::ordered_json pathParametersJson(const PathParameters& p) {
   return {{"friction_margin", p.friction_margin},
+          {"impulse_friction_margin", p.impulse_friction_margin},
           {"zmp_margin", p.zmp_margin},
           {"min_normal_force", p.min_normal_force},
           {"strike_normal_velocity", {p.normal_velocity_min, p.normal_velocity_max}},
@@ -139,8 +140,14 @@ constexpr double kPassiveTorque = 1e-3;
 /// A strike slower than this lands at rest (solver tolerance), and no impact type applies [m/s].
 constexpr double kAtRest = 1e-6;
 
-/// The swing tip's strike: velocity, Mu's strike angle, the impact type the state admits
-/// (Mu sec. 5.3) beside the one the config models.
+/// |P_t| / P_n of an impulse, the share of its friction cone it uses (null without a push).
+nlohmann::ordered_json coneRatio(const Vec2d& impulse) {
+  if (!(impulse.y() > 0)) return nullptr;
+  return std::abs(impulse.x()) / impulse.y();
+}
+
+/// The swing tip's strike: velocity, Mu's strike angle, the impulses and their cone ratios, the
+/// impact type the state admits (Mu sec. 5.3) beside the one the config models.
 nlohmann::ordered_json strikeJson(const StrikeReport& s, const OcpConfig& config) {
   const char* modelled = config.impact == ImpactModel::kDouble   ? "double"
                          : config.impact == ImpactModel::kSingle ? "single"
@@ -151,6 +158,8 @@ nlohmann::ordered_json strikeJson(const StrikeReport& s, const OcpConfig& config
           {"impact_modelled", modelled},
           {"impulse_leading", {s.impulse_leading.x(), s.impulse_leading.y()}},
           {"impulse_trailing", {s.impulse_trailing.x(), s.impulse_trailing.y()}},
+          {"impulse_leading_cone_ratio", coneRatio(s.impulse_leading)},
+          {"impulse_trailing_cone_ratio", coneRatio(s.impulse_trailing)},
           {"impact_admitted", s.normal_velocity > kAtRest ? dynamics::toString(s.admitted)
                                                           : "none: the tip lands at rest"}};
 }

@@ -1,6 +1,7 @@
 // The summary and folders of a gait solution (ocp/solve/solution_report.hpp): the impact's energy
 // loss against the kinetic energy the closed-form impact map takes, the between-node metrics of a
 // trajectory with known forces, and the folder of a failed solve.
+#include <cmath>
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -63,6 +64,13 @@ TEST(SolutionSummary, ImpactLossIsTheKineticEnergyTheImpactMapTakes) {
                                           dynamics::relabelRates<double>(plus));
   ASSERT_GT(before - after, 1.0);  // a real loss [J], not a rounding
   EXPECT_NEAR(summary.at("impact_energy_loss_J").get<double>(), before - after, 1e-5 * before);
+  // The share of its friction cone the impulse uses, |P_t| / P_n of the closed-form map's
+  // impulse; a single impact leaves the trailing tip none.
+  const Vec2d p = dynamics::singleImpact(r.model, theta, dtheta).impulse_leading;
+  ASSERT_GT(p.y(), 0.0);
+  EXPECT_NEAR(summary.at("strike").at("impulse_leading_cone_ratio").get<double>(),
+              std::abs(p.x()) / p.y(), 1e-4);
+  EXPECT_TRUE(summary.at("strike").at("impulse_trailing_cone_ratio").is_null());
   EXPECT_EQ(summary.at("converged"), true);
   EXPECT_EQ(summary.at("nlp").at("segments"), std::vector<int>{4});
   EXPECT_EQ(summary.at("between_nodes").at("rate_hz"), 200.0);
