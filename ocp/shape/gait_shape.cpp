@@ -14,12 +14,13 @@ std::string copyPrefix(int step, int variant) {
   return prefix;
 }
 
-/// The model of variant `v` > 0: every link's mass and inertia scaled by its mass_scale.
+/// The model of variant `v` > 0: every link's mass and inertia scaled by its mass_scale, its
+/// length and CoM offset by its length_scale.
 std::shared_ptr<const dynamics::Model> variantModel(const dynamics::Model& nominal,
                                                     const VariantConfig& v) {
-  const double e = v.mass_scale - 1;
+  const double e = v.mass_scale - 1, l = v.length_scale - 1;
   return std::make_shared<const dynamics::Model>(
-      dynamics::perturbedModel(nominal, {.mass = e, .inertia = e}));
+      dynamics::perturbedModel(nominal, {.mass = e, .inertia = e, .length = l, .com = l}));
 }
 
 /// The model variant v's computed-torque law computes with: the nominal, or off by Mu's case.

@@ -24,6 +24,17 @@ struct Continuity {
   }
 };
 
+/// The config each variant's sets read, the nominal's first: a copy with scaled lengths steps
+/// step_length times its length_scale, since the reference's angles put its tip there.
+std::vector<OcpConfig> variantConfigs(const OcpConfig& config) {
+  std::vector<OcpConfig> configs{config};
+  for (const VariantConfig& v : config.shape.variants) {
+    configs.push_back(config);
+    configs.back().step_length *= v.length_scale;
+  }
+  return configs;
+}
+
 /// y = free durations: their sum plus the fixed ones equals the step duration.
 struct DurationSum {
   double fixed;
@@ -37,7 +48,7 @@ class Builder {
  public:
   Builder(GaitProblem& p, const GaitShape& shape, const OcpConfig& config,
           const std::vector<gaits::Trajectory>& guesses)
-      : p_(p), shape_(shape), config_(config), guesses_(guesses) {}
+      : p_(p), shape_(shape), configs_(variantConfigs(config)), guesses_(guesses) {}
 
   void emitPhase(int i) {
     const PhaseSpec& spec = shape_.phases[static_cast<size_t>(i)];
@@ -46,9 +57,10 @@ class Builder {
     std::optional<int> shared;
     if (spec.shares_duration >= 0) shared = built(spec.shares_duration).layout.duration_index;
     const auto& guess = guesses_[guesses_.size() == 1 ? 0 : static_cast<size_t>(spec.step)];
-    BuiltPhase b{addPhaseVariables(p_.nlp, model, config_, guess, spec, shared), spec.step,
+    const OcpConfig& config = configs_[static_cast<size_t>(spec.variant)];
+    BuiltPhase b{addPhaseVariables(p_.nlp, model, config, guess, spec, shared), spec.step,
                  spec.variant, &model, std::nullopt};
-    addPhaseSets(p_.nlp, model, config_, b.phase, spec.cost);
+    addPhaseSets(p_.nlp, model, config, b.phase, spec.cost);
     if (spec.feedback_from >= 0) addVariantSets(spec, b);
     phase_stage_.push_back(
         close({spec.label, StageKind::kPhase, spec.step, spec.variant, {}, {}, i}));
@@ -90,8 +102,8 @@ class Builder {
   int emitTouchdown(int i, BuiltPhase& b) {
     const PhaseSpec& spec = shape_.phases[static_cast<size_t>(i)];
     open();
-    b.touchdown =
-        Touchdown::add(p_.nlp, *b.model, config_, b.phase, config_.step_length, spec.copy);
+    const OcpConfig& config = configs_[static_cast<size_t>(spec.variant)];
+    b.touchdown = Touchdown::add(p_.nlp, *b.model, config, b.phase, config.step_length, spec.copy);
     const int stage =
         close({spec.copy + "touchdown", StageKind::kTouchdown, spec.step, spec.variant, {}, {}, i});
     couple(stage, i);
@@ -185,7 +197,7 @@ class Builder {
 
   GaitProblem& p_;
   const GaitShape& shape_;
-  const OcpConfig& config_;
+  std::vector<OcpConfig> configs_;  ///< per variant: the config its sets read
   const std::vector<gaits::Trajectory>& guesses_;
   std::vector<int> phase_stage_, touchdown_stage_;  // per phase of the shape
   int columns_ = 0, rows_ = 0;

@@ -18,14 +18,17 @@ int readSteps(const YamlReader& root) {
 }
 
 VariantConfig readVariant(const YamlReader& r) {
-  r.allowOnly({"mass_scale", "controller_case"});
+  r.allowOnly({"mass_scale", "length_scale", "controller_case"});
   VariantConfig v;
   v.mass_scale = r.numberOr("mass_scale", 1, config::inRange(0.5, 2.0, "(times the nominal mass)"));
+  v.length_scale =
+      r.numberOr("length_scale", 1, config::inRange(0.8, 1.25, "(times the nominal lengths)"));
   const double c = r.numberOr("controller_case", 1, config::inRange(1, 3, "(Mu's case 1, 2 or 3)"));
   if (c != std::floor(c)) r.fail("controller_case", "expected Mu's case 1, 2 or 3");
   v.controller_case = static_cast<int>(c);
-  if (v.mass_scale == 1 && v.controller_case == 1)
-    r.fail("mass_scale", "a variant differs from the nominal: give mass_scale or controller_case");
+  if (v.mass_scale == 1 && v.length_scale == 1 && v.controller_case == 1)
+    r.fail("mass_scale",
+           "a variant differs from the nominal: give mass_scale, length_scale or controller_case");
   return v;
 }
 

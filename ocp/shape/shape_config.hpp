@@ -18,6 +18,9 @@ namespace gaitopt::ocp {
 /// plant then the variant's own, as `simulate --uncertainty-on controller` walks it.
 struct VariantConfig {
   double mass_scale = 1;
+  /// Every link's length and CoM offset scaled, as the walks' --length-error: with the
+  /// reference's angles the copy's tip lands at step_length times this.
+  double length_scale = 1;
   int controller_case = 1;  ///< 1: the controller computes with the nominal model
 };
 

@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "dynamics/kinematics.hpp"
 #include "dynamics/model_variation.hpp"
 #include "dynamics/ssp_dynamics.hpp"
 #include "ocp/shape/computed_torque_law.hpp"
@@ -65,17 +66,20 @@ TEST(ComputedTorqueVariantConfig, APassiveJointIsRefused) {
   EXPECT_THROW(ComputedTorqueResidual(rabbit, g), std::invalid_argument);
 }
 
-/// A variant (shape_config.hpp VariantConfig), its plant's mass scale and the controller's case.
+/// A variant (shape_config.hpp VariantConfig), its plant's mass and length scales and the
+/// controller's case.
 struct VariantCase {
   std::string yaml;
   double mass_scale;
+  double length_scale;
   int controller_case;
 };
 
 class ComputedTorqueVariant : public ::testing::TestWithParam<VariantCase> {};
 
-// The 10 % heavier plant under the controller's nominal model, and the nominal plant under a
-// controller whose model is off by Mu's case 2 (+40 % masses and inertias, +10 % lengths).
+// The 10 % heavier plant and the plant with 5 % longer links under the controller's nominal
+// model, and the nominal plant under a controller whose model is off by Mu's case 2 (+40 % masses
+// and inertias, +10 % lengths). Each copy lands where its own legs put its tip.
 TEST_P(ComputedTorqueVariant, TorquesAreTheTrackingControllersOnItsModel) {
 #ifndef NDEBUG
   GTEST_SKIP() << "a solve: optimised builds only";
@@ -89,8 +93,9 @@ TEST_P(ComputedTorqueVariant, TorquesAreTheTrackingControllersOnItsModel) {
           ? s.model
           : dynamics::perturbedModel(s.model, dynamics::muUncertaintyCase(c.controller_case));
   const sim::TrackingController controller(model, std::make_shared<sim::PdLaw>(kKp, kKd));
+  const double e = c.mass_scale - 1, el = c.length_scale - 1;
   const dynamics::Model plant =
-      dynamics::perturbedModel(s.model, {.mass = c.mass_scale - 1, .inertia = c.mass_scale - 1});
+      dynamics::perturbedModel(s.model, {.mass = e, .inertia = e, .length = el, .com = el});
   const Phase& variant = *s.problem.phasesOf(0, 1)[0];
   const Phase& reference = *s.problem.phasesOf(0, 0)[0];
   const PointLayout& l = variant.point;
@@ -116,11 +121,16 @@ TEST_P(ComputedTorqueVariant, TorquesAreTheTrackingControllersOnItsModel) {
   EXPECT_LT(law_error, 1e-6);  // the controller's torque, to the solver's tolerance
   EXPECT_LT(own_model, 1e-6);  // on the plant's dynamics
   EXPECT_GT(correction, 1.0);  // and it is not the reference's feed-forward
+  const Eigen::VectorXd strike = variant.layout.point(s.result.x, variant.layout.points() - 1);
+  const Vec2d tip = dynamics::swingTip<double>(plant, VecD(l.q.of(strike)));
+  EXPECT_NEAR(tip.x(), s.config.step_length * c.length_scale, 1e-6);
+  EXPECT_NEAR(tip.y(), 0.0, 1e-6);
 }
 
 INSTANTIATE_TEST_SUITE_P(PlantOrController, ComputedTorqueVariant,
-                         ::testing::Values(VariantCase{"{mass_scale: 1.1}", 1.1, 1},
-                                           VariantCase{"{controller_case: 2}", 1.0, 2}));
+                         ::testing::Values(VariantCase{"{mass_scale: 1.1}", 1.1, 1.0, 1},
+                                           VariantCase{"{length_scale: 1.05}", 1.0, 1.05, 1},
+                                           VariantCase{"{controller_case: 2}", 1.0, 1.0, 2}));
 
 TEST(ComputedTorqueVariantConfig, AVariantIsReadStrictly) {
   EXPECT_EQ(loadError(kLaw, "{mass_scale: 0.9, controller_case: 3}"), "");
@@ -128,6 +138,8 @@ TEST(ComputedTorqueVariantConfig, AVariantIsReadStrictly) {
   EXPECT_NE(loadError(kLaw, "{controller_case: 2.5}").find("controller_case"), std::string::npos);
   EXPECT_NE(loadError(kLaw, "{controller_case: 1}").find("differs from the nominal"),
             std::string::npos);
+  EXPECT_EQ(loadError(kLaw, "{length_scale: 0.95}"), "");
+  EXPECT_NE(loadError(kLaw, "{length_scale: 1.5}").find("length_scale"), std::string::npos);
 }
 
 }  // namespace
