@@ -1,0 +1,125 @@
+#!/usr/bin/python3
+"""What each gait of the strike-cost study (configs/studies/strike_cost.yaml) costs and walks.
+
+Usage: strike_cost_table.py STUDY_DIR
+STUDY_DIR is the folder `gaitopt study` wrote: solves.csv (gait, converged, cost,
+strike_normal_velocity_m_s, impulse_trailing_cone_ratio) and walks.csv (gait, walk, controller,
+plant_option, plant, steps). Writes into STUDY_DIR, printing their paths:
+  summary.csv  one row per gait: convergence, cost, strike speed [m/s], the trailing impulse's
+               |P_t| / P_n and, per controller, the plant-mass interval walked 20 steps on the
+               rigid ground around the nominal, the length errors, pushes [N s] and Mu's cases
+               walked, and the plant masses walked on the LCP ground and in DART
+  summary.md   the same as a table
+A missing or malformed input ends the script with "error: <file>: ..." and exit code 1.
+"""
+import os
+
+import plot_io
+from ensemble_front_chart import fmt_interval, interval
+from plot_io import InputError
+
+CONTROLLERS = {"computed_torque": "CT", "mu_sliding_mode": "Mu"}
+SOLVE_COLUMNS = ["gait", "converged", "cost", "strike_normal_velocity_m_s",
+                 "impulse_trailing_cone_ratio"]
+WALK_COLUMNS = ["gait", "walk", "controller", "plant_option", "plant", "steps"]
+# (column name, walk block of the study, what the plant value is): the walks listed as values.
+LISTED = [("lengths", "rigid_length", "length-error"), ("pushes", "rigid_push", "push"),
+          ("cases", "rigid_cases", "uncertainty-case"), ("lcp", "lcp", "mass-error"),
+          ("dart", "dart", "mass-error")]
+
+
+def optional_number(text):
+    return float(text) if text else None
+
+
+def optional_text(value, spec):
+    return "" if value is None else format(value, spec)
+
+
+def read_solves(path):
+    """[(gait, {converged, cost, speed, ratio})] in the study's order."""
+    header, rows = plot_io.read_rows(path, "solve table")
+    plot_io.require_columns(path, header, SOLVE_COLUMNS)
+    col = {name: header.index(name) for name in header}
+    out = []
+    for line, row in enumerate(rows, start=2):
+        try:
+            speed, ratio = (optional_number(row[col[n]]) for n in SOLVE_COLUMNS[3:])
+            out.append((row[col["gait"]], {"converged": row[col["converged"]] == "1",
+                                           "cost": float(row[col["cost"]]),
+                                           "speed": speed, "ratio": ratio}))
+        except (ValueError, IndexError) as e:
+            raise InputError(f"{path}: line {line}: {e}") from None
+    return out
+
+
+def read_walks(path):
+    """{(gait, walk, controller): {plant value: steps}}"""
+    header, rows = plot_io.read_rows(path, "walk table")
+    plot_io.require_columns(path, header, WALK_COLUMNS)
+    col = {name: header.index(name) for name in header}
+    walks = {}
+    for line, row in enumerate(rows, start=2):
+        try:
+            key = (row[col["gait"]], row[col["walk"]], row[col["controller"]])
+            walks.setdefault(key, {})[float(row[col["plant"]])] = int(row[col["steps"]] or 0)
+        except (ValueError, IndexError) as e:
+            raise InputError(f"{path}: line {line}: {e}") from None
+    return walks
+
+
+def walked(values):
+    """The plant values walked 20 steps, as text: "-1 1 2", or "none"."""
+    return " ".join(f"{v:g}" for v in sorted(values) if values[v] == 20) or "none"
+
+
+def cells(gait, walks, controller):
+    """The walk columns of one gait and controller, in the table's order."""
+    masses = {round(1 + m, 6): s for m, s in walks.get((gait, "rigid", controller), {}).items()}
+    out = [fmt_interval(interval(masses)) or "falls at ×1"]
+    for _, walk, _ in LISTED:
+        values = walks.get((gait, walk, controller))
+        if walk in ("lcp", "dart") and values is not None:
+            values = {round(1 + m, 6): s for m, s in values.items()}
+        out.append("—" if values is None else walked(values))
+    return out
+
+
+def header_names():
+    return [f"{c}_{name}" for c in CONTROLLERS.values()
+            for name in ["rigid_mass", *[n for n, _, _ in LISTED]]]
+
+
+def write_tables(solves, walks, out):
+    csv_path, md_path = os.path.join(out, "summary.csv"), os.path.join(out, "summary.md")
+    with open(csv_path, "w") as f:
+        f.write(",".join(["gait", "converged", "cost", "strike_normal_velocity_m_s",
+                          "impulse_trailing_cone_ratio", *header_names()]) + "\n")
+        for gait, s in solves:
+            row = [gait, str(int(s["converged"])), f"{s['cost']:.6g}",
+                   optional_text(s["speed"], ".4g"), optional_text(s["ratio"], ".4g")]
+            for controller in CONTROLLERS:
+                row += cells(gait, walks, controller)
+            f.write(",".join(row) + "\n")
+    with open(md_path, "w") as f:
+        f.write("| gait | cost | strike m/s | trailing \\|P_t\\|/P_n | "
+                + " | ".join(f"{c}: {n.replace('_', ' ')}" for c in CONTROLLERS.values()
+                             for n in ["rigid mass", *[n for n, _, _ in LISTED]]) + " |\n")
+        f.write("|---|---:|---:|---:|" + "---|" * len(header_names()) + "\n")
+        for gait, s in solves:
+            speed = "—" if s["speed"] is None or s["speed"] < 1e-6 else f"{s['speed']:.3f}"
+            ratio = "—" if s["ratio"] is None else f"{s['ratio']:.3f}"
+            cost = f"{s['cost']:.1f}" + ("" if s["converged"] else ", not converged")
+            walk_cells = [c for controller in CONTROLLERS for c in cells(gait, walks, controller)]
+            f.write(f"| {gait} | {cost} | {speed} | {ratio} | " + " | ".join(walk_cells) + " |\n")
+    return csv_path, md_path
+
+
+def main(out):
+    solves = read_solves(os.path.join(out, "solves.csv"))
+    for path in write_tables(solves, read_walks(os.path.join(out, "walks.csv")), out):
+        print(path)
+
+
+if __name__ == "__main__":
+    plot_io.run_main(main, __doc__, arguments=1)

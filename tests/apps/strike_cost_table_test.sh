@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# plots/strike_cost_table.py on a made-up `gaitopt study` folder: a gait that walks the rigid
+# ground at 0.9-1.1 with a gap at 1.2, two of four pushes, one length and DART at two masses, and
+# a gait without a strike whose solve failed; the intervals and the lists in the table and CSV,
+# and "error: <file>: ..." for a solve table without the trailing impulse's ratio.
+# Needs Debian's python3-numpy (plot_io); skips (ctest: skipped) without it.
+# Usage: strike_cost_table_test.sh <repo root>
+# shellcheck source=tests/apps/cli_test_lib.sh
+source "$(dirname "$0")/cli_test_lib.sh" root "$@"  # PY, TMP (removed on exit), fail
+"$PY" -c "import numpy" 2>/dev/null || skip "no numpy"
+table="$ROOT/plots/strike_cost_table.py"
+out="$TMP/study"
+mkdir -p "$out"
+cat >"$out/solves.csv" <<'CSV'
+gait,status,converged,iterations,cost,strike_normal_velocity_m_s,impulse_trailing_cone_ratio
+strike,Solve_Succeeded,1,185,250,0.3,0.55
+no_strike,Maximum_Iterations_Exceeded,0,400,132,-1e-9,
+CSV
+{
+  echo "gait,walk,controller,plant_option,plant,steps,steps_requested,failure"
+  for m in -0.2:0 -0.1:20 0:20 0.1:20 0.2:3; do
+    echo "strike,rigid,computed_torque,mass-error,${m%%:*},${m##*:},20,"
+  done
+  for p in -2:20 -1:4 1:20 2:0; do echo "strike,rigid_push,computed_torque,push,${p%%:*},${p##*:},20,"; done
+  for l in -0.05:20 0.05:1; do
+    echo "strike,rigid_length,computed_torque,length-error,${l%%:*},${l##*:},20,"
+  done
+  for m in -0.1:0 0:20 0.1:20; do echo "strike,dart,computed_torque,mass-error,${m%%:*},${m##*:},20,"; done
+  echo "strike,rigid,mu_sliding_mode,mass-error,0,2,20,"
+} >"$out/walks.csv"
+
+"$PY" "$table" "$out" >"$TMP/printed" || fail "exit $? on a good study"
+for f in summary.csv summary.md; do
+  grep -qx "$out/$f" "$TMP/printed" || fail "$f not printed"
+done
+grep -qF "| strike | 250.0 | 0.300 | 0.550 | 0.9-1.1 | -0.05 | -2 1 | — | — | 1 1.1 | falls at ×1 |" \
+  "$out/summary.md" || fail "strike row: $(cat "$out/summary.md")"
+grep -qF "| no_strike | 132.0, not converged | — | — | falls at ×1 | — |" "$out/summary.md" ||
+  fail "failed solve row: $(cat "$out/summary.md")"
+grep -q "^strike,1,250,0.3,0.55,0.9-1.1,-0.05,-2 1,—,—,1 1.1,falls at ×1," "$out/summary.csv" ||
+  fail "strike csv row: $(cat "$out/summary.csv")"
+
+sed -i 's/,impulse_trailing_cone_ratio$//' "$out/solves.csv"
+"$PY" "$table" "$out" >/dev/null 2>"$TMP/err" && fail "a solve table without the ratio passed"
+grep -q "^error: $out/solves.csv: .*impulse_trailing_cone_ratio" "$TMP/err" ||
+  fail "stderr: $(cat "$TMP/err")"
+echo "strike cost table: intervals, walked lists, failed solve and a missing column named"
