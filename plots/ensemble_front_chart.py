@@ -103,7 +103,7 @@ def fmt_interval(i):
 def write_tables(rows, out):
     keys = [(g, c) for g in GROUNDS for c in CONTROLLERS]
     names = [f"{g}_{c}" for g, c in keys]
-    with open(os.path.join(out, "front.csv"), "w") as f:
+    with style.replacing(os.path.join(out, "front.csv")) as tmp, open(tmp, "w") as f:
         f.write(",".join(["width_percent", "converged", "cost", "cost_ratio", *POSTURE, *names])
                 + "\n")
         for r in rows:
@@ -111,7 +111,7 @@ def write_tables(rows, out):
             f.write(",".join([str(r["width_percent"]), str(int(r["converged"])), f"{r['cost']:.6g}",
                               f"{r['cost_ratio']:.4g}", *posture,
                               *[fmt_interval(r[k]) for k in keys]]) + "\n")
-    with open(os.path.join(out, "front.md"), "w") as f:
+    with style.replacing(os.path.join(out, "front.md")) as tmp, open(tmp, "w") as f:
         f.write("| copies ±W % | cost (× default) | torso, stance knee, swing knee [deg] | "
                 + " | ".join(f"{g}: {CONTROLLERS[c]}" for g, c in keys) + " |\n")
         f.write("|---|---|---|" + "---|" * len(keys) + "\n")

@@ -15,6 +15,7 @@ A missing or malformed input ends the script with "error: <file>: ..." and exit 
 import os
 
 import plot_io
+import plot_style as style
 from ensemble_front_chart import fmt_interval, interval
 from plot_io import InputError
 
@@ -92,7 +93,7 @@ def header_names():
 
 def write_tables(solves, walks, out):
     csv_path, md_path = os.path.join(out, "summary.csv"), os.path.join(out, "summary.md")
-    with open(csv_path, "w") as f:
+    with style.replacing(csv_path) as tmp, open(tmp, "w", encoding="utf-8") as f:
         f.write(",".join(["gait", "converged", "cost", "strike_normal_velocity_m_s",
                           "impulse_trailing_cone_ratio", *header_names()]) + "\n")
         for gait, s in solves:
@@ -101,7 +102,7 @@ def write_tables(solves, walks, out):
             for controller in CONTROLLERS:
                 row += cells(gait, walks, controller)
             f.write(",".join(row) + "\n")
-    with open(md_path, "w") as f:
+    with style.replacing(md_path) as tmp, open(tmp, "w", encoding="utf-8") as f:
         f.write("| gait | cost | strike m/s | trailing \\|P_t\\|/P_n | "
                 + " | ".join(f"{c}: {n.replace('_', ' ')}" for c in CONTROLLERS.values()
                              for n in ["rigid mass", *[n for n, _, _ in LISTED]]) + " |\n")

@@ -142,7 +142,7 @@ case_every_writer_in_the_sources() {
   [[ -z $found ]] || bad "open(2) creating a file without O_NOFOLLOW: $found"
   found=$(cd "$ROOT" && grep -rn --include='*.cpp' --include='*.hpp' -E 'std::ofstream|fopen\(' "${src[@]}")
   [[ -z $found ]] || bad "a stream writer outside io/output/checked_write: $found"
-  found=$(cd "$ROOT" && grep -rn -E "open\([^)]*['\"][wa]" plots/*.py | grep -v 'replacing(')
+  found=$(cd "$ROOT" && grep -rn -E "open\(.*['\"][wa]b?['\"]" plots/*.py | grep -v 'replacing(')
   [[ -z $found ]] || bad "a plot script writes a file in place: $found"
 }
 

@@ -97,8 +97,8 @@ TEST(StudyConfig, RefusedWithTheKeyAndWhy) {
            {"walks: [{name: a b, controllers: [computed_torque], plant: {option: mass-error, "
             "values: [0]}}]",
             "letters, digits"},
-           {"walks: [{name: w, controllers: [computed_torque], plant: {option: push, values: "
-            "[0]}}]",
+           {"walks: [{name: w, controllers: [computed_torque], plant: {option: ground, values: "
+            "[rigid]}}]",
             "expected one of mass-error"}}) {
     const std::string message = configErrorOf(
         [&] { loadStudyConfig(writeTempFile("bad.yaml", "name: b\n" + gait + yaml + "\n")); });
