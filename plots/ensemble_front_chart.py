@@ -40,17 +40,23 @@ def interval(walks):
     return masses[i], masses[j]
 
 
-def read_walks(path):
-    """{(width, ground, controller): {plant mass: steps}}"""
+def plant_mass(error):
+    """The plant's mass scale of a mass-error column value."""
+    return round(1 + error, 6)
+
+
+def read_walks(path, first="width_percent", first_of=int, plant_of=plant_mass):
+    """{(first column, walk, controller): {plant_of(plant): steps}} of a study's walks.csv:
+    by default {(width, ground, controller): {plant mass: steps}}."""
     header, rows = plot_io.read_rows(path, "walk table")
-    plot_io.require_columns(path, header, WALK_COLUMNS)
+    plot_io.require_columns(path, header, [first, *WALK_COLUMNS[1:]])
     col = {name: header.index(name) for name in header}
     walks = {}
     for line, row in enumerate(rows, start=2):
         try:
-            key = (int(row[col["width_percent"]]), row[col["walk"]], row[col["controller"]])
-            mass = round(1 + float(row[col["plant"]]), 6)
-            walks.setdefault(key, {})[mass] = int(row[col["steps"]] or 0)
+            key = (first_of(row[col[first]]), row[col["walk"]], row[col["controller"]])
+            plant = plant_of(float(row[col["plant"]]))
+            walks.setdefault(key, {})[plant] = int(row[col["steps"]] or 0)
         except (ValueError, IndexError) as e:
             raise InputError(f"{path}: line {line}: {e}") from None
     return walks

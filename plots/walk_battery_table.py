@@ -1,7 +1,9 @@
 #!/usr/bin/python3
-"""What each gait of the strike-cost study (configs/studies/strike_cost.yaml) costs and walks.
+"""What each gait of a study costs and walks, over the walk battery of the studies
+configs/studies/strike_cost.yaml and ensemble_candidates.yaml (walk blocks rigid, rigid_length,
+rigid_push, rigid_cases, lcp, dart; any of them may be missing).
 
-Usage: strike_cost_table.py STUDY_DIR
+Usage: walk_battery_table.py STUDY_DIR
 STUDY_DIR is the folder `gaitopt study` wrote: solves.csv (gait, converged, cost,
 strike_normal_velocity_m_s, impulse_trailing_cone_ratio) and walks.csv (gait, walk, controller,
 plant_option, plant, steps). Writes into STUDY_DIR, printing their paths:
@@ -16,13 +18,12 @@ import os
 
 import plot_io
 import plot_style as style
-from ensemble_front_chart import fmt_interval, interval
+from ensemble_front_chart import fmt_interval, interval, plant_mass, read_walks
 from plot_io import InputError
 
 CONTROLLERS = {"computed_torque": "CT", "mu_sliding_mode": "Mu"}
 SOLVE_COLUMNS = ["gait", "converged", "cost", "strike_normal_velocity_m_s",
                  "impulse_trailing_cone_ratio"]
-WALK_COLUMNS = ["gait", "walk", "controller", "plant_option", "plant", "steps"]
 # (column name, walk block of the study, what the plant value is): the walks listed as values.
 LISTED = [("lengths", "rigid_length", "length-error"), ("pushes", "rigid_push", "push"),
           ("cases", "rigid_cases", "uncertainty-case"), ("lcp", "lcp", "mass-error"),
@@ -54,21 +55,6 @@ def read_solves(path):
     return out
 
 
-def read_walks(path):
-    """{(gait, walk, controller): {plant value: steps}}"""
-    header, rows = plot_io.read_rows(path, "walk table")
-    plot_io.require_columns(path, header, WALK_COLUMNS)
-    col = {name: header.index(name) for name in header}
-    walks = {}
-    for line, row in enumerate(rows, start=2):
-        try:
-            key = (row[col["gait"]], row[col["walk"]], row[col["controller"]])
-            walks.setdefault(key, {})[float(row[col["plant"]])] = int(row[col["steps"]] or 0)
-        except (ValueError, IndexError) as e:
-            raise InputError(f"{path}: line {line}: {e}") from None
-    return walks
-
-
 def walked(values):
     """The plant values walked 20 steps, as text: "-1 1 2", or "none"."""
     return " ".join(f"{v:g}" for v in sorted(values) if values[v] == 20) or "none"
@@ -76,12 +62,12 @@ def walked(values):
 
 def cells(gait, walks, controller):
     """The walk columns of one gait and controller, in the table's order."""
-    masses = {round(1 + m, 6): s for m, s in walks.get((gait, "rigid", controller), {}).items()}
+    masses = {plant_mass(m): s for m, s in walks.get((gait, "rigid", controller), {}).items()}
     out = [fmt_interval(interval(masses)) or "falls at ×1"]
     for _, walk, _ in LISTED:
         values = walks.get((gait, walk, controller))
         if walk in ("lcp", "dart") and values is not None:
-            values = {round(1 + m, 6): s for m, s in values.items()}
+            values = {plant_mass(m): s for m, s in values.items()}
         out.append("—" if values is None else walked(values))
     return out
 
@@ -118,7 +104,8 @@ def write_tables(solves, walks, out):
 
 def main(out):
     solves = read_solves(os.path.join(out, "solves.csv"))
-    for path in write_tables(solves, read_walks(os.path.join(out, "walks.csv")), out):
+    walks = read_walks(os.path.join(out, "walks.csv"), "gait", str, float)
+    for path in write_tables(solves, walks, out):
         print(path)
 
 

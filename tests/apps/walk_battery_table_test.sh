@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
-# plots/strike_cost_table.py on a made-up `gaitopt study` folder: a gait that walks the rigid
+# plots/walk_battery_table.py on a made-up `gaitopt study` folder: a gait that walks the rigid
 # ground at 0.9-1.1 with a gap at 1.2, two of four pushes, one length and DART at two masses, and
 # a gait without a strike whose solve failed; the intervals and the lists in the table and CSV,
 # and "error: <file>: ..." for a solve table without the trailing impulse's ratio.
 # Needs Debian's python3-numpy (plot_io); skips (ctest: skipped) without it.
-# Usage: strike_cost_table_test.sh <repo root>
+# Usage: walk_battery_table_test.sh <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" root "$@"  # PY, TMP (removed on exit), fail
 "$PY" -c "import numpy" 2>/dev/null || skip "no numpy"
-table="$ROOT/plots/strike_cost_table.py"
+table="$ROOT/plots/walk_battery_table.py"
 out="$TMP/study"
 mkdir -p "$out"
 cat >"$out/solves.csv" <<'CSV'
@@ -44,4 +44,4 @@ sed -i 's/,impulse_trailing_cone_ratio$//' "$out/solves.csv"
 "$PY" "$table" "$out" >/dev/null 2>"$TMP/err" && fail "a solve table without the ratio passed"
 grep -q "^error: $out/solves.csv: .*impulse_trailing_cone_ratio" "$TMP/err" ||
   fail "stderr: $(cat "$TMP/err")"
-echo "strike cost table: intervals, walked lists, failed solve and a missing column named"
+echo "walk battery table: intervals, walked lists, failed solve and a missing column named"
