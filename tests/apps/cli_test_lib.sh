@@ -39,6 +39,11 @@ skip() {
   exit "$SKIP_CODE"
 }
 
+# has_text FILE TEXT WHAT: FILE holds TEXT (a fixed string), else fails naming WHAT with the file.
+has_text() {
+  grep -qF -- "$2" "$1" || fail "$3: $(cat "$1")"
+}
+
 # Runs gaitopt with the given arguments, keeping stdout, stderr and the exit code.
 run() {
   "$GAITOPT" "$@" >"$TMP/out" 2>"$TMP/err"
