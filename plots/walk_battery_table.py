@@ -72,33 +72,34 @@ def cells(gait, walks, controller):
     return out
 
 
-def header_names():
-    return [f"{c}_{name}" for c in CONTROLLERS.values()
-            for name in ["rigid_mass", *[n for n, _, _ in LISTED]]]
+def walk_columns():
+    """(controller label, column name) of every walk column, in the table's order."""
+    names = ["rigid_mass", *[name for name, _, _ in LISTED]]
+    return [(c, n) for c in CONTROLLERS.values() for n in names]
 
 
 def write_tables(solves, walks, out):
+    walk_cells = {gait: [c for controller in CONTROLLERS for c in cells(gait, walks, controller)]
+                  for gait, _ in solves}
     csv_path, md_path = os.path.join(out, "summary.csv"), os.path.join(out, "summary.md")
     with style.replacing(csv_path) as tmp, open(tmp, "w", encoding="utf-8") as f:
         f.write(",".join(["gait", "converged", "cost", "strike_normal_velocity_m_s",
-                          "impulse_trailing_cone_ratio", *header_names()]) + "\n")
+                          "impulse_trailing_cone_ratio", *[f"{c}_{n}" for c, n in walk_columns()]])
+                + "\n")
         for gait, s in solves:
             row = [gait, str(int(s["converged"])), f"{s['cost']:.6g}",
                    optional_text(s["speed"], ".4g"), optional_text(s["ratio"], ".4g")]
-            for controller in CONTROLLERS:
-                row += cells(gait, walks, controller)
-            f.write(",".join(row) + "\n")
+            f.write(",".join(row + walk_cells[gait]) + "\n")
     with style.replacing(md_path) as tmp, open(tmp, "w", encoding="utf-8") as f:
         f.write("| gait | cost | strike m/s | trailing \\|P_t\\|/P_n | "
-                + " | ".join(f"{c}: {n.replace('_', ' ')}" for c in CONTROLLERS.values()
-                             for n in ["rigid mass", *[n for n, _, _ in LISTED]]) + " |\n")
-        f.write("|---|---:|---:|---:|" + "---|" * len(header_names()) + "\n")
+                + " | ".join(f"{c}: {n.replace('_', ' ')}" for c, n in walk_columns()) + " |\n")
+        f.write("|---|---:|---:|---:|" + "---|" * len(walk_columns()) + "\n")
         for gait, s in solves:
             speed = "—" if s["speed"] is None or s["speed"] < 1e-6 else f"{s['speed']:.3f}"
             ratio = "—" if s["ratio"] is None else f"{s['ratio']:.3f}"
             cost = f"{s['cost']:.1f}" + ("" if s["converged"] else ", not converged")
-            walk_cells = [c for controller in CONTROLLERS for c in cells(gait, walks, controller)]
-            f.write(f"| {gait} | {cost} | {speed} | {ratio} | " + " | ".join(walk_cells) + " |\n")
+            f.write(f"| {gait} | {cost} | {speed} | {ratio} | " + " | ".join(walk_cells[gait])
+                    + " |\n")
     return csv_path, md_path
 
 

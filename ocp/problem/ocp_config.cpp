@@ -294,20 +294,26 @@ OcpConfig loadOcpConfig(const std::string& path, const std::vector<config::Overr
   return c;
 }
 
-double frictionBound(const dynamics::Model& model, const OcpConfig& config) {
-  const double mu = model.friction() - config.friction_margin;
+namespace {
+
+/// The robot's mu less `margin` (the config key `key`). @throws std::invalid_argument when it
+/// leaves no cone.
+double narrowedFriction(const dynamics::Model& model, double margin, const std::string& key) {
+  const double mu = model.friction() - margin;
   if (!(mu > 0))
-    throw std::invalid_argument("friction_margin must be below the robot's friction coefficient");
+    throw std::invalid_argument(key + " must be below the robot's friction coefficient");
   return mu;
+}
+
+}  // namespace
+
+double frictionBound(const dynamics::Model& model, const OcpConfig& config) {
+  return narrowedFriction(model, config.friction_margin, "friction_margin");
 }
 
 double impulseFrictionBound(const dynamics::Model& model, const OcpConfig& config) {
   if (!config.impulse_friction_margin) return frictionBound(model, config);
-  const double mu = model.friction() - *config.impulse_friction_margin;
-  if (!(mu > 0))
-    throw std::invalid_argument(
-        "impulse_friction_margin must be below the robot's friction coefficient");
-  return mu;
+  return narrowedFriction(model, *config.impulse_friction_margin, "impulse_friction_margin");
 }
 
 dynamics::Foot marginFoot(const dynamics::Model& model, const OcpConfig& config) {
