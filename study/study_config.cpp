@@ -161,6 +161,13 @@ WalkBlock readWalk(const YamlReader& r) {
   return w;
 }
 
+/// The `walks` list of a study or of a battery file.
+std::vector<WalkBlock> readWalks(const YamlReader& r) {
+  std::vector<WalkBlock> walks;
+  for (const YamlReader& walk : r.list("walks")) walks.push_back(readWalk(walk));
+  return walks;
+}
+
 StabilityBlock readStability(const YamlReader& r) {
   r.allowOnly({"options", "controllers", "sweeps"});
   return {readOptions(r, r.file()), controllers(r), r.yamlTexts("sweeps")};
@@ -172,7 +179,7 @@ StudyConfig loadStudyConfig(const std::string& path,
                             const std::vector<config::Override>& overrides) {
   const auto root = YamlReader::fromFile(path, overrides);
   root.allowOnly({"name", "description", "polynomial_gaits", "gaits", "set", "axes", "warm_start",
-                  "walks", "stability"});
+                  "walks", "walks_from", "stability"});
   StudyConfig c;
   c.name = root.string("name");
   root.stringOr("description", "");
@@ -189,8 +196,15 @@ StudyConfig loadStudyConfig(const std::string& path,
     for (const YamlReader& axis : root.list("axes")) c.axes.push_back(readAxis(axis, c.gaits));
   c.warm_from_previous =
       root.has("warm_start") && root.choice("warm_start", {"none", "previous"}) == "previous";
-  if (root.has("walks"))
-    for (const YamlReader& walk : root.list("walks")) c.walks.push_back(readWalk(walk));
+  if (root.has("walks_from")) {
+    if (root.has("walks")) root.fail("walks_from", "give either walks or walks_from, not both");
+    c.walks_file = relativeTo(path, root.string("walks_from"));
+    const auto battery = YamlReader::fromFile(c.walks_file);
+    battery.allowOnly({"walks"});
+    c.walks = readWalks(battery);
+  } else if (root.has("walks")) {
+    c.walks = readWalks(root);
+  }
   if (root.has("stability"))
     for (const YamlReader& s : root.list("stability")) c.stability.push_back(readStability(s));
   return c;

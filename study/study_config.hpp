@@ -69,6 +69,9 @@ struct StudyConfig {
   /// the cheaper optimum kept (a warm start reaches optima a cold start does not).
   bool warm_from_previous = false;
   std::vector<WalkBlock> walks;
+  /// The file `walks_from` named, whose `walks` are this study's ("" when the study lists its
+  /// own): one battery of walks shared by the studies that compare gaits on it.
+  std::string walks_file;
   std::vector<StabilityBlock> stability;
 };
 

@@ -16,6 +16,7 @@ std::vector<std::string> studyInputs(const StudyConfig& c) {
     for (std::string& input : ocp::ocpInputs(ocp::loadOcpConfig(gait.path, gait.sets)))
       if (!input.empty()) inputs.push_back(std::move(input));
   }
+  if (!c.walks_file.empty()) inputs.push_back(c.walks_file);
   for (const WalkBlock& walk : c.walks)
     for (const ToolOption& option : walk.options)
       if (option.name == "robot") inputs.push_back(option.value);

@@ -1,10 +1,13 @@
 // The study's pieces without running a solve: a config's points (every combination, the last
 // axis fastest, several keys set together, the previous point of a warm start), the CSV quoting,
 // the per-axis summary (convergence counts, medians, MUMPS's share, spread within one gait) and
-// the walk table with a column per plant; and configs refused with the key and why.
+// the walk table with a column per plant; walks read from a battery file, which the robust-design
+// studies share; and configs refused with the key and why.
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -12,6 +15,7 @@
 #include "study/axis_summary.hpp"
 #include "study/study_config.hpp"
 #include "study/study_points.hpp"
+#include "study/study_settings.hpp"
 #include "study/study_table.hpp"
 #include "study/walk_pivot.hpp"
 #include "support/config_text.hpp"
@@ -104,6 +108,49 @@ TEST(StudyConfig, RefusedWithTheKeyAndWhy) {
         [&] { loadStudyConfig(writeTempFile("bad.yaml", "name: b\n" + gait + yaml + "\n")); });
     EXPECT_NE(message.find(why), std::string::npos) << yaml << ": " << message;
   }
+}
+
+// `walks_from` reads the walks of a battery file beside the study, which then counts among the
+// files a rerun must find unchanged.
+TEST(StudyConfig, WalksFromABatteryFile) {
+  const std::string battery = writeTempFile(
+      "battery.yaml",
+      "walks:\n  - name: rigid\n    options: {ground: rigid, steps: 20}\n    controllers: "
+      "[computed_torque, mu_sliding_mode]\n    plant: {option: mass-error, values: [-0.1, 0.1]}\n");
+  const std::string gait = "gaits: [" + kOcp + "mu2004_walk.yaml]\n";
+  const StudyConfig c = loadStudyConfig(
+      writeTempFile("with_battery.yaml", "name: b\n" + gait + "walks_from: battery.yaml\n"));
+  EXPECT_EQ(c.walks_file, battery);
+  ASSERT_EQ(c.walks.size(), 1u);
+  EXPECT_EQ(c.walks[0].name, "rigid");
+  EXPECT_EQ(c.walks[0].controllers,
+            (std::vector<std::string>{"computed_torque", "mu_sliding_mode"}));
+  EXPECT_EQ(c.walks[0].plant_option, "mass-error");
+  EXPECT_EQ(c.walks[0].plant_values, (std::vector<std::string>{"-0.1", "0.1"}));
+  const std::vector<std::string> inputs = studyInputs(c);
+  EXPECT_NE(std::find(inputs.begin(), inputs.end(), battery), inputs.end());
+  // Both, or a battery with keys of a study, are refused.
+  for (const auto& [battery_text, study, why] :
+       std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"walks: []\n", "walks_from: both.yaml\nwalks: []\n", "not both"},
+           {"name: x\nwalks: []\n", "walks_from: keyed.yaml\n", "'name': unknown key"}}) {
+    const std::string name = study.substr(12, study.find('.') - 12) + ".yaml";
+    writeTempFile(name, battery_text);
+    const std::string message = configErrorOf(
+        [&] { loadStudyConfig(writeTempFile("refused.yaml", "name: b\n" + gait + study)); });
+    EXPECT_NE(message.find(why), std::string::npos) << study << ": " << message;
+  }
+}
+
+// The robust-design studies compare their gaits on one battery of walks.
+TEST(StudyConfig, TheRobustDesignStudiesWalkOneBattery) {
+  const std::string studies = std::string(GAITOPT_SOURCE_DIR) + "/configs/studies/";
+  const StudyConfig strike = loadStudyConfig(studies + "strike_cost.yaml");
+  const StudyConfig candidates = loadStudyConfig(studies + "ensemble_candidates.yaml");
+  EXPECT_EQ(strike.walks_file, candidates.walks_file);
+  ASSERT_EQ(strike.walks.size(), 6u);  // rigid masses, lengths, pushes, cases; LCP; DART
+  EXPECT_EQ(strike.walks.back().name, "dart");
+  EXPECT_EQ(strike.walks.front().plant_values.size(), 7u);  // masses x0.8 .. x1.2
 }
 
 TEST(StudyTable, CsvQuotesWhatWouldSplitAFieldAndMarkdownEscapesBars) {
