@@ -1,9 +1,9 @@
 // The gait designed with model variants driven by the closed loop's law
 // (configs/ocp/mu2004_walk_ensemble.yaml) walked on plants that are not its model, under computed
-// torque on the nominal model: 20 steps on the rigid ground with the plant's links 10 % lighter
-// and 20 % heavier, on the LCP ground (time stepping with Coulomb contact), and, in builds with
-// DART, in DART with feet that are bodies, at the nominal mass and 10 % heavier. On the rigid and
-// LCP grounds a centre of pressure beyond the shipped foot is a fall; in DART the foot tips by
+// torque on the nominal model: 20 steps on the rigid ground with the plant's links 10 % lighter,
+// 10 % and 20 % heavier, and, in builds with DART, in DART with feet that are bodies, at the
+// nominal mass and 10 % heavier. On the rigid ground a centre of pressure beyond the shipped foot
+// is a fall; in DART the foot tips by
 // DART's own physics and the controller clips its ankle torque to the foot. The default optimum
 // (mu2004_walk.yaml), walked the same way, falls on every one of these plants. And the design
 // itself between its collocation points: every model of the ensemble meets its contact
@@ -104,10 +104,8 @@ TEST_P(EnsembleWalk, TheEnsembleOptimumWalksAPlantTheDefaultOptimumFallsOn) {
                  fmt::format("{} steps: {}", plain.steps_completed, plain.failure));
   EXPECT_EQ(designed.steps_completed, 20) << designed.failure;
   EXPECT_LT(plain.steps_completed, 20) << "the default optimum walked this plant too";
-  // Issue 33 asks for at most 2 times the default optimum's cost; the strike design and the
-  // least normal force of 150 N that the LCP ground and DART need cost 2.5 times
-  // (docs/optimal_gaits.md#model-variants-a-gait-designed-to-be-walked).
-  EXPECT_LT(ensemble.solution.result.cost, 2.6 * plain_optimum.solution.result.cost);
+  // Issue 33's price of robustness: at most 2 times the default optimum's cost.
+  EXPECT_LT(ensemble.solution.result.cost, 2 * plain_optimum.solution.result.cost);
 }
 
 /// Issue 33's check of the design itself, between the collocation points: every model of the
@@ -174,7 +172,7 @@ TEST_F(EnsembleExport, AModelOffByMusCaseTwoStaysOnTheGroundBetweenThePoints) {
 
 /// The plants of the walk test, one instantiation.
 std::vector<Plant> plants() {
-  std::vector<Plant> p{{"rigid", -0.1}, {"rigid", 0.2}, {"lcp", 0.0}};
+  std::vector<Plant> p{{"rigid", -0.1}, {"rigid", 0.1}, {"rigid", 0.2}};
 #ifdef GAITOPT_HAS_DART
   p.insert(p.end(), {{"dart", 0.0}, {"dart", 0.1}});
 #endif
