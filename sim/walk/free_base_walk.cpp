@@ -177,6 +177,14 @@ struct Walker {
          run.force.e, run.s.q(0), run.s.q(1)});
   }
 
+  /// Touchdown of a gait with a DSP: the DSP starts at this time step's state.
+  void beginDsp(StepRun& run) const {
+    run.e_x0 = dynamics::floatingSwingTip(plant, run.s.q)(0);
+    const PhaseHandover single_support = handover(run);
+    run.clock = ref.dspClockAt(anglesOf(plant, run.s.q));
+    startPhase(run, Phase::kDsp, &single_support);
+  }
+
   /// One time step; false when the step has ended (normally or not).
   bool tick(StepRun& run, double t0, int index, StepResult& r) const {
     const ContactStep cs = ground.step(run.s, feedback(run));
@@ -199,17 +207,16 @@ struct Walker {
     run.e_unloaded = run.phase == Phase::kDsp && run.force.e(1) <= 0 ? run.e_unloaded + h : 0;
     r.failure = failure(run);
     if (!r.failure.empty()) return false;
+    // The time step that lands E ends the SSP: its state is the DSP's first, so the torque judged
+    // and logged there is the DSP law's, the one the next time step applies (the SSP law's at the
+    // state after the touchdown's impulse is never applied, and judged it was a spurious fall).
+    const bool landed = run.phase == Phase::kSsp && touchedDown(run);
+    if (landed) r.ssp_duration = run.elapsed;
+    if (landed && ref.hasDsp()) beginDsp(run);
     record(run, t0, index, r);
     if (!r.failure.empty()) return false;
-    if (run.phase == Phase::kSsp) {
-      if (!touchedDown(run)) return true;
-      r.ssp_duration = run.elapsed;
-      run.e_x0 = dynamics::floatingSwingTip(plant, run.s.q)(0);
-      const PhaseHandover single_support = handover(run);
-      run.clock = ref.dspClockAt(anglesOf(plant, run.s.q));
-      startPhase(run, Phase::kDsp, &single_support);
-      return ref.hasDsp();
-    }
+    if (landed) return ref.hasDsp();
+    if (run.phase == Phase::kSsp) return true;
     // The trailing tip unloading ends the DSP early, as the trailing-force event of the rigid
     // walk does, but only in the DSP's second half: right after touchdown the impact can
     // unload it for a moment on a non-rigid contact (an optimum with a lightly loaded trailing

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <iterator>
 #include <vector>
 
 #include <fmt/format.h>
@@ -128,6 +129,28 @@ TEST(GroundWalk, ACompliantWalkStartsWithTheStanceTipCarryingItsLoad) {
        log);
   ASSERT_GE(normal.size(), 2U);
   EXPECT_NEAR(normal.front(), planned, 0.05 * planned);
+}
+
+TEST(GroundWalk, TheTimeStepThatLandsTheSwingTipIsJudgedUnderTheDoubleSupportLaw) {
+  // The time step that lands E ends the single support: the next one applies the DSP law, so
+  // that law's torque is the one judged (centre of pressure) and logged at the landing state.
+  // Judged under the SSP law there, the torque answering the touchdown's velocity jump, which no
+  // time step applies, put a stance foot's centre of pressure 3.5 cm beyond its toe: a fall of
+  // the ensemble optimum on the LCP ground that its walk never made.
+  const Reference ref(test::polynomialGait());
+  for (const char* name : {"lcp", "impedance"}) {
+    std::vector<WalkSample> samples;
+    const auto log = [&](const WalkSample& s) { samples.push_back(s); };
+    walk(test::longHeelRobot(), test::computedTorque(), ref, shippedGround(name), {1, {}, {}}, log);
+    // The swing tip leaves the ground (on the impedance ground it starts pressed in), then lands.
+    const auto airborne = std::find_if(samples.begin(), samples.end(),
+                                       [](const WalkSample& s) { return s.force_swing(1) <= 0; });
+    const auto landing = std::find_if(airborne, samples.end(),
+                                      [](const WalkSample& s) { return s.force_swing(1) > 0; });
+    ASSERT_NE(landing, samples.end()) << name << ": the swing tip never landed";
+    EXPECT_EQ(landing->phase, gaits::Phase::kDsp) << name << " at " << landing->t << " s";
+    EXPECT_EQ(std::prev(landing)->phase, gaits::Phase::kSsp) << name;
+  }
 }
 
 TEST(GroundWalk, TooLongRk4StepOnAStiffGroundIsReportedAsDiverged) {
