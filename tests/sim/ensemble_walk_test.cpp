@@ -3,11 +3,10 @@
 // torque on the nominal model: 20 steps on the rigid ground with the plant's links 10 % lighter,
 // 10 % and 20 % heavier, and, in builds with DART, in DART with feet that are bodies, at the
 // nominal mass and 10 % heavier. On the rigid ground a centre of pressure beyond the shipped foot
-// is a fall; in DART the foot tips by
-// DART's own physics and the controller clips its ankle torque to the foot. The default optimum
-// (mu2004_walk.yaml), walked the same way, falls on every one of these plants. And the design
-// itself between its collocation points: every model of the ensemble meets its contact
-// conditions on its own 1 kHz export.
+// is a fall; in DART the foot tips by DART's own physics and the controller clips its ankle
+// torque to the foot. The default optimum (mu2004_walk.yaml), walked the same way, falls on every
+// one of these plants. And the design itself between its collocation points: every model of the
+// ensemble meets its contact conditions on its own 1 kHz export.
 #include <gtest/gtest.h>
 
 #include <cmath>
