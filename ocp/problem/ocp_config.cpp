@@ -84,7 +84,8 @@ void readConstraints(const YamlReader& r, OcpConfig& c) {
   r.allowOnly({"torque_limits", "knee_limits", "angle_range", "rate_limit", "joint_velocity_limits",
                "swing_descends", "trailing_lifts", "ground_contact", "impact_friction", "zmp",
                "clearance", "friction_margin", "impulse_friction_margin", "zmp_margin",
-               "min_normal_force", "dsp_reduced_coordinates", "jerk_limit", "interior_contact"});
+               "min_normal_force", "dsp_reduced_coordinates", "jerk_limit", "interior_contact",
+               "max_knee_flexion"});
   c.ground_contact = r.booleanOr("ground_contact", true);
   c.impact_friction = r.booleanOr("impact_friction", true);
   c.zmp = r.booleanOr("zmp", true);
@@ -107,6 +108,15 @@ void readConstraints(const YamlReader& r, OcpConfig& c) {
   if (r.has("clearance")) c.clearance = readClearance(r.map("clearance"));
   c.torque_limits = r.booleanOr("torque_limits", true);
   c.knee_limits = r.booleanOr("knee_limits", true);
+  if (r.has("max_knee_flexion")) {
+    if (!c.knee_limits) r.fail("max_knee_flexion", "a knee flexion bound needs knee_limits: true");
+    const std::vector<double> v =
+        r.numbers("max_knee_flexion", config::angleInRange(0, std::numbers::pi));
+    if (v.size() != 2)
+      r.fail("max_knee_flexion", fmt::format("expected [stance, swing], got {} numbers", v.size()));
+    c.max_stance_knee_flexion = v[0];
+    c.max_swing_knee_flexion = v[1];
+  }
   c.angle_range = r.numberOr("angle_range", 0.0, config::inRange(0, std::numbers::pi, "[rad]"));
   c.rate_limit = r.numberOr("rate_limit", 0.0, config::inRange(0, 100, "[rad/s]"));
   c.jerk_limit = r.numberOr("jerk_limit", 0.0, config::inRange(0, 1e7, "[rad/s^3]"));

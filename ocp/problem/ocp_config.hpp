@@ -13,6 +13,7 @@
 #include "ocp/solve/continuation_options.hpp"
 #include "ocp/solve/ipopt_adapter.hpp"
 #include "ocp/transcription/collocation.hpp"
+#include "ocp/transcription/nlp.hpp"
 
 namespace gaitopt::ocp {
 
@@ -98,8 +99,11 @@ struct OcpConfig {
   // Constraint switches and bounds.
   bool torque_limits = true;  ///< |tau_j| <= robot torque limit; unactuated joints at 0
   bool knee_limits = true;    ///< knees never hyperextend (stance q1 >= 0, swing <= 0)
-  double angle_range = 0;     ///< |theta - upright| bound per link [rad] (0: off)
-  double rate_limit = 0;      ///< |dtheta| bound [rad/s] (0: off)
+  /// With knee_limits: each knee's flexion |q| at most this, stance leg (links 0, 1) and swing
+  /// leg (links n-2, n-1) as gaits/export/metrics.hpp's posture reads them [rad] (inf: off)
+  double max_stance_knee_flexion = kInf, max_swing_knee_flexion = kInf;
+  double angle_range = 0;  ///< |theta - upright| bound per link [rad] (0: off)
+  double rate_limit = 0;   ///< |dtheta| bound [rad/s] (0: off)
   /// |ddtheta_{p+1} - ddtheta_p| <= J (t_{p+1} - t_p) between consecutive points [rad/s^3]
   /// (jerk_limit.hpp; 0: off)
   double jerk_limit = 0;

@@ -91,10 +91,10 @@ void KneeDirection::jacobian(const Eigen::VectorXd&, Eigen::Ref<Eigen::MatrixXd>
 }
 
 Eigen::VectorXd KneeDirection::lowerBounds() const {
-  return Eigen::Vector2d(0, -kInf);
+  return Eigen::Vector2d(0, -max_swing_);
 }
 Eigen::VectorXd KneeDirection::upperBounds() const {
-  return Eigen::Vector2d(kInf, 0);
+  return Eigen::Vector2d(max_stance_, 0);
 }
 
 void SwingHeight::evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const {

@@ -67,10 +67,13 @@ class WorkSplit : public PointFunction {
 };
 
 /// Knees never hyperextend: stance knee q1 = theta_1 - theta_2 >= 0 and swing knee
-/// q_{n-1} = theta_{n-1} - theta_n <= 0 (knee forward in both legs, conventions.hpp).
+/// q_{n-1} = theta_{n-1} - theta_n <= 0 (knee forward in both legs, conventions.hpp); and they
+/// flex at most max_stance / max_swing [rad] (an upright gait; kInf: unbounded).
 class KneeDirection : public PointFunction {
  public:
-  explicit KneeDirection(const PointLayout& point) : point_(point) {}
+  explicit KneeDirection(const PointLayout& point, double max_stance = kInf,
+                         double max_swing = kInf)
+      : point_(point), max_stance_(max_stance), max_swing_(max_swing) {}
   int rows() const override { return 2; }
   void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override;
   void jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const override;
@@ -83,6 +86,7 @@ class KneeDirection : public PointFunction {
 
  private:
   PointLayout point_;
+  double max_stance_, max_swing_;
 };
 
 /// Physical joint rates dq = M dtheta (Mu 2.39-2.41: dq_0 = dtheta_0, dq_j = dtheta_{j-1} -

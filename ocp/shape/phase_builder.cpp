@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <memory>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 
 #include "dynamics/joint_coordinates.hpp"
@@ -149,7 +150,11 @@ void addPhaseSets(Nlp& nlp, const dynamics::Model& model, const OcpConfig& c, co
     addPathConstraint(nlp, phase, "joint_rates",
                       std::make_shared<JointRateLimits>(model, phase.point));
   if (c.knee_limits && model.legLinks() == 2)
-    addPathConstraint(nlp, phase, "knees", std::make_shared<KneeDirection>(phase.point));
+    addPathConstraint(nlp, phase, "knees",
+                      std::make_shared<KneeDirection>(phase.point, c.max_stance_knee_flexion,
+                                                      c.max_swing_knee_flexion));
+  else if (c.max_stance_knee_flexion < kInf || c.max_swing_knee_flexion < kInf)
+    throw std::invalid_argument("constraints.max_knee_flexion: the robot's legs have no knees");
   if (c.ground_contact) {
     // The ZMP rows only bound an ankle torque, so a passive ankle has none.
     const auto zmp_foot = c.zmp && model.joints().front().actuated

@@ -3,18 +3,22 @@
 // Mu's closed-form map (2.36c) inside its friction cone and pushing up (2.37b), with the old
 // stance tip lifting off (2.37a); and in the DSP the centre of pressure of foot B, which carries
 // the ankle torque alone, on that foot at every 1 kHz sample of the export; and the physical
-// joint rates dq = M dtheta (Mu 2.41) within the robot file's velocity limits.
+// joint rates dq = M dtheta (Mu 2.41) within the robot file's velocity limits; the knees' flexion
+// within its bound.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <utility>
 
 #include <fmt/format.h>
 
 #include "dynamics/impact/impact.hpp"
 #include "dynamics/robot_files/robot_config.hpp"
+#include "gaits/export/metrics.hpp"
 #include "ocp/problem/gait_problem.hpp"
+#include "support/edited_config.hpp"
 #include "support/solved_config.hpp"
 
 namespace gaitopt::ocp {
@@ -102,6 +106,60 @@ TEST(JointVelocityLimits, BindTheKneesOfTheDefaultGaitAtTheRobotsLimit) {
   EXPECT_GT(before, 1.05);
   EXPECT_LT(after, 1.0 + 5e-3);  // at the points exactly, between them within 0.5 %
   EXPECT_GE(limited.result.cost, free_rates.result.cost - 1e-6);
+}
+
+TEST(KneeFlexionBound, ConfigReadsStanceAndSwingAndRefusesWhatItCannotHold) {
+  const std::string config = shippedOcpConfig("mu2004_walk");
+  const std::string knees = "knee_limits: true";
+  const auto edited = [&](const std::string& to) {
+    return test::loadEditedOcpConfig(config, knees, to);
+  };
+  EXPECT_EQ(edited(knees + "\n  max_knee_flexion: [0.7, 1.3]"), "");
+  const OcpConfig c =
+      loadOcpConfig(config, {config::parseOverride("constraints.max_knee_flexion=[0.7, 1.3]")});
+  EXPECT_DOUBLE_EQ(c.max_stance_knee_flexion, 0.7);
+  EXPECT_DOUBLE_EQ(c.max_swing_knee_flexion, 1.3);
+  const std::string one = edited(knees + "\n  max_knee_flexion: [0.7]");
+  EXPECT_NE(one.find("key 'constraints.max_knee_flexion': expected [stance, swing], got 1 numbers"),
+            std::string::npos)
+      << one;
+  const std::string negative = edited(knees + "\n  max_knee_flexion: [-0.1, 1.3]");
+  EXPECT_NE(negative.find("key 'constraints.max_knee_flexion[0]': expected an angle in [0, 3.142]"),
+            std::string::npos)
+      << negative;
+  const std::string no_limits = edited("knee_limits: false\n  max_knee_flexion: [0.7, 1.3]");
+  EXPECT_NE(no_limits.find("key 'constraints.max_knee_flexion': a knee flexion bound needs "
+                           "knee_limits: true"),
+            std::string::npos)
+      << no_limits;
+}
+
+TEST(KneeFlexionBound, HoldsTheDefaultGaitsSwingKneeUprightBetweenThePoints) {
+#ifndef NDEBUG
+  GTEST_SKIP() << "two solves: optimised builds only";
+#endif
+  // The default optimum swings its knee past issue 33's 75 degrees. With the bound
+  // (constraints.max_knee_flexion: [stance, swing]) every 1 kHz sample keeps within it, measured
+  // by the export's posture (gaits/export/metrics.hpp), not by the rows.
+  constexpr double kDeg = std::numbers::pi / 180;
+  const Solved free_knee(loadOcpConfig(shippedOcpConfig("mu2004_walk")));
+  OcpConfig c = loadOcpConfig(shippedOcpConfig("mu2004_walk"));
+  c.max_stance_knee_flexion = 45 * kDeg;
+  c.max_swing_knee_flexion = 75 * kDeg;
+  const Solved bounded(c);
+  ASSERT_EQ(free_knee.result.status, "Solve_Succeeded");
+  ASSERT_EQ(bounded.result.status, "Solve_Succeeded");
+  const auto posture = [](const Solved& s) {
+    return gaits::posture(reconstructDense(s.problem, s.model, s.result.x, 1000), s.model);
+  };
+  const gaits::Posture before = posture(free_knee), after = posture(bounded);
+  RecordProperty("swing_knee_without_deg", fmt::format("{:.2f}", before.swing_knee / kDeg));
+  RecordProperty("swing_knee_with_deg", fmt::format("{:.2f}", after.swing_knee / kDeg));
+  RecordProperty("cost_with", fmt::format("{:.4f}", bounded.result.cost));
+  EXPECT_GT(before.swing_knee, 80 * kDeg);
+  EXPECT_LT(after.swing_knee, 75.1 * kDeg);
+  EXPECT_LT(after.stance_knee, 45.1 * kDeg);
+  EXPECT_GE(bounded.result.cost, free_knee.result.cost - 1e-6);
 }
 
 }  // namespace
