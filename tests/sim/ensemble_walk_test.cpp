@@ -7,12 +7,13 @@
 // foot tips by DART's own physics and the controller clips its ankle torque to the foot. The
 // default optimum (mu2004_walk.yaml), walked the same way, falls on every one of these plants. And
 // the design itself between its collocation points: every model of the ensemble meets its contact
-// conditions on its own 1 kHz export.
+// conditions on its own 1 kHz export, and the nominal's export stays upright.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdlib>
 #include <memory>
+#include <numbers>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -141,6 +142,22 @@ TEST_F(EnsembleExport, EveryModelOfTheEnsembleMeetsItsContactConditionsOnTheOneK
     EXPECT_GT(clearance, -1e-6) << "model " << v;
     EXPECT_LT(drift, 1e-4) << "model " << v;
   }
+}
+
+/// Issue 33's upright posture, on the nominal's 1 kHz export: torso within 15 degrees of
+/// vertical, stance knee flexed at most 45 and swing knee at most 75 degrees over the whole step
+/// (the default optimum swings its knee to 92).
+TEST_F(EnsembleExport, TheEnsembleOptimumStaysUpright) {
+  const Solved& s = ensembleOptimum();
+  ASSERT_TRUE(s.solution.result.success) << s.solution.result.status;
+  constexpr double kDeg = std::numbers::pi / 180;
+  const gaits::Posture p = gaits::posture(
+      ocp::reconstructDense(s.solution.problem, s.nominal, s.solution.result.x, 1000.0), s.nominal);
+  RecordProperty("posture_deg", fmt::format("{:.1f} {:.1f} {:.1f}", p.torso_lean / kDeg,
+                                            p.stance_knee / kDeg, p.swing_knee / kDeg));
+  EXPECT_LT(p.torso_lean, 15 * kDeg);
+  EXPECT_LT(p.stance_knee, 45 * kDeg);
+  EXPECT_LT(p.swing_knee, 75 * kDeg);
 }
 
 /// Contact between the points (ocp/problem/interior_contact.hpp): a copy whose computed-torque
