@@ -250,13 +250,15 @@ std::vector<std::string> shippedConfigs() {
 
 int main(int argc, char** argv) {
   using namespace gaitopt;
-  if (argc < 2) {
+  const bool table = argc == 3 && std::string(argv[1]) == "--table";
+  // An option other than --table is a mistake, not an output file: a run takes minutes.
+  if (argc < 2 || (!table && argv[1][0] == '-')) {
     std::fprintf(stderr,
                  "usage: %s OUT.csv [OCP_CONFIG | LIBRARY_CONFIG ...]\n       %s --table CSV\n",
                  argv[0], argv[0]);
     return 2;
   }
-  if (std::string(argv[1]) == "--table" && argc == 3) {  // the table of an earlier run's CSV
+  if (table) {  // the table of an earlier run's CSV
     bench::printTable(bench::readCsv(argv[2]));
     return 0;
   }
