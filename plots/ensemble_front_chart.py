@@ -118,7 +118,7 @@ def write_tables(rows, out):
                               f"{r['cost_ratio']:.4g}", *posture,
                               *[fmt_interval(r[k]) for k in keys]]) + "\n")
     with style.replacing(os.path.join(out, "front.md")) as tmp, open(tmp, "w") as f:
-        f.write("| copies ±W % | cost (× default) | torso, stance knee, swing knee [deg] | "
+        f.write("| width W % | cost (× default) | torso, stance knee, swing knee [deg] | "
                 + " | ".join(f"{g}: {CONTROLLERS[c]}" for g, c in keys) + " |\n")
         f.write("|---|---|---|" + "---|" * len(keys) + "\n")
         for r in rows:
@@ -140,12 +140,12 @@ def draw(rows, path):
                      for r in converged]
             ax.plot([s[1] for s in spans], [s[0] for s in spans], marker=marker, label=ground)
             for ratio, span, width in spans:
-                ax.annotate(f"±{width}", (span, ratio), fontsize=7, xytext=(3, 3),
+                ax.annotate(f"W={width}", (span, ratio), fontsize=7, xytext=(3, 3),
                             textcoords="offset points")
         style.finish(ax, "plant-mass interval walked 20 steps (width)", "cost / default optimum's",
                      title=label)
-    fig.suptitle("Ensemble widths: cost against the mass interval walked (points: copies ±W %)",
-                 fontsize=9)
+    fig.suptitle("Ensemble widths: cost against the mass interval walked "
+                 "(points: ensemble width W %)", fontsize=9)
     fig.tight_layout()
     style.save(fig, path)
 

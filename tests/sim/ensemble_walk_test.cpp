@@ -1,13 +1,14 @@
 // The gait designed with model variants driven by the closed loop's law
 // (configs/ocp/mu2004_walk_ensemble.yaml) walked on plants that are not its model, under computed
-// torque on the nominal model: 20 steps on the rigid ground with the plant's links 10 % lighter,
-// 10 % and 20 % heavier, on the LCP ground (time stepping with Coulomb contact) 5 % lighter, and,
-// in builds with DART, in DART with feet that are bodies, at the nominal mass and 10 % heavier.
-// On the rigid and LCP grounds a centre of pressure beyond the shipped foot is a fall; in DART the
-// foot tips by DART's own physics and the controller clips its ankle torque to the foot. The
-// default optimum (mu2004_walk.yaml), walked the same way, falls on every one of these plants. And
-// the design itself between its collocation points: every model of the ensemble meets its contact
-// conditions on its own 1 kHz export, and the nominal's export stays upright.
+// torque on the nominal model: 20 steps on the rigid ground with the plant's links 20 % and 10 %
+// lighter, 10 % and 20 % heavier or 5 % shorter, on the LCP ground (time stepping with Coulomb
+// contact) 10 % lighter, and, in builds with DART, in DART with feet that are bodies, at the
+// nominal mass and 10 % heavier. On the rigid and LCP grounds a centre of pressure beyond the
+// shipped foot is a fall; in DART the foot tips by DART's own physics and the controller clips its
+// ankle torque to the foot. The default optimum (mu2004_walk.yaml), walked the same way, falls on
+// every one of these plants. And the design itself between its collocation points: every model of
+// the ensemble meets its contact conditions on its own 1 kHz export, and the nominal's export stays
+// upright.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -50,19 +51,22 @@ struct Solved {
   Reference reference;
 };
 
-/// A plant the gaits were not designed on: a ground (configs/grounds/NAME.yaml) and a mass error.
+/// A plant the gaits were not designed on: a ground (configs/grounds/NAME.yaml), a mass error
+/// (every link's mass and inertia) and a length error (every length and centre of mass).
 struct Plant {
   const char* ground;
   double mass_error;
+  double length_error = 0;
 };
 
 void PrintTo(const Plant& p, std::ostream* os) {
-  *os << p.ground << " ground, plant mass x" << 1 + p.mass_error;
+  *os << p.ground << " ground, plant mass x" << 1 + p.mass_error << ", lengths x"
+      << 1 + p.length_error;
 }
 
 WalkResult walkOn(const Solved& s, const Plant& p) {
-  const dynamics::Model plant =
-      dynamics::perturbedModel(s.nominal, {p.mass_error, p.mass_error, 0, 0});
+  const dynamics::Model plant = dynamics::perturbedModel(
+      s.nominal, {p.mass_error, p.mass_error, p.length_error, p.length_error});
   const TrackingController controller(s.nominal, std::make_shared<PdLaw>(400, 40));
   ContactRules rules;
   const bool dart = std::string(p.ground) == "dart";
@@ -115,7 +119,7 @@ TEST_P(EnsembleWalk, TheEnsembleOptimumWalksAPlantTheDefaultOptimumFallsOn) {
 /// tip in contact inside its friction cone, keeps its stance foot's centre of pressure on the
 /// foot, its swing tip above the ground and its double-support tip where it landed (within
 /// 0.1 mm: the double support is collocated in the angles, Mu 2.9 holds at the points). On the
-/// double support's former 6 segments the lighter copy's trailing foot had its centre of
+/// double support's former 6 segments the 10 % lighter copy's trailing foot had its centre of
 /// pressure 6 mm beyond the foot for 3 ms after the touchdown.
 TEST_F(EnsembleExport, EveryModelOfTheEnsembleMeetsItsContactConditionsOnTheOneKilohertzExport) {
   const Solved& s = ensembleOptimum();
@@ -189,7 +193,8 @@ TEST_F(EnsembleExport, AModelOffByMusCaseTwoStaysOnTheGroundBetweenThePoints) {
 
 /// The plants of the walk test, one instantiation.
 std::vector<Plant> plants() {
-  std::vector<Plant> p{{"rigid", -0.1}, {"rigid", 0.1}, {"rigid", 0.2}, {"lcp", -0.05}};
+  std::vector<Plant> p{{"rigid", -0.2}, {"rigid", -0.1},     {"rigid", 0.1},
+                       {"rigid", 0.2},  {"rigid", 0, -0.05}, {"lcp", -0.1}};
 #ifdef GAITOPT_HAS_DART
   p.insert(p.end(), {{"dart", 0.0}, {"dart", 0.1}});
 #endif
@@ -197,10 +202,14 @@ std::vector<Plant> plants() {
 }
 
 std::string plantName(const ::testing::TestParamInfo<Plant>& info) {
-  const long percent = std::lround(100 * info.param.mass_error);
-  if (percent == 0) return fmt::format("{}_nominal", info.param.ground);
-  return fmt::format("{}_{}{}", info.param.ground, percent < 0 ? "lighter" : "heavier",
-                     std::labs(percent));
+  const long mass = std::lround(100 * info.param.mass_error);
+  const long length = std::lround(100 * info.param.length_error);
+  if (length != 0)
+    return fmt::format("{}_{}{}", info.param.ground, length < 0 ? "shorter" : "longer",
+                       std::labs(length));
+  if (mass == 0) return fmt::format("{}_nominal", info.param.ground);
+  return fmt::format("{}_{}{}", info.param.ground, mass < 0 ? "lighter" : "heavier",
+                     std::labs(mass));
 }
 
 INSTANTIATE_TEST_SUITE_P(Plants, EnsembleWalk, ::testing::ValuesIn(plants()), plantName);
