@@ -202,14 +202,14 @@ std::vector<Plant> plants() {
 }
 
 std::string plantName(const ::testing::TestParamInfo<Plant>& info) {
-  const long mass = std::lround(100 * info.param.mass_error);
-  const long length = std::lround(100 * info.param.length_error);
-  if (length != 0)
-    return fmt::format("{}_{}{}", info.param.ground, length < 0 ? "shorter" : "longer",
-                       std::labs(length));
-  if (mass == 0) return fmt::format("{}_nominal", info.param.ground);
-  return fmt::format("{}_{}{}", info.param.ground, mass < 0 ? "lighter" : "heavier",
-                     std::labs(mass));
+  const auto named = [&](double error, const char* below, const char* above) {
+    const long percent = std::lround(100 * error);
+    return fmt::format("{}_{}{}", info.param.ground, percent < 0 ? below : above,
+                       std::labs(percent));
+  };
+  if (info.param.length_error != 0) return named(info.param.length_error, "shorter", "longer");
+  if (info.param.mass_error == 0) return fmt::format("{}_nominal", info.param.ground);
+  return named(info.param.mass_error, "lighter", "heavier");
 }
 
 INSTANTIATE_TEST_SUITE_P(Plants, EnsembleWalk, ::testing::ValuesIn(plants()), plantName);
