@@ -105,7 +105,15 @@ void readSets(const YamlReader& set, const std::string& prefix,
   }
 }
 
-/// `gaits`: each a path, or `{config: PATH, name: NAME, set: {...}}`; each loads with its sets.
+/// A gait entry's `set`: one mapping, or a list of mappings read in order (so an anchored
+/// mapping shared by several entries is followed by each entry's own values).
+void readEntrySets(const YamlReader& entry, std::vector<config::Override>& sets) {
+  if (entry.isMap("set")) return readSets(entry.map("set"), "", sets);
+  for (const YamlReader& part : entry.list("set")) readSets(part, "", sets);
+}
+
+/// `gaits`: each a path, or `{config: PATH, name: NAME, set: {...} or [{...}, ...]}`; each loads
+/// with its sets.
 std::vector<StudyGait> readGaits(const YamlReader& root,
                                  const std::vector<config::Override>& sets) {
   std::vector<StudyGait> gaits;
@@ -117,7 +125,7 @@ std::vector<StudyGait> readGaits(const YamlReader& root,
       entry->allowOnly({"config", "name", "set"});
       g.path = entry->string("config");
       g.name = entry->stringOr("name", "");
-      if (entry->has("set")) readSets(entry->map("set"), "", g.sets);
+      if (entry->has("set")) readEntrySets(*entry, g.sets);
     }
     g.path = relativeTo(root.file(), g.path);
     if (g.name.empty()) g.name = fs::path(g.path).stem().string();

@@ -79,6 +79,19 @@ TEST(StudyPoints, AGaitEntryWithANameAndValuesOfItsOwn) {
   EXPECT_EQ(points[0].overrides[1].text(), "constraints.friction_margin=0.3");
   EXPECT_EQ(points[1].folder, "mu2004_walk");
   EXPECT_EQ(points[1].overrides.size(), 1u);
+  // A list of mappings is read in order: a shared anchored mapping, then the entry's own values.
+  const StudyConfig listed = loadStudyConfig(writeTempFile(
+      "entry_list.yaml", "name: e\ngaits:\n  - config: " + kOcp +
+                             "mu2004_walk.yaml\n    set: [&shared {solver.tolerance: 1.0e-6}, "
+                             "{constraints.friction_margin: 0.3}]\n  - config: " +
+                             kOcp + "mu2004_walk.yaml\n    name: b\n    set: [*shared]\n"));
+  const std::vector<StudyPoint> listedPoints = studyPoints(listed);
+  ASSERT_EQ(listedPoints.size(), 2u);
+  ASSERT_EQ(listedPoints[0].overrides.size(), 2u);
+  EXPECT_EQ(listedPoints[0].overrides[0].text(), "solver.tolerance=1.0e-6");
+  EXPECT_EQ(listedPoints[0].overrides[1].text(), "constraints.friction_margin=0.3");
+  ASSERT_EQ(listedPoints[1].overrides.size(), 1u);
+  EXPECT_EQ(listedPoints[1].overrides[0].text(), "solver.tolerance=1.0e-6");
   // A value the config refuses names the entry.
   const std::string message = configErrorOf([&] {
     loadStudyConfig(writeTempFile(
