@@ -80,12 +80,40 @@ ClearanceProfile readClearance(const YamlReader& r) {
   return p;
 }
 
+const std::vector<std::string> kConstraintKeys{"torque_limits",
+                                               "knee_limits",
+                                               "angle_range",
+                                               "rate_limit",
+                                               "joint_velocity_limits",
+                                               "swing_descends",
+                                               "trailing_lifts",
+                                               "ground_contact",
+                                               "impact_friction",
+                                               "zmp",
+                                               "clearance",
+                                               "friction_margin",
+                                               "impulse_friction_margin",
+                                               "zmp_margin",
+                                               "min_normal_force",
+                                               "dsp_reduced_coordinates",
+                                               "jerk_limit",
+                                               "interior_contact",
+                                               "max_knee_flexion",
+                                               "min_trailing_knee_flexion"};
+
+/// `min_trailing_knee_flexion`: a bend of the trailing knee through the double support, inside
+/// the stance knee's own upper bound.
+void readTrailingKneeFlexion(const YamlReader& r, OcpConfig& c) {
+  const char* key = "min_trailing_knee_flexion";
+  if (!r.has(key)) return;
+  if (!c.knee_limits) r.fail(key, "a knee flexion bound needs knee_limits: true");
+  c.min_trailing_knee_flexion = r.number(key, config::angleInRange(0, std::numbers::pi / 2));
+  if (c.min_trailing_knee_flexion >= c.max_stance_knee_flexion)
+    r.fail(key, "must be below max_knee_flexion's stance bound");
+}
+
 void readConstraints(const YamlReader& r, OcpConfig& c) {
-  r.allowOnly({"torque_limits", "knee_limits", "angle_range", "rate_limit", "joint_velocity_limits",
-               "swing_descends", "trailing_lifts", "ground_contact", "impact_friction", "zmp",
-               "clearance", "friction_margin", "impulse_friction_margin", "zmp_margin",
-               "min_normal_force", "dsp_reduced_coordinates", "jerk_limit", "interior_contact",
-               "max_knee_flexion"});
+  r.allowOnly(kConstraintKeys);
   c.ground_contact = r.booleanOr("ground_contact", true);
   c.impact_friction = r.booleanOr("impact_friction", true);
   c.zmp = r.booleanOr("zmp", true);
@@ -117,6 +145,7 @@ void readConstraints(const YamlReader& r, OcpConfig& c) {
     c.max_stance_knee_flexion = v[0];
     c.max_swing_knee_flexion = v[1];
   }
+  readTrailingKneeFlexion(r, c);
   c.angle_range = r.numberOr("angle_range", 0.0, config::inRange(0, std::numbers::pi, "[rad]"));
   c.rate_limit = r.numberOr("rate_limit", 0.0, config::inRange(0, 100, "[rad/s]"));
   c.jerk_limit = r.numberOr("jerk_limit", 0.0, config::inRange(0, 1e7, "[rad/s^3]"));

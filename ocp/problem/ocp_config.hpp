@@ -102,6 +102,11 @@ struct OcpConfig {
   /// With knee_limits: each knee's flexion |q| at most this, stance leg (links 0, 1) and swing
   /// leg (links n-2, n-1) as gaits/export/metrics.hpp's posture reads them [rad] (inf: off)
   double max_stance_knee_flexion = kInf, max_swing_knee_flexion = kInf;
+  /// With knee_limits: in the double support the trailing knee (links 0, 1) flexed at least
+  /// this [rad] (0: off). A straight trailing knee makes the hip's position from that leg, the
+  /// double support's reduced coordinates (Mu 2.13), singular, and the closed loop's
+  /// double-support laws invert them (sim/controllers/computed_torque.cpp).
+  double min_trailing_knee_flexion = 0;
   double angle_range = 0;  ///< |theta - upright| bound per link [rad] (0: off)
   double rate_limit = 0;   ///< |dtheta| bound [rad/s] (0: off)
   /// |ddtheta_{p+1} - ddtheta_p| <= J (t_{p+1} - t_p) between consecutive points [rad/s^3]

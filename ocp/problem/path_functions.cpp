@@ -91,7 +91,7 @@ void KneeDirection::jacobian(const Eigen::VectorXd&, Eigen::Ref<Eigen::MatrixXd>
 }
 
 Eigen::VectorXd KneeDirection::lowerBounds() const {
-  return Eigen::Vector2d(0, -max_swing_);
+  return Eigen::Vector2d(min_stance_, -max_swing_);
 }
 Eigen::VectorXd KneeDirection::upperBounds() const {
   return Eigen::Vector2d(max_stance_, 0);

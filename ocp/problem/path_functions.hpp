@@ -67,13 +67,15 @@ class WorkSplit : public PointFunction {
 };
 
 /// Knees never hyperextend: stance knee q1 = theta_1 - theta_2 >= 0 and swing knee
-/// q_{n-1} = theta_{n-1} - theta_n <= 0 (knee forward in both legs, conventions.hpp); and they
-/// flex at most max_stance / max_swing [rad] (an upright gait; kInf: unbounded).
+/// q_{n-1} = theta_{n-1} - theta_n <= 0 (knee forward in both legs, conventions.hpp); they
+/// flex at most max_stance / max_swing [rad] (an upright gait; kInf: unbounded), and the stance
+/// knee at least min_stance (the double support's trailing knee kept off its singular straight
+/// pose, ocp_config.hpp's min_trailing_knee_flexion).
 class KneeDirection : public PointFunction {
  public:
   explicit KneeDirection(const PointLayout& point, double max_stance = kInf,
-                         double max_swing = kInf)
-      : point_(point), max_stance_(max_stance), max_swing_(max_swing) {}
+                         double max_swing = kInf, double min_stance = 0)
+      : point_(point), max_stance_(max_stance), max_swing_(max_swing), min_stance_(min_stance) {}
   int rows() const override { return 2; }
   void evaluate(const Eigen::VectorXd& v, Eigen::Ref<Eigen::VectorXd> f) const override;
   void jacobian(const Eigen::VectorXd& v, Eigen::Ref<Eigen::MatrixXd> jac) const override;
@@ -86,7 +88,7 @@ class KneeDirection : public PointFunction {
 
  private:
   PointLayout point_;
-  double max_stance_, max_swing_;
+  double max_stance_, max_swing_, min_stance_;
 };
 
 /// Physical joint rates dq = M dtheta (Mu 2.39-2.41: dq_0 = dtheta_0, dq_j = dtheta_{j-1} -

@@ -151,10 +151,13 @@ void addPhaseSets(Nlp& nlp, const dynamics::Model& model, const OcpConfig& c, co
                       std::make_shared<JointRateLimits>(model, phase.point));
   if (c.knee_limits && model.legLinks() == 2)
     addPathConstraint(nlp, phase, "knees",
-                      std::make_shared<KneeDirection>(phase.point, c.max_stance_knee_flexion,
-                                                      c.max_swing_knee_flexion));
-  else if (c.max_stance_knee_flexion < kInf || c.max_swing_knee_flexion < kInf)
-    throw std::invalid_argument("constraints.max_knee_flexion: the robot's legs have no knees");
+                      std::make_shared<KneeDirection>(
+                          phase.point, c.max_stance_knee_flexion, c.max_swing_knee_flexion,
+                          phase.doubleSupport() ? c.min_trailing_knee_flexion : 0.0));
+  else if (c.max_stance_knee_flexion < kInf || c.max_swing_knee_flexion < kInf ||
+           c.min_trailing_knee_flexion > 0)
+    throw std::invalid_argument(
+        "constraints: a knee flexion bound, but the robot's legs have no knees");
   if (c.ground_contact) {
     // The ZMP rows only bound an ankle torque, so a passive ankle has none.
     const auto zmp_foot = c.zmp && model.joints().front().actuated

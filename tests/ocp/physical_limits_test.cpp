@@ -4,7 +4,7 @@
 // stance tip lifting off (2.37a); and in the DSP the centre of pressure of foot B, which carries
 // the ankle torque alone, on that foot at every 1 kHz sample of the export; and the physical
 // joint rates dq = M dtheta (Mu 2.41) within the robot file's velocity limits; the knees' flexion
-// within its bound.
+// within its bound, and the trailing knee bent through the double support.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -160,6 +160,59 @@ TEST(KneeFlexionBound, HoldsTheDefaultGaitsSwingKneeUprightBetweenThePoints) {
   EXPECT_LT(after.swing_knee, 75.1 * kDeg);
   EXPECT_LT(after.stance_knee, 45.1 * kDeg);
   EXPECT_GE(bounded.result.cost, free_knee.result.cost - 1e-6);
+}
+
+TEST(TrailingKneeFlexionBound, ConfigReadsItAndRefusesWhatItCannotHold) {
+  const std::string config = shippedOcpConfig("mu2004_walk");
+  const std::string knees = "knee_limits: true";
+  const auto edited = [&](const std::string& to) {
+    return test::loadEditedOcpConfig(config, knees, to);
+  };
+  const OcpConfig c =
+      loadOcpConfig(config, {config::parseOverride("constraints.min_trailing_knee_flexion=0.03")});
+  EXPECT_DOUBLE_EQ(c.min_trailing_knee_flexion, 0.03);
+  EXPECT_DOUBLE_EQ(loadOcpConfig(config).min_trailing_knee_flexion, 0.0);
+  const std::string negative = edited(knees + "\n  min_trailing_knee_flexion: -0.1");
+  EXPECT_NE(negative.find("key 'constraints.min_trailing_knee_flexion': expected an angle"),
+            std::string::npos)
+      << negative;
+  const std::string no_limits = edited("knee_limits: false\n  min_trailing_knee_flexion: 0.03");
+  EXPECT_NE(no_limits.find("a knee flexion bound needs knee_limits: true"), std::string::npos)
+      << no_limits;
+  const std::string above =
+      edited(knees + "\n  max_knee_flexion: [0.5, 1.3]\n  min_trailing_knee_flexion: 0.6");
+  EXPECT_NE(above.find("must be below max_knee_flexion's stance bound"), std::string::npos)
+      << above;
+}
+
+TEST(TrailingKneeFlexionBound, BendsTheDefaultGaitsTrailingKneeBetweenThePoints) {
+#ifndef NDEBUG
+  GTEST_SKIP() << "two solves: optimised builds only";
+#endif
+  // The default optimum's trailing knee unbends to 0.30 rad in the double support; a bound
+  // above that binds, and every 1 kHz double-support sample keeps it, read from the export's
+  // angles, not from the rows.
+  constexpr double kBend = 0.35;
+  const auto leastTrailingKnee = [](const Solved& s) {
+    const gaits::Trajectory dense = reconstructDense(s.problem, s.model, s.result.x, 1000);
+    double least = kInf;
+    for (const gaits::Knot& k : dense.knots())
+      if (k.phase == gaits::Phase::kDsp) least = std::min(least, k.theta(0) - k.theta(1));
+    return least;
+  };
+  const Solved free_knee(loadOcpConfig(shippedOcpConfig("mu2004_walk")));
+  OcpConfig c = loadOcpConfig(shippedOcpConfig("mu2004_walk"));
+  c.min_trailing_knee_flexion = kBend;
+  const Solved bent(c);
+  ASSERT_EQ(free_knee.result.status, "Solve_Succeeded");
+  ASSERT_EQ(bent.result.status, "Solve_Succeeded");
+  const double before = leastTrailingKnee(free_knee), after = leastTrailingKnee(bent);
+  RecordProperty("trailing_knee_without_rad", fmt::format("{:.4f}", before));
+  RecordProperty("trailing_knee_with_rad", fmt::format("{:.4f}", after));
+  RecordProperty("cost_with", fmt::format("{:.4f}", bent.result.cost));
+  EXPECT_LT(before, kBend - 0.03);
+  EXPECT_GT(after, kBend - 1e-3);
+  EXPECT_GT(bent.result.cost, free_knee.result.cost);
 }
 
 }  // namespace
