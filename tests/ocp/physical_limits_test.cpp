@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <utility>
 
@@ -26,6 +27,23 @@ namespace {
 
 using test::shippedOcpConfig;
 using Solved = test::SolvedConfig;
+
+/// The default problem's config with `change` made to it.
+OcpConfig defaultConfigWith(const std::function<void(OcpConfig&)>& change) {
+  OcpConfig c = loadOcpConfig(shippedOcpConfig("mu2004_walk"));
+  change(c);
+  return c;
+}
+
+/// The default problem solved as shipped and with one change to its config.
+struct DefaultAndChanged {
+  explicit DefaultAndChanged(const std::function<void(OcpConfig&)>& change)
+      : shipped(defaultConfigWith([](OcpConfig&) {})), changed(defaultConfigWith(change)) {}
+  bool converged() const {
+    return shipped.result.status == "Solve_Succeeded" && changed.result.status == "Solve_Succeeded";
+  }
+  Solved shipped, changed;
+};
 
 TEST(SingleImpactCone, CompassGaitHeelStrikeNeedsNoMoreFrictionThanTheGroundHas) {
 #ifndef NDEBUG
@@ -89,12 +107,9 @@ TEST(JointVelocityLimits, BindTheKneesOfTheDefaultGaitAtTheRobotsLimit) {
 #endif
   // The default problem bounds absolute link rates only; its knees then turn faster than the
   // robot file allows. With the robot's joint limits on, every 1 kHz sample keeps within them.
-  const Solved free_rates(loadOcpConfig(shippedOcpConfig("mu2004_walk")));
-  OcpConfig c = loadOcpConfig(shippedOcpConfig("mu2004_walk"));
-  c.joint_velocity_limits = true;
-  const Solved limited(c);
-  ASSERT_EQ(free_rates.result.status, "Solve_Succeeded");
-  ASSERT_EQ(limited.result.status, "Solve_Succeeded");
+  const DefaultAndChanged s([](OcpConfig& c) { c.joint_velocity_limits = true; });
+  ASSERT_TRUE(s.converged());
+  const Solved &free_rates = s.shipped, &limited = s.changed;
   const double before = worstJointRateRatio(
       reconstructDense(free_rates.problem, free_rates.model, free_rates.result.x, 1000),
       free_rates.model);
@@ -142,13 +157,12 @@ TEST(KneeFlexionBound, HoldsTheDefaultGaitsSwingKneeUprightBetweenThePoints) {
   // (constraints.max_knee_flexion: [stance, swing]) every 1 kHz sample keeps within it, measured
   // by the export's posture (gaits/export/metrics.hpp), not by the rows.
   constexpr double kDeg = std::numbers::pi / 180;
-  const Solved free_knee(loadOcpConfig(shippedOcpConfig("mu2004_walk")));
-  OcpConfig c = loadOcpConfig(shippedOcpConfig("mu2004_walk"));
-  c.max_stance_knee_flexion = 45 * kDeg;
-  c.max_swing_knee_flexion = 75 * kDeg;
-  const Solved bounded(c);
-  ASSERT_EQ(free_knee.result.status, "Solve_Succeeded");
-  ASSERT_EQ(bounded.result.status, "Solve_Succeeded");
+  const DefaultAndChanged s([&](OcpConfig& c) {
+    c.max_stance_knee_flexion = 45 * kDeg;
+    c.max_swing_knee_flexion = 75 * kDeg;
+  });
+  ASSERT_TRUE(s.converged());
+  const Solved &free_knee = s.shipped, &bounded = s.changed;
   const auto posture = [](const Solved& s) {
     return gaits::posture(reconstructDense(s.problem, s.model, s.result.x, 1000), s.model);
   };
@@ -200,12 +214,9 @@ TEST(TrailingKneeFlexionBound, BendsTheDefaultGaitsTrailingKneeBetweenThePoints)
       if (k.phase == gaits::Phase::kDsp) least = std::min(least, k.theta(0) - k.theta(1));
     return least;
   };
-  const Solved free_knee(loadOcpConfig(shippedOcpConfig("mu2004_walk")));
-  OcpConfig c = loadOcpConfig(shippedOcpConfig("mu2004_walk"));
-  c.min_trailing_knee_flexion = kBend;
-  const Solved bent(c);
-  ASSERT_EQ(free_knee.result.status, "Solve_Succeeded");
-  ASSERT_EQ(bent.result.status, "Solve_Succeeded");
+  const DefaultAndChanged s([&](OcpConfig& c) { c.min_trailing_knee_flexion = kBend; });
+  ASSERT_TRUE(s.converged());
+  const Solved &free_knee = s.shipped, &bent = s.changed;
   const double before = leastTrailingKnee(free_knee), after = leastTrailingKnee(bent);
   RecordProperty("trailing_knee_without_rad", fmt::format("{:.4f}", before));
   RecordProperty("trailing_knee_with_rad", fmt::format("{:.4f}", after));

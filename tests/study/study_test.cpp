@@ -10,6 +10,7 @@
 #include <tuple>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "study/axis_summary.hpp"
@@ -67,12 +68,11 @@ TEST(StudyPoints, EveryCombinationTheLastAxisFastestWithTheSetsFirst) {
 
 // A gait entry names a variant of a config and sets its own values after the study's.
 TEST(StudyPoints, AGaitEntryWithANameAndValuesOfItsOwn) {
-  const StudyConfig c = loadStudyConfig(writeTempFile(
+  const std::vector<StudyPoint> points = studyPoints(loadStudyConfig(writeTempFile(
       "entry.yaml", "name: e\nset: {solver.tolerance: 1.0e-6}\ngaits:\n  - config: " + kOcp +
                         "mu2004_walk.yaml\n    name: wide\n    set: {constraints: "
                         "{friction_margin: 0.3}}\n  - " +
-                        kOcp + "mu2004_walk.yaml\n"));
-  const std::vector<StudyPoint> points = studyPoints(c);
+                        kOcp + "mu2004_walk.yaml\n")));
   ASSERT_EQ(points.size(), 2u);
   EXPECT_EQ(points[0].folder, "wide");
   ASSERT_EQ(points[0].overrides.size(), 2u);
@@ -80,18 +80,26 @@ TEST(StudyPoints, AGaitEntryWithANameAndValuesOfItsOwn) {
   EXPECT_EQ(points[1].folder, "mu2004_walk");
   EXPECT_EQ(points[1].overrides.size(), 1u);
   // A list of mappings is read in order: a shared anchored mapping, then the entry's own values.
-  const StudyConfig listed = loadStudyConfig(writeTempFile(
-      "entry_list.yaml", "name: e\ngaits:\n  - config: " + kOcp +
-                             "mu2004_walk.yaml\n    set: [&shared {solver.tolerance: 1.0e-6}, "
-                             "{constraints.friction_margin: 0.3}]\n  - config: " +
-                             kOcp + "mu2004_walk.yaml\n    name: b\n    set: [*shared]\n"));
-  const std::vector<StudyPoint> listedPoints = studyPoints(listed);
-  ASSERT_EQ(listedPoints.size(), 2u);
-  ASSERT_EQ(listedPoints[0].overrides.size(), 2u);
-  EXPECT_EQ(listedPoints[0].overrides[0].text(), "solver.tolerance=1.0e-6");
-  EXPECT_EQ(listedPoints[0].overrides[1].text(), "constraints.friction_margin=0.3");
-  ASSERT_EQ(listedPoints[1].overrides.size(), 1u);
-  EXPECT_EQ(listedPoints[1].overrides[0].text(), "solver.tolerance=1.0e-6");
+  const std::string list_yaml = fmt::format(R"(name: e
+gaits:
+  - config: {0}mu2004_walk.yaml
+    set: [&shared {{solver.tolerance: 1.0e-6}}, {{constraints.friction_margin: 0.3}}]
+  - config: {0}mu2004_walk.yaml
+    name: b
+    set: [*shared]
+)",
+                                            kOcp);
+  const std::vector<StudyPoint> listed =
+      studyPoints(loadStudyConfig(writeTempFile("entry_list.yaml", list_yaml)));
+  ASSERT_EQ(listed.size(), 2u);
+  const auto texts = [](const StudyPoint& p) {
+    std::vector<std::string> t;
+    for (const auto& o : p.overrides) t.push_back(o.text());
+    return t;
+  };
+  EXPECT_EQ(texts(listed[0]), (std::vector<std::string>{"solver.tolerance=1.0e-6",
+                                                        "constraints.friction_margin=0.3"}));
+  EXPECT_EQ(texts(listed[1]), std::vector<std::string>{"solver.tolerance=1.0e-6"});
   // A value the config refuses names the entry.
   const std::string message = configErrorOf([&] {
     loadStudyConfig(writeTempFile(
