@@ -12,6 +12,11 @@ std::unique_ptr<Controller> buildTracking(const ControllerSetting& s) {
   return std::make_unique<TrackingController>(s.model, std::make_unique<Law>(s.gains));
 }
 
+std::unique_ptr<Controller> buildTrackingPlanDsp(const ControllerSetting& s) {
+  return std::make_unique<TrackingController>(s.model, std::make_unique<PdLaw>(s.gains),
+                                              DspFeedForward::kPlan);
+}
+
 std::unique_ptr<Controller> buildMuSlidingMode(const ControllerSetting& s) {
   return std::make_unique<MuSlidingModeController>(s.model, s.mu_gains, s.uncertainty_bound,
                                                    s.bound_side);
@@ -27,6 +32,10 @@ std::unique_ptr<Controller> buildHzd(const ControllerSetting& s) {
 const std::vector<ControllerEntry>& controllers() {
   static const std::vector<ControllerEntry> entries{
       {"computed_torque", "computed torque with PD tracking (Mu 2.43)", buildTracking<PdLaw>},
+      {"computed_torque_plan_dsp",
+       "computed torque; in double support the plan's torques fed forward and the model's "
+       "computed torque for the correction only",
+       buildTrackingPlanDsp},
       {"sliding_mode", "computed torque with a boundary-layer sliding-mode law",
        buildTracking<SlidingModeLaw>},
       {"mu_sliding_mode", "Mu's integral sliding mode with a known uncertainty bound (Mu 4.1-4.17)",

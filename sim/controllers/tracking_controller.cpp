@@ -10,8 +10,8 @@
 namespace gaitopt::sim {
 
 TrackingController::TrackingController(dynamics::Model nominal,
-                                       std::shared_ptr<const TrackingLaw> law)
-    : model_(std::move(nominal)), law_(std::move(law)) {
+                                       std::shared_ptr<const TrackingLaw> law, DspFeedForward dsp)
+    : model_(std::move(nominal)), law_(std::move(law)), dsp_(dsp) {
   if (!model_.joints().front().actuated)
     throw std::invalid_argument("tracking control of every joint needs an actuated stance ankle");
 }
@@ -25,21 +25,32 @@ VecD TrackingController::sspAcceleration(const VecD& theta, const VecD& dtheta,
   return dynamics::toAbsolute<double>(qdd);
 }
 
-VecD TrackingController::dspReducedAcceleration(const VecD& theta, const VecD& dtheta,
-                                                const gaits::Knot& ref) const {
+TrackingController::ReducedAcceleration TrackingController::dspReducedAcceleration(
+    const VecD& theta, const VecD& dtheta, const gaits::Knot& ref) const {
   const auto now = dynamics::reducedCoordinates(model_, theta, dtheta);
   const auto want = dynamics::reducedCoordinates(model_, ref.theta, ref.dtheta);
-  const VecD pdd_ref = want.r * VecD(ref.ddtheta) + want.rdot_dth;
-  return pdd_ref +
-         VecD(law_->correction(want.p - now.p, want.r * VecD(ref.dtheta) - now.r * dtheta));
+  return {want.r * VecD(ref.ddtheta) + want.rdot_dth,
+          law_->correction(want.p - now.p, want.r * VecD(ref.dtheta) - now.r * dtheta)};
 }
 
 VecD TrackingController::unclippedTorque(gaits::Phase phase, const VecD& theta, const VecD& dtheta,
                                          const gaits::Knot& ref) const {
   if (phase == gaits::Phase::kSsp)
     return dynamics::sspInverseDynamics(model_, theta, dtheta, sspAcceleration(theta, dtheta, ref));
-  return dspComputedTorque(model_, theta, dtheta, dspReducedAcceleration(theta, dtheta, ref),
-                           ref.force_stance, ref.force_swing);
+  return dspTorque(theta, dtheta, ref);
+}
+
+VecD TrackingController::dspTorque(const VecD& theta, const VecD& dtheta,
+                                   const gaits::Knot& ref) const {
+  const auto at = [&](const VecD& pddot) {
+    return dspComputedTorque(model_, theta, dtheta, pddot, ref.force_stance, ref.force_swing);
+  };
+  const ReducedAcceleration a = dspReducedAcceleration(theta, dtheta, ref);
+  const VecD wanted = at(a.planned + a.correction);
+  if (dsp_ == DspFeedForward::kModel) return wanted;
+  // The torques are affine in pddot at a given state: the difference is what the correction
+  // costs on the model, added to the plan's own torques.
+  return VecD(ref.tau) + wanted - at(a.planned);
 }
 
 VecD TrackingController::torque(gaits::Phase phase, const VecD& theta, const VecD& dtheta,

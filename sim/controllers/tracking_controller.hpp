@@ -9,6 +9,10 @@
 ///        five torques then hold the reference's ground force at E (the planned load sharing),
 ///        from D thetaddot + N = M^T tau + J^T lambda_ref (2.11).
 /// With the nominal model equal to the plant and no error, the torques are the reference's.
+/// With DspFeedForward::kPlan the double support's torques are the reference's own (the plan's,
+/// computed on the true model by the optimisation) plus what the model's computed torque adds for
+/// the correction alone, so an error in the controller's model (Mu's cases 2 and 3) scales the
+/// correction but not the feed-forward.
 #include <memory>
 
 #include "dynamics/model.hpp"
@@ -18,11 +22,18 @@
 
 namespace gaitopt::sim {
 
+/// Where the double support's feed-forward comes from.
+enum class DspFeedForward {
+  kModel,  ///< the model's computed torque for the whole acceleration
+  kPlan,   ///< the reference's torques; the model's computed torque for the correction only
+};
+
 class TrackingController : public Controller {
  public:
   /// @throws std::invalid_argument when the stance ankle is unactuated (computed torque needs
   ///         full actuation in single support).
-  TrackingController(dynamics::Model nominal, std::shared_ptr<const TrackingLaw> law);
+  TrackingController(dynamics::Model nominal, std::shared_ptr<const TrackingLaw> law,
+                     DspFeedForward dsp = DspFeedForward::kModel);
 
   /// Joint torques at the measured state (theta, dtheta) for reference knot `ref`.
   VecD torque(gaits::Phase phase, const VecD& theta, const VecD& dtheta, const gaits::Knot& ref,
@@ -33,11 +44,19 @@ class TrackingController : public Controller {
 
  private:
   VecD sspAcceleration(const VecD& theta, const VecD& dtheta, const gaits::Knot& ref) const;
-  /// pddot of the reduced coordinates (Mu 2.21) the law asks for in the DSP.
-  VecD dspReducedAcceleration(const VecD& theta, const VecD& dtheta, const gaits::Knot& ref) const;
+  /// pddot of the reduced coordinates (Mu 2.21) the law asks for in the DSP: the reference's
+  /// own, and the law's correction v added to it.
+  struct ReducedAcceleration {
+    VecD planned, correction;
+  };
+  ReducedAcceleration dspReducedAcceleration(const VecD& theta, const VecD& dtheta,
+                                             const gaits::Knot& ref) const;
+  /// The DSP's torques at the measured state (theta, dtheta).
+  VecD dspTorque(const VecD& theta, const VecD& dtheta, const gaits::Knot& ref) const;
 
   dynamics::Model model_;
   std::shared_ptr<const TrackingLaw> law_;
+  DspFeedForward dsp_;
 };
 
 }  // namespace gaitopt::sim

@@ -114,6 +114,29 @@ TEST_P(EnsembleWalk, TheEnsembleOptimumWalksAPlantTheDefaultOptimumFallsOn) {
   EXPECT_LT(ensemble.solution.result.cost, 2 * plain_optimum.solution.result.cost);
 }
 
+/// Mu's case 2 on the controller's side (its model +40 % masses and inertias, +10 % lengths; the
+/// plant nominal), rigid ground: computed torque falls in step 1 on the ensemble optimum, as it
+/// lifts the leading tip in the double support, where it computes the whole torque on its model;
+/// with the plan's torques fed forward there (DspFeedForward::kPlan) it walks 20 steps.
+TEST_F(EnsembleExport, ThePlansDoubleSupportFeedForwardWalksMusCaseTwo) {
+  const Solved& s = ensembleOptimum();
+  ASSERT_TRUE(s.solution.result.success) << s.solution.result.status;
+  const dynamics::Model wrong = dynamics::perturbedModel(s.nominal, dynamics::muUncertaintyCase(2));
+  ContactRules rules;
+  rules.cop_limit = CopLimit::kFail;
+  const auto walkWith = [&](DspFeedForward dsp) {
+    const TrackingController controller(wrong, std::make_shared<PdLaw>(400, 40), dsp);
+    return walk(s.nominal, controller, s.reference,
+                loadGround(fmt::format("{}/configs/grounds/rigid.yaml", GAITOPT_SOURCE_DIR)),
+                {20, {}, rules});
+  };
+  const WalkResult model = walkWith(DspFeedForward::kModel), plan = walkWith(DspFeedForward::kPlan);
+  RecordProperty("model_feed_forward",
+                 fmt::format("{} steps: {}", model.steps_completed, model.failure));
+  EXPECT_LT(model.steps_completed, 20);
+  EXPECT_EQ(plan.steps_completed, 20) << plan.failure;
+}
+
 /// Issue 33's check of the design itself, between the collocation points: every model of the
 /// ensemble, exported at 1 kHz from the scheme's own polynomials, pushes on the ground with each
 /// tip in contact inside its friction cone, keeps its stance foot's centre of pressure on the

@@ -66,6 +66,30 @@ TEST_F(FiveLinkWalk, OnTheReferenceTheControllersAddNoTorqueToTheFeedForward) {
   }
 }
 
+// The plan's feed-forward in double support (DspFeedForward::kPlan) takes the torques from the
+// reference, computed on the true model, so a controller whose model is off by Mu's case 2
+// (+40 % masses and inertias, +10 % lengths) still commands them on the reference, where the
+// model's own computed torque is off by newtons-metres.
+TEST_F(FiveLinkWalk, ThePlansDoubleSupportFeedForwardIgnoresAWrongModel) {
+  const dynamics::Model wrong = dynamics::perturbedModel(*model_, dynamics::muUncertaintyCase(2));
+  const TrackingController plan(wrong, std::make_unique<PdLaw>(TrackingGains{}),
+                                DspFeedForward::kPlan);
+  const TrackingController model(wrong, std::make_unique<PdLaw>(TrackingGains{}));
+  double plan_error = 0, model_error = 0;
+  for (const auto& k : poly_->knots()) {
+    if (k.phase != gaits::Phase::kDsp) continue;
+    const auto off = [&](const TrackingController& c) {
+      return (c.unclippedTorque(k.phase, k.theta, k.dtheta, k) - VecD(k.tau)).cwiseAbs().maxCoeff();
+    };
+    plan_error = std::max(plan_error, off(plan));
+    model_error = std::max(model_error, off(model));
+  }
+  RecordProperty("plan_error_Nm", fmt::format("{:.2e}", plan_error));
+  RecordProperty("model_error_Nm", fmt::format("{:.2f}", model_error));
+  EXPECT_LT(plan_error, 1e-8);
+  EXPECT_GT(model_error, 1.0);
+}
+
 #ifdef NDEBUG
 constexpr int kSteps = 20;
 #else  // unoptimised sanitizer builds are ~1000x slower: a short walk, no Poincare map there
