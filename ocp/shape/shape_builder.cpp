@@ -25,12 +25,14 @@ struct Continuity {
 };
 
 /// The config each variant's sets read, the nominal's first: a copy with scaled lengths steps
-/// step_length times its length_scale, since the reference's angles put its tip there.
+/// step_length times its length_scale, since the reference's angles put its tip there; a probe
+/// (variant_contact: false) has no contact rows.
 std::vector<OcpConfig> variantConfigs(const OcpConfig& config) {
   std::vector<OcpConfig> configs{config};
   for (const VariantConfig& v : config.shape.variants) {
-    configs.push_back(config);
-    configs.back().step_length *= v.length_scale;
+    OcpConfig& copy = configs.emplace_back(config);
+    copy.step_length *= v.length_scale;
+    if (!config.shape.contact) copy.ground_contact = false;  // its forces, ZMP and impulses
   }
   return configs;
 }

@@ -54,8 +54,9 @@ FeedbackGains readFeedback(const YamlReader& r) {
 }  // namespace
 
 const std::vector<std::string>& shapeKeys() {
-  static const std::vector<std::string> keys = {"steps", "variants", "variant_feedback",
-                                                "variant_end_tolerance", "variant_spread"};
+  static const std::vector<std::string> keys = {
+      "steps",          "variants",       "variant_feedback", "variant_end_tolerance",
+      "variant_spread", "variant_contact"};
   return keys;
 }
 
@@ -63,7 +64,8 @@ ShapeConfig readShapeConfig(const YamlReader& root) {
   ShapeConfig s;
   s.steps = readSteps(root);
   if (!root.has("variants")) {
-    for (const char* key : {"variant_feedback", "variant_end_tolerance", "variant_spread"})
+    for (const char* key :
+         {"variant_feedback", "variant_end_tolerance", "variant_spread", "variant_contact"})
       if (root.has(key)) root.fail(key, "only meaningful with `variants`");
     return s;
   }
@@ -75,6 +77,7 @@ ShapeConfig readShapeConfig(const YamlReader& root) {
   s.end_tolerance =
       root.number("variant_end_tolerance", config::inRange(1e-6, 10, "(state distance)"));
   s.spread = root.numberOr("variant_spread", 0.0, config::inRange(0, 1e6, "(weight)"));
+  s.contact = root.booleanOr("variant_contact", true);
   return s;
 }
 

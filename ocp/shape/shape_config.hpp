@@ -51,6 +51,11 @@ struct ShapeConfig {
   /// Weight of the variants' spread about the reference in the cost (variant_sets.hpp, 0: none)
   /// [1 / (rad^2 s)] times the nominal cost's units.
   double spread = 0;
+  /// Whether the variants keep the contact conditions (unilateral forces and impulses with their
+  /// margins, friction cones, ZMP). Without them a variant is a probe: its departure from the
+  /// reference is priced by `spread` instead of constrained (a sensitivity penalty,
+  /// docs/optimal_gaits.md#a-third-way-a-sensitivity-penalty).
+  bool contact = true;
 
   int variantCount() const { return 1 + static_cast<int>(variants.size()); }
 };

@@ -167,6 +167,7 @@ TEST(ShapeConfig, ReadsStepsAndVariantsAndRefusesAnIncompleteEnsemble) {
   EXPECT_EQ(c.shape.feedback.kd, 30);
   EXPECT_EQ(c.shape.end_tolerance, 0.1);
   EXPECT_EQ(c.shape.spread, 1);
+  EXPECT_TRUE(c.shape.contact);  // copies keep their contact rows unless told
   EXPECT_EQ(config("mu2004_walk").shape.variantCount(), 1);
   EXPECT_NE(stageLoadError({"steps=1.5"}).find("key 'steps'"), std::string::npos);
   // A variant without the law would have free torques: the ensemble would say nothing.
@@ -174,6 +175,8 @@ TEST(ShapeConfig, ReadsStepsAndVariantsAndRefusesAnIncompleteEnsemble) {
   EXPECT_NE(no_law.find("variant_feedback"), std::string::npos) << no_law;
   const std::string stray = stageLoadError({"variant_end_tolerance=0.1"});
   EXPECT_NE(stray.find("only meaningful with `variants`"), std::string::npos) << stray;
+  const std::string stray_probe = stageLoadError({"variant_contact=false"});
+  EXPECT_NE(stray_probe.find("variant_contact"), std::string::npos) << stray_probe;
   EXPECT_NE(stageLoadError({"variants=[{mass: 1.1}]"}).find("mass"), std::string::npos);
 }
 

@@ -190,5 +190,34 @@ TEST_F(Ensemble, ASpreadWeightTradesNominalCostForVariantsNearerTheReference) {
   EXPECT_GT(nominal, solved_->result.cost);
 }
 
+/// Probes (variant_contact: false, a sensitivity penalty): the copies keep their dynamics, law,
+/// touchdown and spread, but none of the contact rows (unilateral forces, friction cones, ZMP,
+/// impulse cones), which the nominal keeps. Dropping constraints from the same objective cannot
+/// raise its optimum from the same start.
+TEST_F(Ensemble, ProbesDropTheCopiesContactRowsAndNeverCostMore) {
+  ASSERT_TRUE(solved_->result.success);
+  const test::SolvedConfig constrained(ensembleConfig({"variant_spread=1e4"}));
+  const test::SolvedConfig probes(ensembleConfig({"variant_spread=1e4", "variant_contact=false"}));
+  ASSERT_TRUE(constrained.result.success) << constrained.result.status;
+  ASSERT_TRUE(probes.result.success) << probes.result.status;
+  // Sets named "<what>" or "<phase>_<what>" belong to the nominal, "variant<k>_..." to copy k.
+  const auto count = [&](bool variant, const std::string& what) {
+    int n = 0;
+    for (const auto& set : probes.problem.nlp.constraintSets())
+      if ((set->name().rfind("variant", 0) == 0) == variant &&
+          set->name().find(what) != std::string::npos)
+        ++n;
+    return n;
+  };
+  for (const std::string what : {"ground_contact", "impulse_cones"}) {
+    EXPECT_GT(count(false, what), 0) << what;
+    EXPECT_EQ(count(true, what), 0) << what;
+  }
+  EXPECT_GT(count(true, "feedback"), 0);
+  RecordProperty("cost", fmt::format("{:.6g} probes, {:.6g} with contact rows", probes.result.cost,
+                                     constrained.result.cost));
+  EXPECT_LE(probes.result.cost, constrained.result.cost * (1 + 1e-6));
+}
+
 }  // namespace
 }  // namespace gaitopt::ocp
