@@ -1,13 +1,14 @@
 #!/usr/bin/python3
 """What each gait of a study costs and walks, over the walk battery of the studies
-configs/studies/strike_cost.yaml and ensemble_candidates.yaml (walk blocks rigid, rigid_length,
-rigid_push, rigid_cases, lcp, dart; any of them may be missing).
+configs/studies/strike_cost.yaml, ensemble_candidates.yaml and sensitivity_penalty.yaml (walk
+blocks rigid, rigid_length, rigid_push, rigid_cases, lcp, dart; any of them may be missing).
 
 Usage: walk_battery_table.py STUDY_DIR
 STUDY_DIR is the folder `gaitopt study` wrote: solves.csv (gait, converged, cost,
 strike_normal_velocity_m_s, impulse_trailing_cone_ratio) and walks.csv (gait, walk, controller,
 plant_option, plant, steps). Writes into STUDY_DIR, printing their paths:
-  summary.csv  one row per gait: convergence, cost, strike speed [m/s], the trailing impulse's
+  summary.csv  one row per gait (per value of the last axis when the study has axes; its
+               label names the row): convergence, cost, strike speed [m/s], the trailing impulse's
                |P_t| / P_n and, per controller, the plant-mass interval walked 20 steps on the
                rigid ground around the nominal, the length errors, pushes [N s] and Mu's cases
                walked, and the plant masses walked on the LCP ground and in DART
@@ -38,21 +39,28 @@ def optional_text(value, spec):
     return "" if value is None else format(value, spec)
 
 
+def label_column(header):
+    """The column that names a row: the study's last axis when it has axes (its columns sit
+    between gait and status), else gait."""
+    return header[header.index("status") - 1] if "status" in header else "gait"
+
+
 def read_solves(path):
-    """[(gait, {converged, cost, speed, ratio})] in the study's order."""
+    """(the label column, [(row label, {converged, cost, speed, ratio})] in the study's order)."""
     header, rows = plot_io.read_rows(path, "solve table")
     plot_io.require_columns(path, header, SOLVE_COLUMNS)
     col = {name: header.index(name) for name in header}
+    label = label_column(header)
     out = []
     for line, row in enumerate(rows, start=2):
         try:
             speed, ratio = (optional_number(row[col[n]]) for n in SOLVE_COLUMNS[3:])
-            out.append((row[col["gait"]], {"converged": row[col["converged"]] == "1",
+            out.append((row[col[label]], {"converged": row[col["converged"]] == "1",
                                            "cost": float(row[col["cost"]]),
                                            "speed": speed, "ratio": ratio}))
         except (ValueError, IndexError) as e:
             raise InputError(f"{path}: line {line}: {e}") from None
-    return out
+    return label, out
 
 
 def walked(values):
@@ -104,8 +112,8 @@ def write_tables(solves, walks, out):
 
 
 def main(out):
-    solves = read_solves(os.path.join(out, "solves.csv"))
-    walks = read_walks(os.path.join(out, "walks.csv"), "gait", str, float)
+    label, solves = read_solves(os.path.join(out, "solves.csv"))
+    walks = read_walks(os.path.join(out, "walks.csv"), label, str, float)
     for path in write_tables(solves, walks, out):
         print(path)
 

@@ -202,8 +202,12 @@ StudyConfig loadStudyConfig(const std::string& path,
   if (root.has("gaits") || c.polynomial_gaits.empty()) c.gaits = readGaits(root, c.sets);
   if (root.has("axes"))
     for (const YamlReader& axis : root.list("axes")) c.axes.push_back(readAxis(axis, c.gaits));
-  c.warm_from_previous =
-      root.has("warm_start") && root.choice("warm_start", {"none", "previous"}) == "previous";
+  if (root.has("warm_start")) {
+    const std::string warm = root.choice("warm_start", {"none", "previous", "previous_only"});
+    c.warm_start = warm == "previous"        ? StudyConfig::WarmStart::kPrevious
+                   : warm == "previous_only" ? StudyConfig::WarmStart::kPreviousOnly
+                                             : StudyConfig::WarmStart::kNone;
+  }
   if (root.has("walks_from")) {
     if (root.has("walks")) root.fail("walks_from", "give either walks or walks_from, not both");
     c.walks_file = relativeTo(path, root.string("walks_from"));

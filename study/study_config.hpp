@@ -65,9 +65,12 @@ struct StudyConfig {
   std::vector<StudyGait> gaits;
   std::vector<config::Override> sets;  ///< set at every point (the leaves of `set`)
   std::vector<StudyAxis> axes;
-  /// Each point is also solved from the optimum of the point before it on the last axis, and
-  /// the cheaper optimum kept (a warm start reaches optima a cold start does not).
-  bool warm_from_previous = false;
+  /// How a point with a point before it on the last axis starts: from the guess alone (kNone);
+  /// also from that point's optimum, the cheaper optimum kept (kPrevious: a warm start reaches
+  /// optima a cold start does not); or from that optimum alone (kPreviousOnly: for problems the
+  /// guess does not reach, which would spend minutes failing from it).
+  enum class WarmStart { kNone, kPrevious, kPreviousOnly };
+  WarmStart warm_start = WarmStart::kNone;
   std::vector<WalkBlock> walks;
   /// The file `walks_from` named, whose `walks` are this study's ("" when the study lists its
   /// own): one battery of walks shared by the studies that compare gaits on it.

@@ -38,14 +38,20 @@ void replaceWith(const std::string& from, const std::string& to) {
   fs::rename(from + ".log", to + ".log");
 }
 
+/// Solves point p from the previous point's optimum into `out`.
+void solveFrom(const StudyPoint& p, const StudyPoint& previous, const std::string& dir,
+               const std::string& out, const StudyTools& t) {
+  std::vector<std::string> args = solveArgs(p);
+  args.insert(args.end(), {"--warm-start", gaitFolder(previous, dir)});
+  runTool(t, args, out, fmt::format("solve {} from {}", p.folder, previous.folder));
+}
+
 /// Solves from the previous point's optimum into FOLDER.warm and keeps it when it is cheaper.
 void warmSolve(const StudyPoint& p, const StudyPoint& previous, const std::string& dir,
                const StudyTools& t) {
   const std::string cold = gaitFolder(p, dir), warm = cold + ".warm";
   fs::remove_all(warm);
-  std::vector<std::string> args = solveArgs(p);
-  args.insert(args.end(), {"--warm-start", gaitFolder(previous, dir)});
-  runTool(t, args, warm, fmt::format("solve {} from {}", p.folder, previous.folder));
+  solveFrom(p, previous, dir, warm, t);
   const auto cold_cost = costOf(cold), warm_cost = costOf(warm);
   const bool keep_warm = warm_cost && (!cold_cost || *warm_cost < *cold_cost);
   if (keep_warm) replaceWith(warm, cold);
@@ -70,12 +76,17 @@ void solvePoint(const StudyConfig& c, const std::vector<StudyPoint>& points, std
                 const std::string& dir, const StudyTools& t) {
   const StudyPoint& p = points[i];
   const std::string out = gaitFolder(p, dir);
-  if (!fs::exists(out + "/summary.json") && !fs::exists(out + ".failed/summary.json"))
-    runTool(t, solveArgs(p), out, "solve " + p.folder);
+  using Warm = StudyConfig::WarmStart;
+  const bool warm = c.warm_start != Warm::kNone && p.previous && solved(points[*p.previous], dir);
+  const bool done = fs::exists(out + "/summary.json") || fs::exists(out + ".failed/summary.json");
+  if (warm && c.warm_start == Warm::kPreviousOnly) {  // the guess only when that optimum failed
+    if (!done) solveFrom(p, points[*p.previous], dir, out, t);
+    io::writeFileAtomically(out + ".start", points[*p.previous].folder);
+    return;
+  }
+  if (!done) runTool(t, solveArgs(p), out, "solve " + p.folder);
   // The .start file is written last: without it the warm solve is still to do.
-  if (c.warm_from_previous && p.previous && solved(points[*p.previous], dir) &&
-      !fs::exists(out + ".start"))
-    warmSolve(p, points[*p.previous], dir, t);
+  if (warm && !fs::exists(out + ".start")) warmSolve(p, points[*p.previous], dir, t);
 }
 
 std::vector<std::string> solveColumns() {

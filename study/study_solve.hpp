@@ -9,9 +9,10 @@
 
 namespace gaitopt::study {
 
-/// DIR/runs/FOLDER (or FOLDER.failed) holds the optimum of points[i]. With a warm start the
-/// point is also solved from the optimum of its previous point, and the cheaper optimum kept
-/// (DIR/runs/FOLDER.start says which start it came from).
+/// DIR/runs/FOLDER (or FOLDER.failed) holds the optimum of points[i]. With `warm_start:
+/// previous` the point is also solved from the optimum of its previous point, and the cheaper
+/// optimum kept; with `previous_only` it is solved from that optimum alone, from the guess when
+/// the previous point did not converge (DIR/runs/FOLDER.start says which start it came from).
 void solvePoint(const StudyConfig& c, const std::vector<StudyPoint>& points, std::size_t i,
                 const std::string& dir, const StudyTools& t);
 

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # End-to-end checks of `gaitopt study`: a study's solves against the same solves run by hand,
 # its walks against `gaitopt simulate`, the warm start kept only when cheaper, a rerun that
-# redoes nothing and one under other settings refused, the same tables from two runs at once, and bad study configs refused before
-# any solve.
+# redoes nothing and one under other settings refused, the same tables from two runs at once, bad
+# study configs refused before any solve, and a chain solved from the previous optimum alone.
 # Usage: study_cli_test.sh <path to gaitopt binary> <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
@@ -121,4 +121,27 @@ gaits: [$OCP/mu2004_walk.yaml]
 walks: [{name: w, options: {speed: 2}, controllers: [computed_torque], plant: {option: mass-error, values: [0]}}]" "speed"
 bad gait "name: b
 gaits: [$OCP/no_such.yaml]" "no_such.yaml"
+# (e) warm_start: previous_only: a point after the first is solved from the optimum before it
+# alone (no solve from the guess), to the cost `optimize --warm-start` reaches by hand.
+cat >"$TMP/chain.yaml" <<YAML
+name: chain
+gaits: [$OCP/mu2004_walk.yaml]
+axes: [{key: constraints.friction_margin, values: [0.15, 0.2]}]
+warm_start: previous_only
+YAML
+run study --config "$TMP/chain.yaml" --out "$TMP/chain"
+[[ $RC -eq 0 ]] || fail "(e) exited $RC: $(cat "$TMP/err")"
+first=mu2004_walk_friction_margin=0.15 second=mu2004_walk_friction_margin=0.2
+grep -qx "study: solve $second from $first" "$TMP/out" || fail "(e) no warm solve: $(cat "$TMP/out")"
+if grep -qx "study: solve $second" "$TMP/out"; then fail "(e) solved from the guess too"; fi
+"$GAITOPT" optimize --config "$OCP/mu2004_walk.yaml" --set constraints.friction_margin=0.2 \
+  --warm-start "$TMP/chain/runs/$first" --out "$TMP/chain_by_hand" --no-plots --quiet >/dev/null ||
+  fail "(e) optimize by hand failed"
+$PY - "$TMP/chain/solves.csv" "$TMP/chain_by_hand/summary.json" "$first" <<'PY' || fail "(e) tables"
+import csv, json, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+hand = json.load(open(sys.argv[2]))
+assert [r["start"] for r in rows] == ["guess", sys.argv[3]], rows
+assert abs(float(rows[1]["cost"]) - hand["cost"]) <= 1e-9 * hand["cost"], (rows[1], hand["cost"])
+PY
 echo "study_cli_test: all checks passed"

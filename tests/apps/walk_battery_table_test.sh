@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # plots/walk_battery_table.py on a made-up `gaitopt study` folder: a gait that walks the rigid
 # ground at 0.9-1.1 with a gap at 1.2, two of four pushes, one length and DART at two masses, and
-# a gait without a strike whose solve failed; the intervals and the lists in the table and CSV,
-# and "error: <file>: ..." for a solve table without the trailing impulse's ratio.
+# a gait without a strike whose solve failed; the intervals and the lists in the table and CSV;
+# a study with an axis, its rows named by the axis's labels; and "error: <file>: ..." for a solve table without the trailing impulse's ratio.
 # Needs Debian's python3-numpy (plot_io); skips (ctest: skipped) without it.
 # Usage: walk_battery_table_test.sh <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
@@ -40,8 +40,25 @@ has_text "$out/summary.md" "| no_strike | 132.0, not converged | — | — | fal
 has_text "$out/summary.csv" "strike,1,250,0.3,0.55,0.9-1.1,-0.05,-2 1,—,—,1 1.1,falls at ×1," \
   "strike csv row"
 
+# A study with an axis: one gait, a row per value of the axis, named by its label.
+axis="$TMP/axis"
+mkdir -p "$axis"
+cat >"$axis/solves.csv" <<'CSV'
+gait,penalty,status,converged,iterations,cost,strike_normal_velocity_m_s,impulse_trailing_cone_ratio
+ens,ensemble,Solve_Succeeded,1,200,256,0.8,0.45
+ens,V10,Solve_Succeeded,1,86,206,0.7,0.5
+CSV
+{
+  echo "gait,penalty,walk,controller,plant_option,plant,steps,steps_requested,failure"
+  for m in -0.1 0 0.1; do echo "ens,ensemble,rigid,computed_torque,mass-error,$m,20,20,"; done
+  for m in -0.1:1 0:20 0.1:20; do echo "ens,V10,rigid,computed_torque,mass-error,${m%%:*},${m##*:},20,"; done
+} >"$axis/walks.csv"
+"$PY" "$table" "$axis" >/dev/null || fail "exit $? on a study with an axis"
+has_text "$axis/summary.md" "| ensemble | 256.0 | 0.800 | 0.450 | 0.9-1.1 |" "axis row ensemble"
+has_text "$axis/summary.md" "| V10 | 206.0 | 0.700 | 0.500 | 1-1.1 |" "axis row V10"
+
 sed -i 's/,impulse_trailing_cone_ratio$//' "$out/solves.csv"
 "$PY" "$table" "$out" >/dev/null 2>"$TMP/err" && fail "a solve table without the ratio passed"
 grep -q "^error: $out/solves.csv: .*impulse_trailing_cone_ratio" "$TMP/err" ||
   fail "stderr: $(cat "$TMP/err")"
-echo "walk battery table: intervals, walked lists, failed solve and a missing column named"
+echo "walk battery table: intervals, walked lists, failed solve, axis rows and a missing column named"

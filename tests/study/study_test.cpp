@@ -168,7 +168,10 @@ TEST(StudyConfig, TheRobustDesignStudiesWalkOneBattery) {
   const std::string studies = std::string(GAITOPT_SOURCE_DIR) + "/configs/studies/";
   const StudyConfig strike = loadStudyConfig(studies + "strike_cost.yaml");
   const StudyConfig candidates = loadStudyConfig(studies + "ensemble_candidates.yaml");
+  const StudyConfig penalty = loadStudyConfig(studies + "sensitivity_penalty.yaml");
   EXPECT_EQ(strike.walks_file, candidates.walks_file);
+  EXPECT_EQ(penalty.walks_file, candidates.walks_file);
+  EXPECT_EQ(penalty.warm_start, StudyConfig::WarmStart::kPreviousOnly);
   ASSERT_EQ(strike.walks.size(), 6u);  // rigid masses, lengths, pushes, cases; LCP; DART
   EXPECT_EQ(strike.walks.back().name, "dart");
   EXPECT_EQ(strike.walks.front().plant_values.size(), 7u);  // masses x0.8 .. x1.2
