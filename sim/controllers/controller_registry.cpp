@@ -7,14 +7,9 @@
 namespace gaitopt::sim {
 namespace {
 
-template <class Law>
+template <class Law, DspFeedForward Dsp = DspFeedForward::kModel>
 std::unique_ptr<Controller> buildTracking(const ControllerSetting& s) {
-  return std::make_unique<TrackingController>(s.model, std::make_unique<Law>(s.gains));
-}
-
-std::unique_ptr<Controller> buildTrackingPlanDsp(const ControllerSetting& s) {
-  return std::make_unique<TrackingController>(s.model, std::make_unique<PdLaw>(s.gains),
-                                              DspFeedForward::kPlan);
+  return std::make_unique<TrackingController>(s.model, std::make_unique<Law>(s.gains), Dsp);
 }
 
 std::unique_ptr<Controller> buildMuSlidingMode(const ControllerSetting& s) {
@@ -35,7 +30,7 @@ const std::vector<ControllerEntry>& controllers() {
       {"computed_torque_plan_dsp",
        "computed torque; in double support the plan's torques fed forward and the model's "
        "computed torque for the correction only",
-       buildTrackingPlanDsp},
+       buildTracking<PdLaw, DspFeedForward::kPlan>},
       {"sliding_mode", "computed torque with a boundary-layer sliding-mode law",
        buildTracking<SlidingModeLaw>},
       {"mu_sliding_mode", "Mu's integral sliding mode with a known uncertainty bound (Mu 4.1-4.17)",
