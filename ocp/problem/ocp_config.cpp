@@ -97,6 +97,7 @@ const std::vector<std::string> kConstraintKeys{"torque_limits",
                                                "min_normal_force",
                                                "dsp_reduced_coordinates",
                                                "jerk_limit",
+                                               "jerk_jump_limit",
                                                "interior_contact",
                                                "max_knee_flexion",
                                                "min_trailing_knee_flexion"};
@@ -149,6 +150,7 @@ void readConstraints(const YamlReader& r, OcpConfig& c) {
   c.angle_range = r.numberOr("angle_range", 0.0, config::inRange(0, std::numbers::pi, "[rad]"));
   c.rate_limit = r.numberOr("rate_limit", 0.0, config::inRange(0, 100, "[rad/s]"));
   c.jerk_limit = r.numberOr("jerk_limit", 0.0, config::inRange(0, 1e7, "[rad/s^3]"));
+  c.jerk_jump_limit = r.numberOr("jerk_jump_limit", 0.0, config::inRange(0, 1e7, "[rad/s^3]"));
   c.joint_velocity_limits = r.booleanOr("joint_velocity_limits", false);
   c.swing_descends = r.booleanOr("swing_descends", true);
   c.trailing_lifts = r.booleanOr("trailing_lifts", true);

@@ -11,6 +11,7 @@
 #include "ocp/problem/ground_contact.hpp"
 #include "ocp/problem/interior_contact.hpp"
 #include "ocp/problem/interior_work.hpp"
+#include "ocp/problem/jerk_jump.hpp"
 #include "ocp/problem/jerk_limit.hpp"
 #include "ocp/problem/path_functions.hpp"
 #include "ocp/transcription/biped_dynamics.hpp"
@@ -146,6 +147,9 @@ void addPhaseSets(Nlp& nlp, const dynamics::Model& model, const OcpConfig& c, co
   addPathConstraint(nlp, phase, "dynamics", std::make_shared<BipedDynamics>(model, phase.point));
   if (c.jerk_limit > 0)
     nlp.addConstraint(std::make_unique<JerkLimit>(phase.name() + "_jerk", phase, c.jerk_limit));
+  if (c.jerk_jump_limit > 0 && phase.layout.segments > 1)
+    nlp.addConstraint(
+        std::make_unique<JerkJump>(phase.name() + "_jerk_jump", phase, c.jerk_jump_limit));
   if (c.joint_velocity_limits)
     addPathConstraint(nlp, phase, "joint_rates",
                       std::make_shared<JointRateLimits>(model, phase.point));

@@ -74,10 +74,12 @@ const std::map<std::string, std::unique_ptr<Shipped>>& shippedProblems() {
     OcpConfig zmp_margin = loadOcpConfig((dir / "mu2004_walk.yaml").string());
     zmp_margin.zmp_margin = 0.03;
     all.emplace("mu2004_walk_zmp_margin", coarseProblem(zmp_margin));
-    // The DSP in reduced coordinates (dsp_chart.hpp), with fixed and with free durations.
+    // The DSP in reduced coordinates (dsp_chart.hpp), with fixed and with free durations, and
+    // the jerk-jump bound (jerk_jump.hpp) on both.
     for (const std::string name : {"mu2004_walk", "mu2004_walk_cot"}) {
       OcpConfig reduced = loadOcpConfig((dir / (name + ".yaml")).string());
       reduced.dsp_reduced_coordinates = true;
+      reduced.jerk_jump_limit = 1e4;  // its T column is met on the free durations
       all.emplace(name + "_reduced_dsp", coarseProblem(reduced));
     }
     // Two steps in one period: the second step's sets and the relabelling between the steps.
@@ -186,6 +188,8 @@ TEST(SetContractCoverage, EverySetOfTheGaitProblemIsChecked) {
                            "dsp_chart_defects",
                            "ssp_jerk",
                            "dsp_jerk",
+                           "ssp_jerk_jump",
+                           "dsp_jerk_jump",
                            "dsp_pin_1",
                            "dsp_dynamics",
                            "dsp_knees",

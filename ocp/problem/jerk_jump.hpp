@@ -1,0 +1,52 @@
+#pragma once
+/// @file jerk_jump.hpp
+/// A bound on how much every link's jerk jumps where two segments of a phase meet (config
+/// constraints.jerk_jump_limit J [rad/s^3]). Between the points a segment's acceleration is the
+/// polynomial of its scheme (quadratic through node, midpoint and node in Hermite-Simpson, linear
+/// in trapezoidal; collocation_interpolation.hpp), so it is continuous at a shared node but its
+/// slope, the jerk, is not. At node k, with the left segment's end slope and the right one's start
+/// slope (Hermite-Simpson: (a_{k-1} - 4 a_m + 3 a_k) / h_L and (-3 a_k + 4 a_m' - a_{k+1}) / h_R),
+///   -J <= jerk_right - jerk_left <= J,
+/// written free of divisions by T (h = T dt): T (jerk_right - jerk_left) is linear in the
+/// accelerations, so the two rows L(a) - J T <= 0 and L(a) + J T >= 0 are linear also when T is
+/// free.
+/// Why: a central difference of rates sampled at spacing h across such a node differs from the
+/// acceleration by about h / 4 times the jump; that kink, not the smooth part, is what the export
+/// check of docs/optimal_gaits.md ("What holds on the export") finds in an optimum. jerk_limit.hpp
+/// bounds the jerk itself, which also costs where the jerk is large but smooth.
+#include <array>
+#include <string>
+
+#include "ocp/transcription/nlp.hpp"
+#include "ocp/transcription/phase.hpp"
+
+namespace gaitopt::ocp {
+
+class JerkJump : public ConstraintSet {
+ public:
+  JerkJump(std::string name, const Phase& phase, double jump);
+  Eigen::VectorXd lowerBounds() const override;
+  Eigen::VectorXd upperBounds() const override;
+  void values(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> g) const override;
+  void jacobian(const Eigen::VectorXd& x, Triplets& out) const override;
+  void hessian(const Eigen::VectorXd&, const Eigen::VectorXd&, Triplets&) const override {}
+  /// Rows 2 n (k - 1) .. 2 n k - 1 bound the jump at node k (1 .. segments - 1).
+  GridNode nodeOf(int row) const override {
+    return {"node", row / (2 * phase_.point.n) + 1, row % (2 * phase_.point.n)};
+  }
+
+ private:
+  /// The points of the two segments that meet at node k, in time order, and the weights w_i
+  /// with T (jerk_right - jerk_left) = sum_i w_i a_i.
+  struct Stencil {
+    std::array<int, 5> points{};
+    std::array<double, 5> weights{};
+    int size = 0;
+  };
+  Stencil stencil(int node) const;
+
+  Phase phase_;
+  double jump_;
+};
+
+}  // namespace gaitopt::ocp
