@@ -14,39 +14,19 @@
 /// acceleration by about h / 4 times the jump; that kink, not the smooth part, is what the export
 /// check of docs/optimal_gaits.md ("What holds on the export") finds in an optimum. jerk_limit.hpp
 /// bounds the jerk itself, which also costs where the jerk is large but smooth.
-#include <array>
 #include <string>
 
-#include "ocp/transcription/nlp.hpp"
-#include "ocp/transcription/phase.hpp"
+#include "ocp/problem/acceleration_stencil_bound.hpp"
 
 namespace gaitopt::ocp {
 
-class JerkJump : public ConstraintSet {
+/// One stencil per node strictly inside the phase, over the points of the two segments that
+/// meet there, with allowance 1.
+class JerkJump : public AccelerationStencilBound {
  public:
   JerkJump(std::string name, const Phase& phase, double jump);
-  Eigen::VectorXd lowerBounds() const override;
-  Eigen::VectorXd upperBounds() const override;
-  void values(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> g) const override;
-  void jacobian(const Eigen::VectorXd& x, Triplets& out) const override;
-  void hessian(const Eigen::VectorXd&, const Eigen::VectorXd&, Triplets&) const override {}
   /// Rows 2 n (k - 1) .. 2 n k - 1 bound the jump at node k (1 .. segments - 1).
-  GridNode nodeOf(int row) const override {
-    return {"node", row / (2 * phase_.point.n) + 1, row % (2 * phase_.point.n)};
-  }
-
- private:
-  /// The points of the two segments that meet at node k, in time order, and the weights w_i
-  /// with T (jerk_right - jerk_left) = sum_i w_i a_i.
-  struct Stencil {
-    std::array<int, 5> points{};
-    std::array<double, 5> weights{};
-    int size = 0;
-  };
-  Stencil stencil(int node) const;
-
-  Phase phase_;
-  double jump_;
+  GridNode nodeOf(int row) const override { return {"node", stencilOf(row) + 1, linkOf(row)}; }
 };
 
 }  // namespace gaitopt::ocp

@@ -13,32 +13,16 @@
 /// 0.3 % error of the peak rate.
 #include <string>
 
-#include "ocp/transcription/nlp.hpp"
-#include "ocp/transcription/phase.hpp"
+#include "ocp/problem/acceleration_stencil_bound.hpp"
 
 namespace gaitopt::ocp {
 
-class JerkLimit : public ConstraintSet {
+/// The stencils {a_p, a_{p+1}} with weights (-1, 1) and allowance t_{p+1} - t_p per unit T.
+class JerkLimit : public AccelerationStencilBound {
  public:
   JerkLimit(std::string name, const Phase& phase, double jerk);
-  Eigen::VectorXd lowerBounds() const override;
-  Eigen::VectorXd upperBounds() const override;
-  void values(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> g) const override;
-  void jacobian(const Eigen::VectorXd& x, Triplets& out) const override;
-  void hessian(const Eigen::VectorXd&, const Eigen::VectorXd&, Triplets&) const override {}
   /// Rows 2 n p .. 2 n (p + 1) - 1 bound the change from point p to point p + 1.
-  GridNode nodeOf(int row) const override {
-    return {"point", row / (2 * phase_.point.n), row % (2 * phase_.point.n)};
-  }
-
- private:
-  /// Spacing of points p and p + 1 per unit duration.
-  double spacing(int p) const {
-    return phase_.layout.time(p + 1, 1.0) - phase_.layout.time(p, 1.0);
-  }
-
-  Phase phase_;
-  double jerk_;
+  GridNode nodeOf(int row) const override { return {"point", stencilOf(row), linkOf(row)}; }
 };
 
 }  // namespace gaitopt::ocp

@@ -2,16 +2,14 @@
 // export's accelerations on either side differ by at most the bound. Measured on the dense export
 // independently of the set's own stencil: at a rate whose samples fall on every node, the
 // three-point one-sided differences of the accelerations are the exact end slopes of each
-// segment's quadratic. The unbounded default optimum jumps by more, and pays nothing for it.
+// segment's quadratic. The unbounded default optimum jumps by more, at less cost.
 #include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "dynamics/robot_files/robot_config.hpp"
-#include "ocp/guess/initial_guess.hpp"
 #include "ocp/problem/gait_problem.hpp"
-#include "ocp/solve/ipopt_adapter.hpp"
+#include "support/solved_config.hpp"
 
 namespace gaitopt::ocp {
 namespace {
@@ -20,24 +18,18 @@ constexpr double kJump = 2000;  // rad/s^3
 // Samples on every node of the default problem: SSP nodes every 20 ms, DSP every 1/60 s.
 constexpr double kNodeRate = 6000;  // Hz
 
-struct JumpSolve {
-  GaitProblem problem;
-  SolveResult result;
-};
-
-JumpSolve solveDefault(const dynamics::Model& model, double jump) {
-  auto c = loadOcpConfig(std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/mu2004_walk.yaml");
+/// The default problem with the jump bound (0: off), solved from its polynomial guess.
+OcpConfig defaultWithJump(double jump) {
+  auto c = loadOcpConfig(test::shippedOcpConfig("mu2004_walk"));
   c.jerk_jump_limit = jump;
-  JumpSolve s{buildGaitProblem(model, c, polynomialGuess(model, c)), {}};
-  s.result = solveWithIpopt(s.problem.nlp, c.solver);
-  return s;
+  return c;
 }
 
 /// The largest jump of the export's jerk at a node strictly inside a phase [rad/s^3]: the nodes
 /// are every other point of the solution (Hermite-Simpson), found among the dense samples.
-double largestJerkJump(const JumpSolve& s, const dynamics::Model& model) {
-  const auto points = reconstruct(s.problem, model, s.result.x).knots();
-  const auto dense = reconstructDense(s.problem, model, s.result.x, kNodeRate).knots();
+double largestJerkJump(const test::SolvedConfig& s) {
+  const auto points = reconstruct(s.problem, s.model, s.result.x).knots();
+  const auto dense = reconstructDense(s.problem, s.model, s.result.x, kNodeRate).knots();
   const double h = 1 / kNodeRate;
   double worst = 0;
   size_t first = 0;  // the first point of the current phase
@@ -58,15 +50,13 @@ double largestJerkJump(const JumpSolve& s, const dynamics::Model& model) {
 }
 
 TEST(JerkJump, TheExportsJerkJumpsNoMoreThanTheBoundAtEveryNode) {
-  const auto model = dynamics::loadRobot(std::string(GAITOPT_SOURCE_DIR) +
-                                         "/configs/robots/mu2004_five_link.yaml");
-  const JumpSolve bounded = solveDefault(model, kJump);
+  const test::SolvedConfig bounded(defaultWithJump(kJump));
   ASSERT_TRUE(bounded.result.success) << bounded.result.status;
-  EXPECT_LT(largestJerkJump(bounded, model), kJump * (1 + 1e-5));
+  EXPECT_LT(largestJerkJump(bounded), kJump * (1 + 1e-5));
 
-  const JumpSolve free = solveDefault(model, 0);
+  const test::SolvedConfig free(defaultWithJump(0));
   ASSERT_TRUE(free.result.success) << free.result.status;
-  EXPECT_GT(largestJerkJump(free, model), 2 * kJump);
+  EXPECT_GT(largestJerkJump(free), 2 * kJump);
   EXPECT_GT(bounded.result.cost, free.result.cost);  // the bound is active and costs torque
 }
 
