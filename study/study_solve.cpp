@@ -104,6 +104,9 @@ std::vector<std::string> solveColumns() {
           "max_swing_knee_flexion_deg",
           "min_normal_force_between_N",
           "min_foot_cop_margin_between_m",
+          "max_dsp_tip_drift_between_m",
+          "max_rate_mismatch_between",
+          "max_acceleration_mismatch_between",
           "strike_normal_velocity_m_s",
           "impulse_trailing_cone_ratio",
           "start",
@@ -131,6 +134,9 @@ std::vector<std::string> solveRow(const StudyPoint& point, const std::string& di
                       "/posture_deg/max_swing_knee_flexion",
                       "/between_nodes/min_normal_force",
                       "/between_nodes/min_foot_cop_margin",
+                      "/between_nodes/max_dsp_tip_drift",
+                      "/between_nodes/max_rate_mismatch",
+                      "/between_nodes/max_acceleration_mismatch",
                       "/strike/normal_velocity",
                       "/strike/impulse_trailing_cone_ratio"};
   for (std::size_t k = 0; k < std::size(at); ++k) row[2 + k] = numberText(*s, Pointer(at[k]));

@@ -48,6 +48,11 @@ row = next(r for r in solves if r["gait"] == "mu2004_walk" and r["ssp_segments"]
 assert row["start"] == "guess", row  # the first point of its line has no previous point
 assert abs(float(row["cost"]) - hand["cost"]) <= 1e-6 * hand["cost"], (row["cost"], hand["cost"])
 assert int(row["iterations"]) == hand["iterations"], (row["iterations"], hand["iterations"])
+# The export's checks between the points (summary.json between_nodes) are columns too.
+for column, key in [("max_dsp_tip_drift_between_m", "max_dsp_tip_drift"),
+                    ("max_rate_mismatch_between", "max_rate_mismatch"),
+                    ("max_acceleration_mismatch_between", "max_acceleration_mismatch")]:
+    assert abs(float(row[column]) - hand["between_nodes"][key]) <= 1e-9, (column, row[column])
 # The recorded --set values are the study's: the point's folder is an ordinary gait folder.
 point = json.load(open(f"{out}/runs/mu2004_walk_ssp_segments=24_solver=mumps/summary.json"))
 assert abs(point["cost"] - float(row["cost"])) <= 1e-9 * point["cost"], (point["cost"], row["cost"])
