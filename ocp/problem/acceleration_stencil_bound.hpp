@@ -33,9 +33,11 @@ class AccelerationStencilBound : public ConstraintSet {
   void hessian(const Eigen::VectorXd&, const Eigen::VectorXd&, Triplets&) const override {}
 
  protected:
-  /// Rows 2 n s .. 2 n (s + 1) - 1 belong to stencil s.
+  /// Rows 2 n s .. 2 n (s + 1) - 1 belong to stencil s: row 2 j of them is link j's upper row,
+  /// 2 j + 1 its lower one.
   int stencilOf(int row) const { return row / (2 * phase_.point.n); }
-  int linkOf(int row) const { return row % (2 * phase_.point.n); }
+  int entryOf(int row) const { return row % (2 * phase_.point.n); }
+  const AccelerationStencil& stencil(int s) const { return stencils_[static_cast<size_t>(s)]; }
 
  private:
   Phase phase_;

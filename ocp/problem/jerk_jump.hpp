@@ -25,8 +25,12 @@ namespace gaitopt::ocp {
 class JerkJump : public AccelerationStencilBound {
  public:
   JerkJump(std::string name, const Phase& phase, double jump);
-  /// Rows 2 n (k - 1) .. 2 n k - 1 bound the jump at node k (1 .. segments - 1).
-  GridNode nodeOf(int row) const override { return {"node", stencilOf(row) + 1, linkOf(row)}; }
+  /// Rows 2 n (k - 1) .. 2 n k - 1 bound the jump at node k (1 .. segments - 1), the point in the
+  /// middle of its stencil.
+  GridNode nodeOf(int row) const override {
+    const AccelerationStencil& s = stencil(stencilOf(row));
+    return {"point", s.points[s.points.size() / 2], entryOf(row)};
+  }
 };
 
 }  // namespace gaitopt::ocp

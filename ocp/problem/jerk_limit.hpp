@@ -22,7 +22,7 @@ class JerkLimit : public AccelerationStencilBound {
  public:
   JerkLimit(std::string name, const Phase& phase, double jerk);
   /// Rows 2 n p .. 2 n (p + 1) - 1 bound the change from point p to point p + 1.
-  GridNode nodeOf(int row) const override { return {"point", stencilOf(row), linkOf(row)}; }
+  GridNode nodeOf(int row) const override { return {"point", stencilOf(row), entryOf(row)}; }
 };
 
 }  // namespace gaitopt::ocp
