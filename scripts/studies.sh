@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The body of `make studies`: each study of configs/studies/ (docs/design.md#studies) run by
 # `gaitopt study` into OUT_DIR/NAME (a rerun resumes there), then the chart or table of those
-# that have one: strike_study (plots/strike_study_chart.py), strike_cost, ensemble_candidates and
-# sensitivity_penalty, ensemble_export (plots/walk_battery_table.py) and ensemble_front
-# (plots/ensemble_front_chart.py, beside the default optimum). The results/ folders the README cites hold curated copies of their tables.
+# that have one: strike_study (plots/strike_study_chart.py), strike_cost, ensemble_candidates,
+# sensitivity_penalty and ensemble_export (plots/walk_battery_table.py) and ensemble_front
+# (plots/ensemble_front_chart.py, beside the default optimum). The results/ folders the README
+# cites hold curated copies of their tables.
 # Each takes minutes (the solver robustness study about 15).
 # Usage: scripts/studies.sh BUILD_DIR OUT_DIR [NAME...]   (from the repository root; all when no
 #        NAME is given)

@@ -89,28 +89,40 @@ void solvePoint(const StudyConfig& c, const std::vector<StudyPoint>& points, std
   if (warm && !fs::exists(out + ".start")) warmSolve(p, points[*p.previous], dir, t);
 }
 
+namespace {
+
+/// The numeric columns of solves.csv beside the summary.json entry each one reads, in order:
+/// one list, so that a column and its entry cannot drift apart.
+struct SummaryColumn {
+  const char* column;
+  const char* pointer;
+};
+constexpr SummaryColumn kSummaryColumns[] = {
+    {"iterations", "/iterations"},
+    {"cost", "/cost"},
+    {"wall_time_s", "/wall_time_s"},
+    {"factorizations", "/kkt/factorizations"},
+    {"mumps_fallbacks", "/kkt/mumps_fallbacks"},
+    {"inertia_corrections", "/kkt/inertia_corrections"},
+    {"pivoting_factorizations", "/kkt/pivoting_factorizations"},
+    {"max_torso_lean_deg", "/posture_deg/max_torso_lean"},
+    {"max_stance_knee_flexion_deg", "/posture_deg/max_stance_knee_flexion"},
+    {"max_swing_knee_flexion_deg", "/posture_deg/max_swing_knee_flexion"},
+    {"min_normal_force_between_N", "/between_nodes/min_normal_force"},
+    {"min_foot_cop_margin_between_m", "/between_nodes/min_foot_cop_margin"},
+    {"max_dsp_tip_drift_between_m", "/between_nodes/max_dsp_tip_drift"},
+    {"max_rate_mismatch_between", "/between_nodes/max_rate_mismatch"},
+    {"max_acceleration_mismatch_between", "/between_nodes/max_acceleration_mismatch"},
+    {"strike_normal_velocity_m_s", "/strike/normal_velocity"},
+    {"impulse_trailing_cone_ratio", "/strike/impulse_trailing_cone_ratio"}};
+
+}  // namespace
+
 std::vector<std::string> solveColumns() {
-  return {"status",
-          "converged",
-          "iterations",
-          "cost",
-          "wall_time_s",
-          "factorizations",
-          "mumps_fallbacks",
-          "inertia_corrections",
-          "pivoting_factorizations",
-          "max_torso_lean_deg",
-          "max_stance_knee_flexion_deg",
-          "max_swing_knee_flexion_deg",
-          "min_normal_force_between_N",
-          "min_foot_cop_margin_between_m",
-          "max_dsp_tip_drift_between_m",
-          "max_rate_mismatch_between",
-          "max_acceleration_mismatch_between",
-          "strike_normal_velocity_m_s",
-          "impulse_trailing_cone_ratio",
-          "start",
-          "folder"};
+  std::vector<std::string> columns = {"status", "converged"};
+  for (const SummaryColumn& c : kSummaryColumns) columns.emplace_back(c.column);
+  columns.insert(columns.end(), {"start", "folder"});
+  return columns;
 }
 
 std::vector<std::string> solveRow(const StudyPoint& point, const std::string& dir) {
@@ -122,24 +134,8 @@ std::vector<std::string> solveRow(const StudyPoint& point, const std::string& di
   row.back() = point.folder;
   if (!s) return row;
   row[1] = s->value("converged", true) ? "1" : "0";
-  const char* at[] = {"/iterations",
-                      "/cost",
-                      "/wall_time_s",
-                      "/kkt/factorizations",
-                      "/kkt/mumps_fallbacks",
-                      "/kkt/inertia_corrections",
-                      "/kkt/pivoting_factorizations",
-                      "/posture_deg/max_torso_lean",
-                      "/posture_deg/max_stance_knee_flexion",
-                      "/posture_deg/max_swing_knee_flexion",
-                      "/between_nodes/min_normal_force",
-                      "/between_nodes/min_foot_cop_margin",
-                      "/between_nodes/max_dsp_tip_drift",
-                      "/between_nodes/max_rate_mismatch",
-                      "/between_nodes/max_acceleration_mismatch",
-                      "/strike/normal_velocity",
-                      "/strike/impulse_trailing_cone_ratio"};
-  for (std::size_t k = 0; k < std::size(at); ++k) row[2 + k] = numberText(*s, Pointer(at[k]));
+  for (std::size_t k = 0; k < std::size(kSummaryColumns); ++k)
+    row[2 + k] = numberText(*s, Pointer(kSummaryColumns[k].pointer));
   std::ifstream start(gaitFolder(point, dir) + ".start");
   std::string& from = row[row.size() - 2];
   if (!std::getline(start, from)) from = "guess";
