@@ -130,7 +130,7 @@ gaits::Trajectory reconstruct(const GaitProblem& problem, const dynamics::Model&
     appendKnots(knots, *phase, m, x, t0);
     t0 += phase->layout.durationAt(x);
   }
-  return gaits::Trajectory(m.name(), problem.step_length, std::move(knots));
+  return gaits::Trajectory(m.name(), problem.stepLengthOf(variant), std::move(knots));
 }
 
 std::vector<gaits::Trajectory> reconstructSteps(const GaitProblem& problem,
@@ -150,10 +150,10 @@ gaits::Trajectory reconstructDense(const GaitProblem& problem, const dynamics::M
   std::vector<gaits::Knot> knots;
   double t0 = 0;
   for (const Phase* phase : problem.phasesOf(step, variant)) {
-    appendDenseKnots(knots, *phase, m, x, problem.step_length, t0, rate_hz);
+    appendDenseKnots(knots, *phase, m, x, problem.stepLengthOf(variant), t0, rate_hz);
     t0 += phase->layout.durationAt(x);
   }
-  return gaits::Trajectory(m.name(), problem.step_length, std::move(knots));
+  return gaits::Trajectory(m.name(), problem.stepLengthOf(variant), std::move(knots));
 }
 
 }  // namespace gaitopt::ocp

@@ -40,7 +40,9 @@ struct GaitProblem {
   Phase ssp;                 ///< the nominal's first step
   std::optional<Phase> dsp;  ///< the nominal's first step
   Touchdown touchdown;       ///< the nominal's first step
-  double step_length = 0;
+  double step_length = 0;    ///< the nominal's
+  /// Per variant, the step its tips are pinned to: the nominal's times the copy's length_scale.
+  std::vector<double> step_lengths;
   int steps = 1;
   int variants = 1;
   std::vector<BuiltPhase> built;  ///< every phase of every step and variant, in build order
@@ -58,6 +60,10 @@ struct GaitProblem {
   }
   /// Step `step` of variant `variant` in time order. @throws std::out_of_range when absent.
   std::vector<const Phase*> phasesOf(int step, int variant) const;
+  /// The step of variant `variant` (step_lengths; the nominal's when none are listed).
+  double stepLengthOf(int variant) const {
+    return step_lengths.empty() ? step_length : step_lengths.at(static_cast<size_t>(variant));
+  }
 };
 
 /// The shape of `config` (gait_shape.hpp) assembled by the one builder (shape_builder.hpp), every

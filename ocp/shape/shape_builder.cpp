@@ -233,6 +233,7 @@ GaitProblem assembleGaitProblem(const GaitShape& shape, const OcpConfig& config,
   requireGuesses(shape, guesses);
   GaitProblem p;
   p.step_length = config.step_length;
+  for (const OcpConfig& c : variantConfigs(config)) p.step_lengths.push_back(c.step_length);
   p.steps = shape.steps;
   p.variants = shape.variants;
   p.models = shape.models;
