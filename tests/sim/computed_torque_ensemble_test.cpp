@@ -14,6 +14,7 @@
 #include "dynamics/kinematics.hpp"
 #include "dynamics/model_variation.hpp"
 #include "dynamics/ssp_dynamics.hpp"
+#include "gaits/export/export_checks.hpp"
 #include "ocp/shape/computed_torque_law.hpp"
 #include "sim/controllers/tracking_controller.hpp"
 #include "sim/controllers/tracking_law.hpp"
@@ -131,6 +132,24 @@ INSTANTIATE_TEST_SUITE_P(PlantOrController, ComputedTorqueVariant,
                          ::testing::Values(VariantCase{"{mass_scale: 1.1}", 1.1, 1.0, 1},
                                            VariantCase{"{length_scale: 1.05}", 1.0, 1.05, 1},
                                            VariantCase{"{controller_case: 2}", 1.0, 1.0, 2}));
+
+/// A copy with longer links steps farther, and its double support in reduced coordinates pins
+/// its tip there: its 1 kHz export must stay on that point between the collocation points too
+/// (exported on the nominal's step, the chart moved the copy's tip by its 5 % of the step).
+TEST(ComputedTorqueVariantExport, ALongerCopysDoubleSupportStaysOnItsOwnStep) {
+#ifndef NDEBUG
+  GTEST_SKIP() << "a solve: optimised builds only";
+#endif
+  std::vector<config::Override> o = ensemble(kLaw, "{length_scale: 1.05}");
+  o.push_back(config::parseOverride("constraints.dsp_reduced_coordinates=true"));
+  const test::SolvedConfig s(loadOcpConfig(test::shippedOcpConfig("mu2004_walk"), o));
+  ASSERT_TRUE(s.result.success) << s.result.status;
+  const dynamics::Model plant =
+      dynamics::perturbedModel(s.model, {.mass = 0, .inertia = 0, .length = 0.05, .com = 0.05});
+  const gaits::Trajectory copy = reconstructDense(s.problem, s.model, s.result.x, 1000.0, 0, 1);
+  EXPECT_NEAR(copy.stepLength(), 1.05 * s.config.step_length, 1e-12);
+  EXPECT_LT(gaits::maxDspTipDrift(copy, plant), 1e-9);
+}
 
 TEST(ComputedTorqueVariantConfig, AVariantIsReadStrictly) {
   EXPECT_EQ(loadError(kLaw, "{mass_scale: 0.9, controller_case: 3}"), "");
