@@ -4,6 +4,7 @@
 // the walk table with a column per plant; walks read from a battery file, which the robust-design
 // studies share; and configs refused with the key and why.
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -175,6 +176,19 @@ TEST(StudyConfig, TheRobustDesignStudiesWalkOneBattery) {
   ASSERT_EQ(strike.walks.size(), 6u);  // rigid masses, lengths, pushes, cases; LCP; DART
   EXPECT_EQ(strike.walks.back().name, "dart");
   EXPECT_EQ(strike.walks.front().plant_values.size(), 7u);  // masses x0.8 .. x1.2
+}
+
+// Every shipped study reads, with every gait's sets (a key its config lacks, or a study whose
+// pins no longer apply to the config it names, is an error at load, not minutes into a run).
+TEST(StudyConfig, EveryShippedStudyLoads) {
+  int studies = 0;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(GAITOPT_SOURCE_DIR) + "/configs/studies")) {
+    if (entry.path().extension() != ".yaml") continue;
+    ++studies;
+    EXPECT_NO_THROW(loadStudyConfig(entry.path().string())) << entry.path().filename();
+  }
+  EXPECT_GE(studies, 14);
 }
 
 TEST(StudyTable, CsvQuotesWhatWouldSplitAFieldAndMarkdownEscapesBars) {
