@@ -1,8 +1,5 @@
 #include "ocp/solve/dsp_chart_export.hpp"
 
-#include <stdexcept>
-
-#include <fmt/format.h>
 #include <Eigen/LU>
 
 #include "ocp/problem/dsp_chart.hpp"
@@ -60,24 +57,26 @@ ChartTrack chartTrack(const dynamics::Model& model, const Phase& phase, const Ei
 void placeOnChart(const dynamics::Model& model, double step_length, const ChartTrack& track,
                   double t, const PointLayout& layout, Eigen::VectorXd& point) {
   VecD theta = layout.q.of(point), dtheta, ddtheta;
-  projectOntoChart(model, step_length, exportPoint(track.layout, track.values, t), theta, dtheta,
-                   ddtheta);
+  if (!projectOntoChart(model, step_length, exportPoint(track.layout, track.values, t), theta,
+                        dtheta, ddtheta))
+    return;
   layout.q.of(point) = theta;
   layout.v.of(point) = dtheta;
   layout.a.of(point) = ddtheta;
 }
 
-void projectOntoChart(const dynamics::Model& model, double step_length,
+bool projectOntoChart(const dynamics::Model& model, double step_length,
                       const Eigen::VectorXd& chart, VecD& theta, VecD& dtheta, VecD& ddtheta) {
   const int nc = chartSize(model);
   const Eigen::VectorXd c = chart.head(nc), cdot = chart.segment(nc, nc), cddot = chart.tail(nc);
+  const VecD start = theta;
   for (int it = 0;; ++it) {
     const Eigen::VectorXd f = constraintValue(model, step_length, theta, c);
     if (f.cwiseAbs().maxCoeff() < kTolerance) break;
-    if (it == kMaxIterations)
-      throw std::runtime_error(fmt::format(
-          "the double support's chart point cannot be reached: {:.3g} off after {} Newton steps",
-          f.cwiseAbs().maxCoeff(), it));
+    if (it == kMaxIterations || !f.allFinite()) {
+      theta = start;
+      return false;
+    }
     theta -= constraintJacobian(model, theta, nc).partialPivLu().solve(f);
   }
   const auto lu = constraintJacobian(model, theta, nc).partialPivLu();
@@ -89,6 +88,7 @@ void projectOntoChart(const dynamics::Model& model, double step_length,
   rhs.head(2) -= dynamics::pointBias<double>(model.tipWeights(), theta, dtheta);
   rhs.segment(2, 2) -= dynamics::pointBias<double>(model.hipWeights(), theta, dtheta);
   ddtheta = lu.solve(rhs);
+  return true;
 }
 
 }  // namespace gaitopt::ocp

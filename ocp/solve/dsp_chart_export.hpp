@@ -22,15 +22,19 @@ struct ChartTrack {
 ChartTrack chartTrack(const dynamics::Model& model, const Phase& phase, const Eigen::VectorXd& x);
 
 /// Moves theta, dtheta, ddtheta of `point` (a point of `layout`, exported at phase time t by
-/// exportPoint) onto the pinned chain at the chart's value at t.
+/// exportPoint) onto the pinned chain at the chart's value at t. A chart value the chain cannot
+/// reach (the iterate of a failed solve, whose points need not keep the tip pinned) leaves the
+/// scheme's own point, so that a failed solve is still exported and its drift check says how far
+/// off it is.
 void placeOnChart(const dynamics::Model& model, double step_length, const ChartTrack& track,
                   double t, const PointLayout& layout, Eigen::VectorXd& point);
 
 /// The chain's theta, dtheta, ddtheta with E at (step_length, 0) and at rest and chart values
 /// `chart` = (c, cdot, cddot) (3 chartSize), by Newton's method from `theta` (which holds the
 /// start on entry): [J_E; J_hip; upper-body rows] dtheta = (0, cdot) and the same matrix for
-/// ddtheta with the bias terms. @throws std::runtime_error when Newton does not converge.
-void projectOntoChart(const dynamics::Model& model, double step_length,
+/// ddtheta with the bias terms. @return false, with theta, dtheta and ddtheta as they came in,
+/// when Newton does not reach the chain.
+bool projectOntoChart(const dynamics::Model& model, double step_length,
                       const Eigen::VectorXd& chart, VecD& theta, VecD& dtheta, VecD& ddtheta);
 
 }  // namespace gaitopt::ocp

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "dynamics/dsp_dynamics.hpp"
@@ -80,13 +82,33 @@ TEST(DspChart, ProjectionRecoversThePinnedChainFromItsChart) {
     y << k.theta, k.dtheta, k.ddtheta;
     const Eigen::VectorXd chart = chartValue(model, y);
     VecD theta = VecD(k.theta) + 0.01 * VecD::LinSpaced(5, -1, 1), dtheta, ddtheta;
-    projectOntoChart(model, c.step_length, chart, theta, dtheta, ddtheta);
+    ASSERT_TRUE(projectOntoChart(model, c.step_length, chart, theta, dtheta, ddtheta));
     EXPECT_LT((theta - VecD(k.theta)).cwiseAbs().maxCoeff(), 1e-10);
     EXPECT_LT((dtheta - VecD(k.dtheta)).cwiseAbs().maxCoeff(), 1e-9);
     EXPECT_LT((ddtheta - VecD(k.ddtheta)).cwiseAbs().maxCoeff(), 1e-7);
     ++checked;
   }
   EXPECT_GT(checked, 50);
+}
+
+// A hip beyond the legs' reach (the iterate of a failed solve can put it there) is no chart
+// point: the projection says so and leaves its start, where it used to throw and take the failed
+// solve's export with it.
+TEST(DspChart, AHipOutOfTheLegsReachIsRefusedAndTheStartKept) {
+  const auto c = reducedConfig("mu2004_walk.yaml");
+  const auto model = dynamics::loadRobot(c.robot_path);
+  const gaits::Trajectory guess = polynomialGuess(model, c);
+  const auto dsp = std::find_if(guess.knots().begin(), guess.knots().end(),
+                                [](const gaits::Knot& k) { return k.phase == gaits::Phase::kDsp; });
+  ASSERT_NE(dsp, guess.knots().end());
+  Eigen::VectorXd y(15);
+  y << dsp->theta, dsp->dtheta, dsp->ddtheta;
+  Eigen::VectorXd chart = chartValue(model, y);
+  chart(1) += 1.0;  // the hip a metre higher than legs of 0.63 m reach
+  const VecD start = dsp->theta;
+  VecD theta = start, dtheta, ddtheta;
+  EXPECT_FALSE(projectOntoChart(model, c.step_length, chart, theta, dtheta, ddtheta));
+  EXPECT_EQ(theta, start);
 }
 
 // The chart is the hip and upper body over two-link legs (Mu 2.19-2.21): a knee-less robot is
