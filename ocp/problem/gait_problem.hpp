@@ -60,10 +60,8 @@ struct GaitProblem {
   }
   /// Step `step` of variant `variant` in time order. @throws std::out_of_range when absent.
   std::vector<const Phase*> phasesOf(int step, int variant) const;
-  /// The step of variant `variant` (step_lengths; the nominal's when none are listed).
-  double stepLengthOf(int variant) const {
-    return step_lengths.empty() ? step_length : step_lengths.at(static_cast<size_t>(variant));
-  }
+  /// The step of variant `variant`. @throws std::out_of_range when absent.
+  double stepLengthOf(int variant) const { return step_lengths.at(static_cast<size_t>(variant)); }
 };
 
 /// The shape of `config` (gait_shape.hpp) assembled by the one builder (shape_builder.hpp), every
