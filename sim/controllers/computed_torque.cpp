@@ -43,6 +43,17 @@ VecD dspComputedTorque(const dynamics::Model& model, const VecD& theta, const Ve
   return dynamics::jointTorque<double>(generalized);
 }
 
+VecD dspTrackingTorque(const dynamics::Model& model, const VecD& theta, const VecD& dtheta,
+                       const VecD& pddot, const VecD& planned, const gaits::Knot& ref,
+                       DspFeedForward dsp) {
+  const auto at = [&](const VecD& a) {
+    return dspComputedTorque(model, theta, dtheta, a, ref.force_stance, ref.force_swing);
+  };
+  const VecD wanted = at(pddot);
+  if (dsp == DspFeedForward::kModel) return wanted;
+  return VecD(ref.tau) + wanted - at(planned);
+}
+
 VecD clipTorque(const dynamics::Model& model, VecD tau) {
   for (int j = 0; j < model.nLinks(); ++j) {
     const auto& joint = model.joints()[static_cast<size_t>(j)];

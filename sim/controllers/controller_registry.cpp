@@ -12,9 +12,10 @@ std::unique_ptr<Controller> buildTracking(const ControllerSetting& s) {
   return std::make_unique<TrackingController>(s.model, std::make_unique<Law>(s.gains), Dsp);
 }
 
+template <DspFeedForward Dsp = DspFeedForward::kModel>
 std::unique_ptr<Controller> buildMuSlidingMode(const ControllerSetting& s) {
   return std::make_unique<MuSlidingModeController>(s.model, s.mu_gains, s.uncertainty_bound,
-                                                   s.bound_side);
+                                                   s.bound_side, Dsp);
 }
 
 std::unique_ptr<Controller> buildHzd(const ControllerSetting& s) {
@@ -34,7 +35,11 @@ const std::vector<ControllerEntry>& controllers() {
       {"sliding_mode", "computed torque with a boundary-layer sliding-mode law",
        buildTracking<SlidingModeLaw>},
       {"mu_sliding_mode", "Mu's integral sliding mode with a known uncertainty bound (Mu 4.1-4.17)",
-       buildMuSlidingMode},
+       buildMuSlidingMode<>},
+      {"mu_sliding_mode_plan_dsp",
+       "Mu's integral sliding mode; in double support the plan's torques fed forward and the "
+       "model's equivalent control for the correction only",
+       buildMuSlidingMode<DspFeedForward::kPlan>},
       {"hzd", "output zeroing of virtual constraints for a passive ankle (Westervelt et al. 2003)",
        buildHzd, true},
   };

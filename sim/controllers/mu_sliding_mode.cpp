@@ -85,8 +85,11 @@ MuSlidingModeGains muTable42(int mu_case) {
 
 MuSlidingModeController::MuSlidingModeController(dynamics::Model model, MuSlidingModeGains gains,
                                                  const dynamics::ParameterErrors& bound,
-                                                 BoundSide side)
-    : model_(std::move(model)), gains_(gains), corners_(cornerModels(model_, bound, side)) {
+                                                 BoundSide side, DspFeedForward dsp)
+    : model_(std::move(model)),
+      gains_(gains),
+      corners_(cornerModels(model_, bound, side)),
+      dsp_(dsp) {
   if (!model_.joints().front().actuated)
     throw std::invalid_argument(
         "sliding-mode control of every joint needs an actuated stance ankle");
@@ -131,6 +134,7 @@ MuSlidingModeController::Errors MuSlidingModeController::errors(
   const double l2 = lambda * lambda;
   const Eigen::VectorXd z = memory.head(surfaceMemorySize(phase));
   r.s = r.edot + 2 * lambda * r.e + l2 * z;
+  r.planned = dd_ref;
   r.u = dd_ref - 2 * lambda * r.edot - l2 * r.e;
   r.v = d_ref - 2 * lambda * r.e - l2 * z;
   return r;
@@ -156,7 +160,7 @@ VecD MuSlidingModeController::dspTorque(const VecD& theta, const VecD& dtheta,
                                         const gaits::Knot& ref, const Errors& err,
                                         const VecD& carried) const {
   const auto equivalent = [&](const dynamics::Model& m) -> VecD {
-    return dspComputedTorque(m, theta, dtheta, err.u, ref.force_stance, ref.force_swing);
+    return dspTrackingTorque(m, theta, dtheta, err.u, err.planned, ref, dsp_);
   };
   const VecD own = equivalent(model_);
   const VecD eta = uncertaintyBound(corners_, own, equivalent);

@@ -45,10 +45,21 @@
 /// of the load between the two tips to chance; here T^ gives pdd = u with the leading tip carrying
 /// the reference's ground force (the planned load sharing, inside its friction cone),
 /// computed_torque.hpp. The switching term is Mu's.
+/// With DspFeedForward::kPlan (mu_sliding_mode_plan_dsp) the DSP's T^ is the reference's own
+/// torques plus what u - pdd_d costs on the hatted model (dspTrackingTorque), and eta_D bounds
+/// only that correction's error over the corners: the optimised plan holds the load split and the
+/// tips' internal force the plant needs, which the model's T^ gets wrong by the model's error. On
+/// the ensemble optimum (configs/ocp/mu2004_walk_ensemble.yaml) under Mu's case 2, T^ pressed the
+/// trailing tip to the edge of its friction cone 1 ms into the DSP and it slid (1 of 20 steps);
+/// with the plan's torques cases 2 and 3 walk 20 of 20 (results/mu_cases). The bound assumes the
+/// plan fits the plant (Mu's setting: the error is the controller's); a plant 20 % heavier than
+/// the plan's then falls in step 2 by a foot rotation, which the law as written walks
+/// (results/ensemble_walks).
 #include <vector>
 
 #include "dynamics/model.hpp"
 #include "dynamics/model_variation.hpp"
+#include "sim/controllers/computed_torque.hpp"
 #include "sim/controllers/controller.hpp"
 
 namespace gaitopt::sim {
@@ -77,7 +88,8 @@ class MuSlidingModeController : public Controller {
   /// is negative.
   MuSlidingModeController(dynamics::Model model, MuSlidingModeGains gains,
                           const dynamics::ParameterErrors& bound,
-                          BoundSide side = BoundSide::kEitherWay);
+                          BoundSide side = BoundSide::kEitherWay,
+                          DspFeedForward dsp = DspFeedForward::kModel);
 
   VecD torque(gaits::Phase phase, const VecD& theta, const VecD& dtheta, const gaits::Knot& ref,
               const Eigen::VectorXd& memory) const override;
@@ -113,9 +125,10 @@ class MuSlidingModeController : public Controller {
  private:
   struct Errors {
     Eigen::VectorXd e, edot;
-    Eigen::VectorXd u;  ///< (4.2)/(4.10) reference acceleration
-    Eigen::VectorXd v;  ///< (4.2), SSP only
-    Eigen::VectorXd s;  ///< (4.1)
+    Eigen::VectorXd u;        ///< (4.2)/(4.10) reference acceleration
+    Eigen::VectorXd planned;  ///< the reference's own acceleration (qdd_d or pdd_d)
+    Eigen::VectorXd v;        ///< (4.2), SSP only
+    Eigen::VectorXd s;        ///< (4.1)
   };
   Errors errors(gaits::Phase phase, const VecD& theta, const VecD& dtheta, const gaits::Knot& ref,
                 const Eigen::VectorXd& memory) const;
@@ -140,6 +153,7 @@ class MuSlidingModeController : public Controller {
   dynamics::Model model_;
   MuSlidingModeGains gains_;
   std::vector<dynamics::Model> corners_;  ///< where the true robot may be
+  DspFeedForward dsp_;
 };
 
 }  // namespace gaitopt::sim

@@ -42,15 +42,8 @@ VecD TrackingController::unclippedTorque(gaits::Phase phase, const VecD& theta, 
 
 VecD TrackingController::dspTorque(const VecD& theta, const VecD& dtheta,
                                    const gaits::Knot& ref) const {
-  const auto at = [&](const VecD& pddot) {
-    return dspComputedTorque(model_, theta, dtheta, pddot, ref.force_stance, ref.force_swing);
-  };
   const ReducedAcceleration a = dspReducedAcceleration(theta, dtheta, ref);
-  const VecD wanted = at(a.planned + a.correction);
-  if (dsp_ == DspFeedForward::kModel) return wanted;
-  // The torques are affine in pddot at a given state: the difference is what the correction
-  // costs on the model, added to the plan's own torques.
-  return VecD(ref.tau) + wanted - at(a.planned);
+  return dspTrackingTorque(model_, theta, dtheta, a.planned + a.correction, a.planned, ref, dsp_);
 }
 
 VecD TrackingController::torque(gaits::Phase phase, const VecD& theta, const VecD& dtheta,

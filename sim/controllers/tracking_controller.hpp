@@ -17,16 +17,11 @@
 
 #include "dynamics/model.hpp"
 #include "gaits/trajectory/trajectory.hpp"
+#include "sim/controllers/computed_torque.hpp"
 #include "sim/controllers/controller.hpp"
 #include "sim/controllers/tracking_law.hpp"
 
 namespace gaitopt::sim {
-
-/// Where the double support's feed-forward comes from.
-enum class DspFeedForward {
-  kModel,  ///< the model's computed torque for the whole acceleration
-  kPlan,   ///< the reference's torques; the model's computed torque for the correction only
-};
 
 class TrackingController : public Controller {
  public:

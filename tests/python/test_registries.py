@@ -49,7 +49,7 @@ def test_the_registries_hold_the_shipped_controllers_and_grounds():
     # The shipped ones at least (the comparisons above would pass on empty registries); a new
     # entry adds to them.
     shipped_controllers = {"computed_torque", "computed_torque_plan_dsp", "sliding_mode",
-                           "mu_sliding_mode", "hzd"}
+                           "mu_sliding_mode", "mu_sliding_mode_plan_dsp", "hzd"}
     assert shipped_controllers <= set(gaitopt.controllers())
     assert {"rigid", "impedance", "lcp", "dart"} <= set(gaitopt.grounds())
     shipped = {p.stem for p in (ROOT / "configs/grounds").glob("*.yaml")}

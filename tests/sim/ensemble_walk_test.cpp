@@ -18,6 +18,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -29,8 +30,10 @@
 #include "ocp/guess/initial_guess.hpp"
 #include "ocp/solve/gait_solve.hpp"
 #include "sim/contact/ground_config.hpp"
+#include "sim/controllers/mu_sliding_mode.hpp"
 #include "sim/controllers/tracking_controller.hpp"
 #include "sim/controllers/tracking_law.hpp"
+#include "sim/scenario/scenario.hpp"
 #include "sim/walk/walk.hpp"
 
 namespace gaitopt::sim {
@@ -146,6 +149,43 @@ TEST_F(EnsembleExport, ThePlansDoubleSupportFeedForwardWalksMusCasesTwoAndThree)
                    fmt::format("{} steps: {}", model.steps_completed, model.failure));
     EXPECT_LT(model.steps_completed, 20) << "case " << mu_case;
     EXPECT_EQ(plan.steps_completed, 20) << "case " << mu_case << ": " << plan.failure;
+  }
+}
+
+/// Mu's law on the ensemble optimum as `gaitopt simulate --controller mu_sliding_mode[_plan_dsp]`
+/// walks it, a CoP beyond the shipped foot a fall: Mu's cases 2 and 3 on the controller's side
+/// with Table 4.2's gains and the bound the controller is told (Mu's premise), rigid ground; and
+/// the nominal on the LCP ground. With its equivalent control computed on its model in double
+/// support it slides the trailing tip in step 2 under both cases (T^ presses the tips apart up to
+/// the friction cone) and lifts the leading tip in step 1 on the LCP ground; with the plan's
+/// double-support torques fed forward (mu_sliding_mode.hpp) it walks all three 20 of 20.
+TEST_F(EnsembleExport, MusLawWithThePlansDoubleSupportWalksMusCasesAndTheLcpGround) {
+  const Solved& s = ensembleOptimum();
+  ASSERT_TRUE(s.solution.result.success) << s.solution.result.status;
+  const auto walkWith = [&](Scenario scenario, const char* controller) {
+    scenario.controller = controller;
+    scenario.rules.cop_limit = CopLimit::kFail;
+    return runScenario(s.nominal, s.reference, scenario).walk;
+  };
+  std::vector<std::pair<std::string, Scenario>> scenarios;
+  for (const int mu_case : {2, 3}) {
+    Scenario c;
+    c.parameter_errors = dynamics::muUncertaintyCase(mu_case);
+    c.errors_on_controller = true;
+    c.uncertainty_bound = c.parameter_errors;
+    c.mu_gains = muTable42(mu_case);
+    scenarios.emplace_back(fmt::format("case {}", mu_case), c);
+  }
+  Scenario lcp;
+  lcp.ground = loadGround(std::string(GAITOPT_SOURCE_DIR) + "/configs/grounds/lcp.yaml");
+  scenarios.emplace_back("LCP ground", lcp);
+  for (const auto& [name, scenario] : scenarios) {
+    const WalkResult model = walkWith(scenario, "mu_sliding_mode");
+    const WalkResult plan = walkWith(scenario, "mu_sliding_mode_plan_dsp");
+    RecordProperty(name + " model_feed_forward",
+                   fmt::format("{} steps: {}", model.steps_completed, model.failure));
+    EXPECT_LT(model.steps_completed, 20) << name;
+    EXPECT_EQ(plan.steps_completed, 20) << name << ": " << plan.failure;
   }
 }
 
