@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """What each gait of a study costs and walks, over the walk battery of the studies
-configs/studies/strike_cost.yaml, ensemble_candidates.yaml and sensitivity_penalty.yaml (walk
+configs/studies/strike_cost.yaml, ensemble_candidates.yaml, sensitivity_penalty.yaml,
+ensemble_export.yaml and ensemble_walks.yaml (walk
 blocks rigid, rigid_length, rigid_push, rigid_cases, lcp, dart; any of them may be missing).
 
 Usage: walk_battery_table.py STUDY_DIR
@@ -11,7 +12,8 @@ plant_option, plant, steps). Writes into STUDY_DIR, printing their paths:
                label names the row): convergence, cost, strike speed [m/s], the trailing impulse's
                |P_t| / P_n and, per controller, the plant-mass interval walked 20 steps on the
                rigid ground around the nominal, the length errors, pushes [N s] and Mu's cases
-               walked, and the plant masses walked on the LCP ground and in DART
+               walked, and the plant masses walked on the LCP ground and in DART (per
+               controller of CONTROLLERS that the walks hold)
   summary.md   the same as a table
 A missing or malformed input ends the script with "error: <file>: ..." and exit code 1.
 """
@@ -22,7 +24,9 @@ import plot_style as style
 from ensemble_front_chart import fmt_interval, interval, plant_mass, read_walks
 from plot_io import InputError
 
-CONTROLLERS = {"computed_torque": "CT", "mu_sliding_mode": "Mu"}
+# Every controller a battery may walk, in the table's order; a table has those its walks hold.
+CONTROLLERS = {"computed_torque": "CT", "computed_torque_plan_dsp": "CT plan DSP",
+               "mu_sliding_mode": "Mu", "mu_sliding_mode_plan_dsp": "Mu plan DSP"}
 SOLVE_COLUMNS = ["gait", "converged", "cost", "strike_normal_velocity_m_s",
                  "impulse_trailing_cone_ratio"]
 # (column name, walk block of the study, what the plant value is): the walks listed as values.
@@ -70,8 +74,9 @@ def walked(values):
 
 def cells(gait, walks, controller):
     """The walk columns of one gait and controller, in the table's order."""
-    masses = {plant_mass(m): s for m, s in walks.get((gait, "rigid", controller), {}).items()}
-    out = [fmt_interval(interval(masses)) or "falls at ×1"]
+    rigid = walks.get((gait, "rigid", controller))
+    masses = {plant_mass(m): s for m, s in (rigid or {}).items()}
+    out = ["—" if rigid is None else fmt_interval(interval(masses)) or "falls at ×1"]
     for _, walk, _ in LISTED:
         values = walks.get((gait, walk, controller))
         if walk in ("lcp", "dart") and values is not None:
@@ -80,19 +85,27 @@ def cells(gait, walks, controller):
     return out
 
 
-def walk_columns():
+def walked_controllers(walks):
+    """The controllers of CONTROLLERS that walk in `walks`, in the table's order."""
+    present = {controller for _, _, controller in walks}
+    return [c for c in CONTROLLERS if c in present]
+
+
+def walk_columns(controllers):
     """(controller label, column name) of every walk column, in the table's order."""
     names = ["rigid_mass", *[name for name, _, _ in LISTED]]
-    return [(c, n) for c in CONTROLLERS.values() for n in names]
+    return [(CONTROLLERS[c], n) for c in controllers for n in names]
 
 
 def write_tables(solves, walks, out):
-    walk_cells = {gait: [c for controller in CONTROLLERS for c in cells(gait, walks, controller)]
+    controllers = walked_controllers(walks)
+    columns = walk_columns(controllers)
+    walk_cells = {gait: [c for controller in controllers for c in cells(gait, walks, controller)]
                   for gait, _ in solves}
     csv_path, md_path = os.path.join(out, "summary.csv"), os.path.join(out, "summary.md")
     with style.replacing(csv_path) as tmp, open(tmp, "w", encoding="utf-8") as f:
         f.write(",".join(["gait", "converged", "cost", "strike_normal_velocity_m_s",
-                          "impulse_trailing_cone_ratio", *[f"{c}_{n}" for c, n in walk_columns()]])
+                          "impulse_trailing_cone_ratio", *[f"{c.replace(' ', '_')}_{n}" for c, n in columns]])
                 + "\n")
         for gait, s in solves:
             row = [gait, str(int(s["converged"])), f"{s['cost']:.6g}",
@@ -100,8 +113,8 @@ def write_tables(solves, walks, out):
             f.write(",".join(row + walk_cells[gait]) + "\n")
     with style.replacing(md_path) as tmp, open(tmp, "w", encoding="utf-8") as f:
         f.write("| gait | cost | strike m/s | trailing \\|P_t\\|/P_n | "
-                + " | ".join(f"{c}: {n.replace('_', ' ')}" for c, n in walk_columns()) + " |\n")
-        f.write("|---|---:|---:|---:|" + "---|" * len(walk_columns()) + "\n")
+                + " | ".join(f"{c}: {n.replace('_', ' ')}" for c, n in columns) + " |\n")
+        f.write("|---|---:|---:|---:|" + "---|" * len(columns) + "\n")
         for gait, s in solves:
             speed = "—" if s["speed"] is None or s["speed"] < 1e-6 else f"{s['speed']:.3f}"
             ratio = "—" if s["ratio"] is None else f"{s['ratio']:.3f}"
