@@ -2,9 +2,10 @@
 # The body of `make studies`: each study of configs/studies/ (docs/design.md#studies) run by
 # `gaitopt study` into OUT_DIR/NAME (a rerun resumes there), then the chart or table of those
 # that have one: strike_study (plots/strike_study_chart.py), strike_cost, ensemble_candidates,
-# sensitivity_penalty, ensemble_export and ensemble_walks (plots/walk_battery_table.py) and
-# ensemble_front (plots/ensemble_front_chart.py, beside the default optimum, and the same table).
-# The results/ folders the README cites hold curated copies of their tables.
+# sensitivity_penalty, ensemble_export, ensemble_walks and ensemble_walks_clipped
+# (plots/walk_battery_table.py) and ensemble_front (plots/ensemble_front_chart.py, beside the
+# default optimum, and the same table). The results/ folders the README cites hold curated copies
+# of their tables.
 # Each takes minutes (the solver robustness study about 15).
 # Usage: scripts/studies.sh BUILD_DIR OUT_DIR [NAME...]   (from the repository root; all when no
 #        NAME is given)
@@ -22,7 +23,8 @@ for name in "${names[@]}"; do
   "$bin" study --config "configs/studies/$name.yaml" --out "$out/$name"
   case $name in
     strike_study) /usr/bin/python3 plots/strike_study_chart.py "$out/$name" "$out/$name" ;;
-    strike_cost | ensemble_candidates | sensitivity_penalty | ensemble_export | ensemble_walks)
+    strike_cost | ensemble_candidates | sensitivity_penalty | ensemble_export | ensemble_walks | \
+      ensemble_walks_clipped)
       /usr/bin/python3 plots/walk_battery_table.py "$out/$name" ;;
     ensemble_front)
       "$bin" optimize --config configs/ocp/mu2004_walk.yaml --out "$out/default_optimum" \

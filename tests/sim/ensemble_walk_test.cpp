@@ -189,6 +189,25 @@ TEST_F(EnsembleExport, MusLawWithThePlansDoubleSupportWalksMusCasesAndTheLcpGrou
   }
 }
 
+/// The plan-fed law's one loss on issue 33's plants is the CoP rule's, not the robot's: on the
+/// rigid ground with every link 20 % heavier its commanded ankle torque puts the centre of
+/// pressure beyond the foot in step 2 (a fall under the strict rule, recorded), and with the
+/// ankle torque clipped to the foot, as results/mu_cases and results/ensemble_walks_clipped walk
+/// it, it walks 20 of 20.
+TEST_F(EnsembleExport, MusLawWithThePlansDoubleSupportWalksAHeavierPlantWithItsAnkleClipped) {
+  const Solved& s = ensembleOptimum();
+  ASSERT_TRUE(s.solution.result.success) << s.solution.result.status;
+  Scenario heavier;
+  heavier.controller = "mu_sliding_mode_plan_dsp";
+  heavier.parameter_errors = {0.2, 0.2, 0, 0};
+  heavier.rules.cop_limit = CopLimit::kFail;
+  const WalkResult strict = runScenario(s.nominal, s.reference, heavier).walk;
+  heavier.rules.cop_limit = CopLimit::kSaturate;
+  const WalkResult clipped = runScenario(s.nominal, s.reference, heavier).walk;
+  RecordProperty("strict", fmt::format("{} steps: {}", strict.steps_completed, strict.failure));
+  EXPECT_EQ(clipped.steps_completed, 20) << clipped.failure;
+}
+
 /// Issue 33's check of the design itself, between the collocation points: every model of the
 /// ensemble, exported at 1 kHz from the scheme's own polynomials, pushes on the ground with each
 /// tip in contact inside its friction cone, keeps its stance foot's centre of pressure on the
