@@ -52,9 +52,10 @@
 /// the ensemble optimum (configs/ocp/mu2004_walk_ensemble.yaml) under Mu's case 2, T^ pressed the
 /// trailing tip to the edge of its friction cone 1 ms into the DSP and it slid (1 of 20 steps);
 /// with the plan's torques cases 2 and 3 walk 20 of 20 (results/mu_cases). The bound assumes the
-/// plan fits the plant (Mu's setting: the error is the controller's); a plant 20 % heavier than
-/// the plan's then falls in step 2 by a foot rotation, which the law as written walks
-/// (results/ensemble_walks).
+/// plan fits the plant (Mu's setting: the error is the controller's); on a plant 20 % heavier
+/// than the plan's the ankle torque it commands then puts the CoP beyond the foot in step 2 (a
+/// fall under the strict CoP rule, results/ensemble_walks, which the law as written walks; with
+/// the ankle torque clipped to the foot it walks 20 steps, results/ensemble_walks_clipped).
 #include <vector>
 
 #include "dynamics/model.hpp"
