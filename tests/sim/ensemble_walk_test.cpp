@@ -30,10 +30,10 @@
 #include "ocp/guess/initial_guess.hpp"
 #include "ocp/solve/gait_solve.hpp"
 #include "sim/contact/ground_config.hpp"
-#include "sim/controllers/mu_sliding_mode.hpp"
 #include "sim/controllers/tracking_controller.hpp"
 #include "sim/controllers/tracking_law.hpp"
 #include "sim/scenario/scenario.hpp"
+#include "sim/scenario/scenario_settings.hpp"
 #include "sim/walk/walk.hpp"
 
 namespace gaitopt::sim {
@@ -85,6 +85,15 @@ WalkResult walkOn(const Solved& s, const Plant& p, const TrackingController& con
 /// Under computed torque on the nominal model, the closed loop's gains (kp 400, kd 40).
 WalkResult walkOn(const Solved& s, const Plant& p) {
   return walkOn(s, p, TrackingController(s.nominal, std::make_shared<PdLaw>(400, 40)));
+}
+
+/// A walk of `settings` under `controller` as `gaitopt simulate` builds it (makeScenario: Mu's
+/// cases with Table 4.2's gains and the bound the controller is told), the CoP rule `cop`.
+WalkResult walkAsSimulate(const Solved& s, ScenarioSettings settings, const char* controller,
+                          CopLimit cop) {
+  settings.controller = controller;
+  settings.rules.cop_limit = cop;
+  return runScenario(s.nominal, s.reference, makeScenario(settings)).walk;
 }
 
 /// The two optima, each solved once per process on first use.
@@ -162,26 +171,20 @@ TEST_F(EnsembleExport, ThePlansDoubleSupportFeedForwardWalksMusCasesTwoAndThree)
 TEST_F(EnsembleExport, MusLawWithThePlansDoubleSupportWalksMusCasesAndTheLcpGround) {
   const Solved& s = ensembleOptimum();
   ASSERT_TRUE(s.solution.result.success) << s.solution.result.status;
-  const auto walkWith = [&](Scenario scenario, const char* controller) {
-    scenario.controller = controller;
-    scenario.rules.cop_limit = CopLimit::kFail;
-    return runScenario(s.nominal, s.reference, scenario).walk;
-  };
-  std::vector<std::pair<std::string, Scenario>> scenarios;
+  std::vector<std::pair<std::string, ScenarioSettings>> scenarios;
   for (const int mu_case : {2, 3}) {
-    Scenario c;
-    c.parameter_errors = dynamics::muUncertaintyCase(mu_case);
-    c.errors_on_controller = true;
-    c.uncertainty_bound = c.parameter_errors;
-    c.mu_gains = muTable42(mu_case);
+    ScenarioSettings c;
+    c.uncertainty_case = mu_case;
+    c.uncertainty_on = "controller";
     scenarios.emplace_back(fmt::format("case {}", mu_case), c);
   }
-  Scenario lcp;
-  lcp.ground = loadGround(std::string(GAITOPT_SOURCE_DIR) + "/configs/grounds/lcp.yaml");
+  ScenarioSettings lcp;
+  lcp.ground = "lcp";
   scenarios.emplace_back("LCP ground", lcp);
-  for (const auto& [name, scenario] : scenarios) {
-    const WalkResult model = walkWith(scenario, "mu_sliding_mode");
-    const WalkResult plan = walkWith(scenario, "mu_sliding_mode_plan_dsp");
+  for (const auto& [name, settings] : scenarios) {
+    const WalkResult model = walkAsSimulate(s, settings, "mu_sliding_mode", CopLimit::kFail);
+    const WalkResult plan =
+        walkAsSimulate(s, settings, "mu_sliding_mode_plan_dsp", CopLimit::kFail);
     RecordProperty(name + " model_feed_forward",
                    fmt::format("{} steps: {}", model.steps_completed, model.failure));
     EXPECT_LT(model.steps_completed, 20) << name;
@@ -197,13 +200,11 @@ TEST_F(EnsembleExport, MusLawWithThePlansDoubleSupportWalksMusCasesAndTheLcpGrou
 TEST_F(EnsembleExport, MusLawWithThePlansDoubleSupportWalksAHeavierPlantWithItsAnkleClipped) {
   const Solved& s = ensembleOptimum();
   ASSERT_TRUE(s.solution.result.success) << s.solution.result.status;
-  Scenario heavier;
-  heavier.controller = "mu_sliding_mode_plan_dsp";
-  heavier.parameter_errors = {0.2, 0.2, 0, 0};
-  heavier.rules.cop_limit = CopLimit::kFail;
-  const WalkResult strict = runScenario(s.nominal, s.reference, heavier).walk;
-  heavier.rules.cop_limit = CopLimit::kSaturate;
-  const WalkResult clipped = runScenario(s.nominal, s.reference, heavier).walk;
+  ScenarioSettings heavier;
+  heavier.mass_error = 0.2;
+  const char* law = "mu_sliding_mode_plan_dsp";
+  const WalkResult strict = walkAsSimulate(s, heavier, law, CopLimit::kFail);
+  const WalkResult clipped = walkAsSimulate(s, heavier, law, CopLimit::kSaturate);
   RecordProperty("strict", fmt::format("{} steps: {}", strict.steps_completed, strict.failure));
   EXPECT_EQ(clipped.steps_completed, 20) << clipped.failure;
 }
