@@ -3,10 +3,9 @@
 // the five-link walk with an impactless touchdown, with a ZMP margin and with the DSP in reduced
 // coordinates, and the shapes of ocp/shape/gait_shape.hpp: two steps in one period, and model
 // variants on fixed and on free durations): outputs fully written, derivatives against the set's
-// own central differences, the same sparsity at three random points (two in unoptimised
-// sanitizer builds; tests/support/set_contract.hpp). Each set is its own test, named config_set,
-// so a failure names the set. A last test shows that the contract catches one perturbed Jacobian
-// entry.
+// own central differences, the same sparsity at three random points
+// (tests/support/set_contract.hpp). Each set is its own test, named config_set, so a failure
+// names the set. A last test shows that the contract catches one perturbed Jacobian entry.
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
@@ -151,18 +150,11 @@ std::string joined(const std::vector<std::string>& broken) {
 
 class SetContract : public ::testing::TestWithParam<SetCase> {};
 
-#ifdef NDEBUG
-constexpr unsigned kRandomPoints = 3;
-#else  // the sanitizer build: its three shards were its longest tests (72 s each); two points
-       // still compare the sparsity, and the Release build checks the third
-constexpr unsigned kRandomPoints = 2;
-#endif
-
 TEST_P(SetContract, WritesEveryOutputHasExactDerivativesAndAFixedSparsity) {
   const SetCase& c = GetParam();
   const Nlp& nlp = shippedProblems().at(c.config)->problem.nlp;
   test::RecordedPattern pattern;
-  for (unsigned seed = 1; seed <= kRandomPoints; ++seed) {
+  for (unsigned seed = 1; seed <= 3; ++seed) {
     const Eigen::VectorXd x = randomPoint(nlp, seed);
     const auto broken =
         c.cost ? test::checkCostTerm(*nlp.costTerms()[c.index], x, 0.7, pattern)
