@@ -105,7 +105,8 @@ def write_tables(solves, walks, out):
     csv_path, md_path = os.path.join(out, "summary.csv"), os.path.join(out, "summary.md")
     with style.replacing(csv_path) as tmp, open(tmp, "w", encoding="utf-8") as f:
         f.write(",".join(["gait", "converged", "cost", "strike_normal_velocity_m_s",
-                          "impulse_trailing_cone_ratio", *[f"{c.replace(' ', '_')}_{n}" for c, n in columns]])
+                          "impulse_trailing_cone_ratio",
+                          *[f"{c.replace(' ', '_')}_{n}" for c, n in columns]])
                 + "\n")
         for gait, s in solves:
             row = [gait, str(int(s["converged"])), f"{s['cost']:.6g}",
