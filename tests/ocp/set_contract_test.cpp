@@ -236,38 +236,57 @@ TEST(SetContractCoverage, EverySetOfTheGaitProblemIsChecked) {
     EXPECT_TRUE(checked.count(name)) << name << " is in no problem of the contract";
 }
 
-/// A set whose Jacobian has one entry off by `delta`: what a slip in a hand-written derivative
-/// looks like.
-class PerturbedJacobian : public ConstraintSet {
+/// The slips a hand-written derivative makes: an entry off by a small amount, or an entry left
+/// out (a whole Jacobian column: the set reads a variable its pattern does not name).
+enum class Slip {
+  kJacobianEntryOff,
+  kJacobianColumnLeftOut,
+  kHessianEntryOff,
+  kHessianEntryLeftOut
+};
+
+/// A set with one slip in its derivatives at entry `entry` of its output sequence.
+class SlippedSet : public ConstraintSet {
  public:
-  PerturbedJacobian(const ConstraintSet& set, size_t entry, double delta)
+  SlippedSet(const ConstraintSet& set, Slip slip, size_t entry)
       : ConstraintSet(set.name(), set.rows(), set.phase()),
         set_(&set),
-        entry_(entry),
-        delta_(delta) {}
+        slip_(slip),
+        entry_(entry) {}
   Eigen::VectorXd lowerBounds() const override { return set_->lowerBounds(); }
   Eigen::VectorXd upperBounds() const override { return set_->upperBounds(); }
   void values(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> g) const override {
     set_->values(x, g);
   }
   void jacobian(const Eigen::VectorXd& x, Triplets& out) const override {
-    const size_t first = out.size();
-    set_->jacobian(x, out);
-    auto& e = out[first + entry_];
-    e = {e.row(), e.col(), e.value() + delta_};
+    Triplets t;
+    set_->jacobian(x, t);
+    if (slip_ == Slip::kJacobianEntryOff)
+      t[entry_] = {t[entry_].row(), t[entry_].col(), t[entry_].value() + 1e-3};
+    const int column = t[entry_].col();
+    for (const auto& e : t)
+      if (slip_ != Slip::kJacobianColumnLeftOut || e.col() != column) out.push_back(e);
   }
   void hessian(const Eigen::VectorXd& x, const Eigen::VectorXd& lambda,
                Triplets& out) const override {
-    set_->hessian(x, lambda, out);
+    Triplets t;
+    set_->hessian(x, lambda, t);
+    if (slip_ == Slip::kHessianEntryOff)
+      t[entry_] = {t[entry_].row(), t[entry_].col(), t[entry_].value() + 1e-2};
+    if (slip_ == Slip::kHessianEntryLeftOut) t.erase(t.begin() + static_cast<long>(entry_));
+    out.insert(out.end(), t.begin(), t.end());
   }
 
  private:
   const ConstraintSet* set_;
+  Slip slip_;
   size_t entry_;
-  double delta_;
 };
 
-TEST(SetContractSelfTest, OnePerturbedJacobianEntryBreaksTheContract) {
+/// Each slip in the default problem's SSP dynamics breaks the contract, naming the matrix it is
+/// in: the contract differences only the columns a set's pattern names, so a left-out column must
+/// be found by its probe of the others (set_contract.hpp, columnsToDifference).
+TEST(SetContractSelfTest, EverySlipInADerivativeBreaksTheContract) {
   const Nlp& nlp = shippedProblems().at("mu2004_walk")->problem.nlp;
   const auto& sets = nlp.constraintSets();
   const auto dynamics = std::find_if(sets.begin(), sets.end(),
@@ -275,14 +294,21 @@ TEST(SetContractSelfTest, OnePerturbedJacobianEntryBreaksTheContract) {
   ASSERT_NE(dynamics, sets.end());
   const Eigen::VectorXd x = randomPoint(nlp, 1);
   const Eigen::VectorXd lambda = randomMultipliers((*dynamics)->rows(), 1);
-  test::RecordedPattern intact, perturbed;
+  test::RecordedPattern intact;
   EXPECT_TRUE(test::checkConstraintSet(**dynamics, x, lambda, intact).empty());
-  // Entry 7 of the sequence off by 1e-3 (the residual's entries are O(1-100)).
-  const auto broken =
-      test::checkConstraintSet(PerturbedJacobian(**dynamics, 7, 1e-3), x, lambda, perturbed);
-  ASSERT_EQ(broken.size(), 1u) << joined(broken);
-  EXPECT_NE(broken.front().find("Jacobian"), std::string::npos) << broken.front();
-  std::cout << "perturbed ssp_dynamics:" << joined(broken) << '\n';
+  // Entry 7 of each sequence: a residual entry of O(1-100) off by 1e-3, a Hessian one by 1e-2.
+  const std::vector<std::pair<Slip, std::string>> slips{{Slip::kJacobianEntryOff, "Jacobian"},
+                                                        {Slip::kJacobianColumnLeftOut, "Jacobian"},
+                                                        {Slip::kHessianEntryOff, "Hessian"},
+                                                        {Slip::kHessianEntryLeftOut, "Hessian"}};
+  for (const auto& [slip, matrix] : slips) {
+    test::RecordedPattern pattern;
+    const auto broken =
+        test::checkConstraintSet(SlippedSet(**dynamics, slip, 7), x, lambda, pattern);
+    ASSERT_FALSE(broken.empty()) << matrix << " slip " << static_cast<int>(slip);
+    EXPECT_NE(broken.front().find(matrix), std::string::npos) << broken.front();
+    std::cout << "slip " << static_cast<int>(slip) << " in ssp_dynamics:" << joined(broken) << '\n';
+  }
 }
 
 }  // namespace
