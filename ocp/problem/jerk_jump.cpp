@@ -11,7 +11,7 @@ namespace {
 // (-3 a0 + 4 am - a1) / h at its start and (a0 - 4 am + 3 a1) / h at its end; the trapezoidal
 // line (a1 - a0) / h at both. The stencil of node k is the right segment's start slope minus the
 // left one's end slope.
-AccelerationStencil nodeStencil(const PhaseLayout& layout, int node) {
+PointStencil nodeStencil(const PhaseLayout& layout, int node) {
   const double left = layout.segmentFraction(node - 1);
   const double right = layout.segmentFraction(node);
   if (layout.scheme == Scheme::kHermiteSimpson) {
@@ -22,8 +22,8 @@ AccelerationStencil nodeStencil(const PhaseLayout& layout, int node) {
   return {{node - 1, node, node + 1}, {1 / left, -1 / left - 1 / right, 1 / right}};
 }
 
-std::vector<AccelerationStencil> interiorNodes(const PhaseLayout& layout) {
-  std::vector<AccelerationStencil> stencils;
+std::vector<PointStencil> interiorNodes(const PhaseLayout& layout) {
+  std::vector<PointStencil> stencils;
   for (int node = 1; node < layout.segments; ++node) stencils.push_back(nodeStencil(layout, node));
   return stencils;
 }
@@ -31,6 +31,7 @@ std::vector<AccelerationStencil> interiorNodes(const PhaseLayout& layout) {
 }  // namespace
 
 JerkJump::JerkJump(std::string name, const Phase& phase, double jump)
-    : AccelerationStencilBound(std::move(name), phase, jump, interiorNodes(phase.layout)) {}
+    : PointStencilBound(std::move(name), phase, jump, interiorNodes(phase.layout),
+                        &PointLayout::a) {}
 
 }  // namespace gaitopt::ocp

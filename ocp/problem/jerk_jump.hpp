@@ -16,19 +16,19 @@
 /// bounds the jerk itself, which also costs where the jerk is large but smooth.
 #include <string>
 
-#include "ocp/problem/acceleration_stencil_bound.hpp"
+#include "ocp/problem/point_stencil_bound.hpp"
 
 namespace gaitopt::ocp {
 
 /// One stencil per node strictly inside the phase, over the points of the two segments that
 /// meet there, with allowance 1.
-class JerkJump : public AccelerationStencilBound {
+class JerkJump : public PointStencilBound {
  public:
   JerkJump(std::string name, const Phase& phase, double jump);
   /// Rows 2 n (k - 1) .. 2 n k - 1 bound the jump at node k (1 .. segments - 1), the point in the
   /// middle of its stencil.
   GridNode nodeOf(int row) const override {
-    const AccelerationStencil& s = stencil(stencilOf(row));
+    const PointStencil& s = stencil(stencilOf(row));
     return {"point", s.points[s.points.size() / 2], entryOf(row)};
   }
 };

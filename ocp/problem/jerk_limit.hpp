@@ -13,12 +13,12 @@
 /// 0.3 % error of the peak rate.
 #include <string>
 
-#include "ocp/problem/acceleration_stencil_bound.hpp"
+#include "ocp/problem/point_stencil_bound.hpp"
 
 namespace gaitopt::ocp {
 
 /// The stencils {a_p, a_{p+1}} with weights (-1, 1) and allowance t_{p+1} - t_p per unit T.
-class JerkLimit : public AccelerationStencilBound {
+class JerkLimit : public PointStencilBound {
  public:
   JerkLimit(std::string name, const Phase& phase, double jerk);
   /// Rows 2 n p .. 2 n (p + 1) - 1 bound the change from point p to point p + 1.

@@ -98,6 +98,7 @@ const std::vector<std::string> kConstraintKeys{"torque_limits",
                                                "dsp_reduced_coordinates",
                                                "jerk_limit",
                                                "jerk_jump_limit",
+                                               "torque_rate_limit",
                                                "interior_contact",
                                                "max_knee_flexion",
                                                "min_trailing_knee_flexion"};
@@ -151,6 +152,7 @@ void readConstraints(const YamlReader& r, OcpConfig& c) {
   c.rate_limit = r.numberOr("rate_limit", 0.0, config::inRange(0, 100, "[rad/s]"));
   c.jerk_limit = r.numberOr("jerk_limit", 0.0, config::inRange(0, 1e7, "[rad/s^3]"));
   c.jerk_jump_limit = r.numberOr("jerk_jump_limit", 0.0, config::inRange(0, 1e7, "[rad/s^3]"));
+  c.torque_rate_limit = r.numberOr("torque_rate_limit", 0.0, config::inRange(0, 1e7, "[N m/s]"));
   c.joint_velocity_limits = r.booleanOr("joint_velocity_limits", false);
   c.swing_descends = r.booleanOr("swing_descends", true);
   c.trailing_lifts = r.booleanOr("trailing_lifts", true);

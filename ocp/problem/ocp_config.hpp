@@ -112,6 +112,9 @@ struct OcpConfig {
   /// |ddtheta_{p+1} - ddtheta_p| <= J (t_{p+1} - t_p) between consecutive points [rad/s^3]
   /// (jerk_limit.hpp; 0: off)
   double jerk_limit = 0;
+  /// |u_{p+1} - u_p| <= R (t_{p+1} - t_p) between consecutive points [N m/s]
+  /// (torque_rate_limit.hpp; 0: off)
+  double torque_rate_limit = 0;
   /// |jerk_right - jerk_left| <= J where two segments of a phase meet, the jerk being the slope
   /// of the scheme's acceleration polynomial [rad/s^3] (jerk_jump.hpp; 0: off)
   double jerk_jump_limit = 0;

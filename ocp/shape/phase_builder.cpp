@@ -14,6 +14,7 @@
 #include "ocp/problem/jerk_jump.hpp"
 #include "ocp/problem/jerk_limit.hpp"
 #include "ocp/problem/path_functions.hpp"
+#include "ocp/problem/torque_rate_limit.hpp"
 #include "ocp/transcription/biped_dynamics.hpp"
 
 namespace gaitopt::ocp {
@@ -147,6 +148,9 @@ void addPhaseSets(Nlp& nlp, const dynamics::Model& model, const OcpConfig& c, co
   addPathConstraint(nlp, phase, "dynamics", std::make_shared<BipedDynamics>(model, phase.point));
   if (c.jerk_limit > 0)
     nlp.addConstraint(std::make_unique<JerkLimit>(phase.name() + "_jerk", phase, c.jerk_limit));
+  if (c.torque_rate_limit > 0)
+    nlp.addConstraint(std::make_unique<TorqueRateLimit>(phase.name() + "_torque_rate", phase,
+                                                        c.torque_rate_limit));
   if (c.jerk_jump_limit > 0 && phase.layout.segments > 1)
     nlp.addConstraint(
         std::make_unique<JerkJump>(phase.name() + "_jerk_jump", phase, c.jerk_jump_limit));

@@ -1,10 +1,8 @@
 // Continuation on the hard shipped problems (ocp/solve/continuation.hpp): the gait designed to be
 // walked (configs/ocp/mu2004_walk_robust.yaml) converges on meshes where a solve from the
 // polynomial gait stops at the iteration limit (results/convergence.csv: 24 and 36 SSP segments),
-// to optima that meet its margins and strike and agree across meshes; the absolute-work problem
-// (configs/ocp/mu2004_walk_work.yaml) carries its shipped mesh's optimum to another mesh, below
-// the optimum found there from the polynomial gait alone; and a stage that keeps failing halves
-// the step before the continuation gives up.
+// to optima that meet its margins and strike and agree across meshes; and a stage that keeps
+// failing halves the step before the continuation gives up.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -67,32 +65,6 @@ TEST(RobustContinuation, ConvergesAt24And36SspSegmentsToOneOptimum) {
   const double a = coarse.solution.result.cost, b = fine.solution.result.cost;
   RecordProperty("costs_24_36", fmt::format("{:.6f} {:.6f}", a, b));
   EXPECT_LT(std::abs(a - b), 0.02 * std::min(a, b));
-}
-
-TEST(WorkContinuation, TheFinestMeshLandsOnTheShippedMeshsOptimum) {
-  // Absolute work has local optima far apart in cost: from the polynomial gait alone the mesh of
-  // 36 SSP segments finds one 11 % above the one the continuation reaches (5.570 against 5.020,
-  // measured). Its config reaches the shipped mesh (30 + 6) first and re-solves that optimum on
-  // the configured mesh, so the two meshes' optima differ by their transcription alone: 1.4 %,
-  // the mesh resolving a nonsmooth cost (results/convergence.md).
-  const ShippedAt shipped("mu2004_walk_work", 30), fine("mu2004_walk_work", 36);
-  ASSERT_TRUE(shipped.solution.result.success) << shipped.solution.result.status;
-  ASSERT_TRUE(fine.solution.result.success) << fine.solution.result.status;
-  const auto& path = fine.solution.continuation;
-  ASSERT_EQ(path.size(), 2u);  // the shipped mesh, then the configured one
-  EXPECT_EQ(path.front().segments, (std::vector<int>{30, 6}));
-  EXPECT_EQ(path.back().segments, (std::vector<int>{36, 6}));
-  const double a = shipped.solution.result.cost, b = fine.solution.result.cost;
-  RecordProperty("costs_30_36", fmt::format("{:.6f} {:.6f}", a, b));
-  EXPECT_LT(std::abs(a - b), 0.02 * a);
-
-  OcpConfig direct = fine.config;
-  direct.continuation = ContinuationOptions{};
-  const GaitSolution alone = solveGait(fine.model, direct, initialGuess(fine.model, direct));
-  ASSERT_TRUE(alone.result.success) << alone.result.status;
-  RecordProperty("cost_36_from_the_polynomial_gait_alone",
-                 fmt::format("{:.6f}", alone.result.cost));
-  EXPECT_LT(b, 0.95 * alone.result.cost);
 }
 
 TEST(Continuation, AFailingStageHalvesTheStepBeforeTheContinuationGivesUp) {

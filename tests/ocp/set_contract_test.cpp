@@ -74,11 +74,12 @@ const std::map<std::string, std::unique_ptr<Shipped>>& shippedProblems() {
     zmp_margin.zmp_margin = 0.03;
     all.emplace("mu2004_walk_zmp_margin", coarseProblem(zmp_margin));
     // The DSP in reduced coordinates (dsp_chart.hpp), with fixed and with free durations, and
-    // the jerk-jump bound (jerk_jump.hpp) on both.
+    // the jerk-jump and torque-rate bounds (jerk_jump.hpp, torque_rate_limit.hpp) on both.
     for (const std::string name : {"mu2004_walk", "mu2004_walk_cot"}) {
       OcpConfig reduced = loadOcpConfig((dir / (name + ".yaml")).string());
       reduced.dsp_reduced_coordinates = true;
       reduced.jerk_jump_limit = 1e4;  // its T column is met on the free durations
+      reduced.torque_rate_limit = 1e3;
       all.emplace(name + "_reduced_dsp", coarseProblem(reduced));
     }
     // Two steps in one period: the second step's sets and the relabelling between the steps.
@@ -189,6 +190,8 @@ TEST(SetContractCoverage, EverySetOfTheGaitProblemIsChecked) {
                            "dsp_jerk",
                            "ssp_jerk_jump",
                            "dsp_jerk_jump",
+                           "ssp_torque_rate",
+                           "dsp_torque_rate",
                            "dsp_pin_1",
                            "dsp_dynamics",
                            "dsp_knees",
