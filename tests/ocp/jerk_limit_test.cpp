@@ -12,6 +12,7 @@
 #include "ocp/guess/initial_guess.hpp"
 #include "ocp/problem/gait_problem.hpp"
 #include "ocp/solve/ipopt_adapter.hpp"
+#include "support/steepest_change.hpp"
 
 namespace gaitopt::ocp {
 namespace {
@@ -54,14 +55,7 @@ TEST(JerkLimit, BoundsThePointsAndMakesTheExportsDifferencesMeetItsRates) {
   const JerkSolve s = solveDefaultJerk(model, kJerk);
   ASSERT_TRUE(s.result.success) << s.result.status;
   const gaits::Trajectory points = reconstruct(s.problem, model, s.result.x);
-  double steepest = 0;
-  for (size_t i = 1; i < points.knots().size(); ++i) {
-    const auto &a = points.knots()[i - 1], &b = points.knots()[i];
-    if (a.phase == b.phase && b.t > a.t)
-      steepest = std::max(steepest,
-                          (VecD(b.ddtheta) - VecD(a.ddtheta)).cwiseAbs().maxCoeff() / (b.t - a.t));
-  }
-  EXPECT_LT(steepest, kJerk * (1 + 1e-6));
+  EXPECT_LT(test::steepestChange(points, &gaits::Knot::ddtheta), kJerk * (1 + 1e-6));
   const double h = 1 / kRate;
   const double bound = h * h * kJerk / 3;
   EXPECT_LT(centralDifferenceError(reconstructDense(s.problem, model, s.result.x, kRate)), bound);

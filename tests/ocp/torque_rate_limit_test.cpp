@@ -15,6 +15,7 @@
 #include "ocp/guess/initial_guess.hpp"
 #include "ocp/solve/gait_solve.hpp"
 #include "support/solved_config.hpp"
+#include "support/steepest_change.hpp"
 
 namespace gaitopt::ocp {
 namespace {
@@ -36,18 +37,6 @@ struct WorkAt {
         solution(solveGait(model, config, initialGuess(model, config))) {}
 };
 
-/// The largest |tau(t_{i+1}) - tau(t_i)| / (t_{i+1} - t_i) over consecutive knots of one phase
-/// [N m/s].
-double steepestTorque(const gaits::Trajectory& t) {
-  const auto& k = t.knots();
-  double steepest = 0;
-  for (size_t i = 1; i < k.size(); ++i)
-    if (k[i - 1].phase == k[i].phase && k[i].t > k[i - 1].t)
-      steepest = std::max(steepest,
-                          (k[i].tau - k[i - 1].tau).cwiseAbs().maxCoeff() / (k[i].t - k[i - 1].t));
-  return steepest;
-}
-
 TEST(TorqueRateLimit, TheWorkOptimumsTorquesChangeNoFasterThanTheBoundOnItsExport) {
   const WorkAt bounded(30, kRate), free(30, 0);
   for (const WorkAt* w : {&bounded, &free})
@@ -58,11 +47,11 @@ TEST(TorqueRateLimit, TheWorkOptimumsTorquesChangeNoFasterThanTheBoundOnItsExpor
   const auto dense = [](const WorkAt& w) {
     return reconstructDense(w.solution.problem, w.model, w.solution.result.x, 1000);
   };
-  EXPECT_LT(steepestTorque(points(bounded)), kRate * (1 + 1e-6));
-  const double exported = steepestTorque(dense(bounded));
+  EXPECT_LT(test::steepestChange(points(bounded), &gaits::Knot::tau), kRate * (1 + 1e-6));
+  const double exported = test::steepestChange(dense(bounded), &gaits::Knot::tau);
   RecordProperty("export_torque_rate_bounded", fmt::format("{:.1f}", exported));
   EXPECT_LT(exported, 2 * kRate);
-  const double impulsive = steepestTorque(dense(free));
+  const double impulsive = test::steepestChange(dense(free), &gaits::Knot::tau);
   RecordProperty("export_torque_rate_unbounded", fmt::format("{:.1f}", impulsive));
   EXPECT_GT(impulsive, 10 * kRate);                                    // 2.0e4 N m/s measured
   EXPECT_GT(bounded.solution.result.cost, free.solution.result.cost);  // the bound costs work
