@@ -202,7 +202,8 @@ class Adapter : public Ipopt::TNLP {
     // (its convergence check needs the dual infeasibility there): the iterate of the next
     // intermediate_callback.
     iterate_ = vec(x, n);
-    jac_.accumulate(nlp_.jacobianTriplets(iterate_), values);
+    nlp_.jacobianTriplets(iterate_, jac_values_);
+    jac_.accumulate(jac_values_, values);
     return true;
   }
 
@@ -210,7 +211,8 @@ class Adapter : public Ipopt::TNLP {
               bool, Index, Index* rows, Index* cols, Number* values) override {
     const CallbackTimer t(result_.callback_time_s);
     if (values == nullptr) return fillStructure(hess_, rows, cols);
-    hess_.accumulate(nlp_.hessianTriplets(vec(x, n), obj_factor, vec(lambda, m)), values);
+    nlp_.hessianTriplets(vec(x, n), obj_factor, vec(lambda, m), hess_values_);
+    hess_.accumulate(hess_values_, values);
     return true;
   }
 
@@ -271,6 +273,7 @@ class Adapter : public Ipopt::TNLP {
   Eigen::VectorXd iterate_;  // the point of the last Jacobian: the current iterate
   Eigen::VectorXd gl_, gu_;  // constraint bounds, assembled once
   SparsityPattern jac_, hess_;
+  Triplets jac_values_, hess_values_;  // reused at every evaluation (Nlp::jacobianTriplets)
 };
 
 double maxViolation(const Nlp& nlp, const Eigen::VectorXd& x) {

@@ -129,27 +129,39 @@ Eigen::VectorXd Nlp::constraintValues(const Eigen::VectorXd& x) const {
   return g;
 }
 
-Triplets Nlp::jacobianTriplets(const Eigen::VectorXd& x) const {
-  Triplets all, local;
+void Nlp::jacobianTriplets(const Eigen::VectorXd& x, Triplets& out) const {
+  out.clear();
   int row = 0;
   for (const auto& s : sets_) {
-    local.clear();
-    s->jacobian(x, local);
-    for (const auto& e : local) all.emplace_back(row + e.row(), e.col(), e.value());
+    const size_t first = out.size();
+    s->jacobian(x, out);  // the set's own rows, moved to its place below
+    for (size_t k = first; k < out.size(); ++k)
+      out[k] = Eigen::Triplet<double>(row + out[k].row(), out[k].col(), out[k].value());
     row += s->rows();
   }
+}
+
+Triplets Nlp::jacobianTriplets(const Eigen::VectorXd& x) const {
+  Triplets all;
+  jacobianTriplets(x, all);
   return all;
+}
+
+void Nlp::hessianTriplets(const Eigen::VectorXd& x, double obj_factor,
+                          const Eigen::VectorXd& lambda, Triplets& out) const {
+  out.clear();
+  for (const auto& c : costs_) c->hessian(x, obj_factor, out);
+  int row = 0;
+  for (const auto& s : sets_) {
+    s->hessian(x, lambda.segment(row, s->rows()), out);
+    row += s->rows();
+  }
 }
 
 Triplets Nlp::hessianTriplets(const Eigen::VectorXd& x, double obj_factor,
                               const Eigen::VectorXd& lambda) const {
   Triplets all;
-  for (const auto& c : costs_) c->hessian(x, obj_factor, all);
-  int row = 0;
-  for (const auto& s : sets_) {
-    s->hessian(x, lambda.segment(row, s->rows()), all);
-    row += s->rows();
-  }
+  hessianTriplets(x, obj_factor, lambda, all);
   return all;
 }
 

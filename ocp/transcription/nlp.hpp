@@ -167,9 +167,15 @@ class Nlp {
   double cost(const Eigen::VectorXd& x) const;
   Eigen::VectorXd costGradient(const Eigen::VectorXd& x) const;
   Eigen::VectorXd constraintValues(const Eigen::VectorXd& x) const;
-  /// Jacobian triplets with global rows, in a fixed sequence.
+  /// Jacobian triplets with global rows, in a fixed sequence, written over `out`: a solver
+  /// passes the same buffer at every iterate, so its storage is allocated once, not faulted in
+  /// again at each evaluation.
+  void jacobianTriplets(const Eigen::VectorXd& x, Triplets& out) const;
   Triplets jacobianTriplets(const Eigen::VectorXd& x) const;
-  /// Lower-triangle Hessian triplets of obj_factor * cost + lambda^T g, in a fixed sequence.
+  /// Lower-triangle Hessian triplets of obj_factor * cost + lambda^T g, in a fixed sequence,
+  /// written over `out` (as jacobianTriplets).
+  void hessianTriplets(const Eigen::VectorXd& x, double obj_factor, const Eigen::VectorXd& lambda,
+                       Triplets& out) const;
   Triplets hessianTriplets(const Eigen::VectorXd& x, double obj_factor,
                            const Eigen::VectorXd& lambda) const;
 
