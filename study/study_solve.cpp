@@ -110,6 +110,7 @@ constexpr SummaryColumn kSummaryColumns[] = {
     {"max_swing_knee_flexion_deg", "/posture_deg/max_swing_knee_flexion"},
     {"min_normal_force_between_N", "/between_nodes/min_normal_force"},
     {"min_foot_cop_margin_between_m", "/between_nodes/min_foot_cop_margin"},
+    {"max_friction_ratio_between", "/between_nodes/max_friction_ratio"},
     {"max_dsp_tip_drift_between_m", "/between_nodes/max_dsp_tip_drift"},
     {"max_rate_mismatch_between", "/between_nodes/max_rate_mismatch"},
     {"max_acceleration_mismatch_between", "/between_nodes/max_acceleration_mismatch"},

@@ -51,7 +51,8 @@ assert int(row["iterations"]) == hand["iterations"], (row["iterations"], hand["i
 # The export's checks between the points (summary.json between_nodes) are columns too.
 for column, key in [("max_dsp_tip_drift_between_m", "max_dsp_tip_drift"),
                     ("max_rate_mismatch_between", "max_rate_mismatch"),
-                    ("max_acceleration_mismatch_between", "max_acceleration_mismatch")]:
+                    ("max_acceleration_mismatch_between", "max_acceleration_mismatch"),
+                    ("max_friction_ratio_between", "max_friction_ratio")]:
     assert abs(float(row[column]) - hand["between_nodes"][key]) <= 1e-9, (column, row[column])
 # The recorded --set values are the study's: the point's folder is an ordinary gait folder.
 point = json.load(open(f"{out}/runs/mu2004_walk_ssp_segments=24_solver=mumps/summary.json"))
