@@ -78,11 +78,9 @@ TEST(DesignedStrikeConfig, BadRangesAndUnknownKeysAreErrorsNamingFileAndKey) {
   EXPECT_EQ(loadEdited(nv, "normal_velocity: [0.1, 0.1]"), "");  // an equality is a range
 }
 
-/// The strike config solved as it ships, through its continuation (solveGait): solved directly
-/// from the polynomial guess its path is left to the rounding of the linear solves (MUMPS
-/// converged so, gaitopt's solver stops at the iteration limit; the continuation converges to
-/// the same optimum with either, results/convergence.csv). In place: the problem's sets point to
-/// the model.
+/// The strike config solved as it ships, through its continuation (solveGait), which both
+/// linear solvers follow to the same optimum (results/linear_solver_compare/solves.csv). In
+/// place: the problem's sets point to the model.
 struct SolvedStrike {
   SolvedStrike()
       : config(loadOcpConfig(kStrikeConfig)),
