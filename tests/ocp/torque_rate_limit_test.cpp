@@ -17,9 +17,9 @@
 
 #include <fmt/format.h>
 
-#include "gaits/export/export_checks.hpp"
 #include "ocp/guess/initial_guess.hpp"
 #include "ocp/solve/gait_solve.hpp"
+#include "support/exact_export.hpp"
 #include "support/solved_config.hpp"
 #include "support/steepest_change.hpp"
 
@@ -79,15 +79,7 @@ TEST(TorqueRateLimit, TheWorkOptimumsTorquesChangeNoFasterThanTheBoundOnItsExpor
 TEST(TorqueRateLimit, TheWorkOptimumsExportIsExactBetweenThePoints) {
   const WorkAt& w = shipped();
   ASSERT_TRUE(w.solution.result.success) << w.solution.result.status;
-  const gaits::Trajectory dense = w.dense();
-  const double drift = gaits::maxDspTipDrift(dense, w.model);
-  const double rates = gaits::maxRateMismatch(dense);
-  const double accelerations = gaits::maxAccelerationMismatch(dense);
-  RecordProperty("drift_rates_accelerations",
-                 fmt::format("{:.2e} {:.4f} {:.4f}", drift, rates, accelerations));
-  EXPECT_LT(drift, 1e-6);  // issue 34's bounds
-  EXPECT_LT(rates, 2e-3);
-  EXPECT_LT(accelerations, 1e-2);
+  test::expectExactBetweenThePoints(w.dense(), w.model);
 }
 
 TEST(TorqueRateLimit, TheWorkOptimaAt24And36SspSegmentsAgreeWithinTwoPercent) {
