@@ -51,6 +51,15 @@ ocp::GaitResultOptions resultOptions(const OptimizeOptions& o) {
   throw io::CommandError(infeasible ? io::kExitInfeasible : io::kExitNotConverged, message);
 }
 
+/// The export's breaches of its contract between the points (gaits/export/export_contract.hpp),
+/// one warning each: the solve converged, but a controller that follows the export meets them.
+void warnOfBreaches(const nlohmann::ordered_json& between_nodes) {
+  for (const auto& b : between_nodes["breaches"])
+    fmt::print(stderr, "optimize: warning: on the {:g} Hz export {} ({} {:.3g}, bound {:.3g})\n",
+               between_nodes["rate_hz"].get<double>(), b["meaning"].get<std::string>(),
+               b["check"].get<std::string>(), b["value"].get<double>(), b["bound"].get<double>());
+}
+
 }  // namespace
 
 void runOptimize(const OptimizeOptions& o) {
@@ -78,12 +87,14 @@ void runOptimize(const OptimizeOptions& o) {
       "({:.3f} s in our callbacks)\n",
       r.status, r.iterations, r.cost, r.max_violation, r.wall_time_s, r.callback_time_s);
   if (!r.success) reportFailure(o, out.path(), model, config, solution);
+  nlohmann::ordered_json summary;
   out.write([&](const std::string& dir) {
-    ocp::writeGaitResult(resultOptions(o), model, config, solution, nullptr, dir);
+    summary = ocp::writeGaitResult(resultOptions(o), model, config, solution, nullptr, dir);
   });
   // A failure of an earlier run would sit next to this result and contradict it.
   io::removeIfOurs(out.path() + ".failed");
   fmt::print("optimize: wrote {}/trajectory.csv, summary.json and pictures\n", out.path());
+  warnOfBreaches(summary["between_nodes"]);
 }
 
 void registerOptimizeCommand(CLI::App& app) {

@@ -7,6 +7,7 @@
 
 #include "gaits/export/consistency.hpp"
 #include "gaits/export/export_checks.hpp"
+#include "gaits/export/export_contract.hpp"
 #include "gaits/export/gait_export.hpp"
 #include "gaits/export/gait_summary.hpp"
 #include "gaits/export/metrics.hpp"
@@ -203,6 +204,15 @@ FailureReport failureReport(const GaitSolution& solution, const std::string& dir
            {"worst_bound_violation", violationJson(bound, "variable")}}};
 }
 
+/// The export's breaches of its contract (gaits/export/export_contract.hpp).
+nlohmann::ordered_json breachesJson(const std::vector<gaits::ExportBreach>& breaches) {
+  auto list = nlohmann::ordered_json::array();
+  for (const auto& b : breaches)
+    list.push_back(
+        {{"check", b.check}, {"value", b.value}, {"bound", b.bound}, {"meaning", b.meaning}});
+  return list;
+}
+
 }  // namespace
 
 size_t writeGaitFiles(const std::string& dir, const gaits::Trajectory& traj,
@@ -230,7 +240,8 @@ nlohmann::ordered_json betweenNodeMetrics(const gaits::Trajectory& dense,
           {"max_dsp_tip_drift", gaits::maxDspTipDrift(dense, model)},
           {"max_rate_mismatch", gaits::maxRateMismatch(dense)},
           {"max_acceleration_mismatch", gaits::maxAccelerationMismatch(dense)},
-          {"rate_hz", rate_hz}};
+          {"rate_hz", rate_hz},
+          {"breaches", breachesJson(gaits::exportBreaches(dense, model, rate_hz))}};
 }
 
 nlohmann::ordered_json solutionSummary(const GaitResultOptions& o, const dynamics::Model& model,

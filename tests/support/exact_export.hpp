@@ -9,6 +9,7 @@
 
 #include "dynamics/model.hpp"
 #include "gaits/export/export_checks.hpp"
+#include "gaits/export/export_contract.hpp"
 #include "gaits/trajectory/trajectory.hpp"
 
 namespace gaitopt::test {
@@ -22,9 +23,9 @@ inline void expectExactBetweenThePoints(const gaits::Trajectory& dense,
   const double accelerations = gaits::maxAccelerationMismatch(dense);
   ::testing::Test::RecordProperty("drift_rates_accelerations",
                                   fmt::format("{:.2e} {:.4f} {:.4f}", drift, rates, accelerations));
-  EXPECT_LT(drift, 1e-6);
-  EXPECT_LT(rates, 2e-3);
-  EXPECT_LT(accelerations, 1e-2);
+  EXPECT_LT(drift, gaits::kMaxDspTipDrift);
+  EXPECT_LT(rates, gaits::kMaxRateMismatch);
+  EXPECT_LT(accelerations, gaits::kMaxAccelerationMismatch);
 }
 
 }  // namespace gaitopt::test

@@ -1,0 +1,54 @@
+#include "gaits/export/export_contract.hpp"
+
+#include <utility>
+
+#include "gaits/export/export_checks.hpp"
+#include "gaits/export/metrics.hpp"
+
+namespace gaitopt::gaits {
+namespace {
+
+/// Collects breaches: an upper bound broken when value > bound, a lower one when value < bound.
+class Breaches {
+ public:
+  void atMost(const char* check, double value, double bound, const char* meaning) {
+    if (value > bound) list_.push_back({check, value, bound, meaning});
+  }
+  void atLeast(const char* check, double value, double bound, const char* meaning) {
+    if (value < bound) list_.push_back({check, value, bound, meaning});
+  }
+  std::vector<ExportBreach> take() { return std::move(list_); }
+
+ private:
+  std::vector<ExportBreach> list_;
+};
+
+}  // namespace
+
+std::vector<ExportBreach> exportBreaches(const Trajectory& dense, const dynamics::Model& model,
+                                         double rate_hz) {
+  Breaches b;
+  b.atMost("max_dsp_tip_drift", maxDspTipDrift(dense, model), kMaxDspTipDrift,
+           "the double support's leading tip leaves the place it is pinned to (the DSP in "
+           "reduced coordinates holds it: constraints.dsp_reduced_coordinates)");
+  if (rate_hz >= kDerivativeCheckRateHz) {
+    b.atMost("max_rate_mismatch", maxRateMismatch(dense), kMaxRateMismatch,
+             "the rates are not the derivatives of the angles");
+    b.atMost("max_acceleration_mismatch", maxAccelerationMismatch(dense), kMaxAccelerationMismatch,
+             "the accelerations, which a computed-torque law feeds forward, are not the "
+             "derivatives of the rates");
+  }
+  const double normal = minNormalForce(dense);
+  b.atLeast("min_normal_force", normal, 0.0, "a tip in contact pulls on the ground");
+  if (normal > 0) {
+    b.atMost("max_friction_ratio", maxFrictionRatio(dense), model.friction(),
+             "a tip force leaves the friction cone of the robot's mu: the tip slips");
+    b.atLeast("min_foot_cop_margin", minFootCopMargin(dense, model), -kGroundTolerance,
+              "foot B's centre of pressure leaves the foot: the foot rolls");
+  }
+  b.atLeast("min_swing_clearance", minSwingClearance(dense, model), -kGroundTolerance,
+            "the swing tip passes below the ground");
+  return b.take();
+}
+
+}  // namespace gaitopt::gaits

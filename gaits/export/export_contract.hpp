@@ -1,0 +1,42 @@
+#pragma once
+/// @file export_contract.hpp
+/// What a dense export (trajectory.csv) promises a controller between the solver's points, as
+/// bounds on the figures of export_checks.hpp and metrics.hpp. A solver holds its constraints at
+/// its collocation points only; the export reads the scheme's polynomials in between, where a
+/// force can dip, a tip can drift and an interpolant can disagree with its derivative
+/// (docs/optimal_gaits.md#between-the-points). The first three bounds are issue 34's on the
+/// 1 kHz export; the others are the contact conditions themselves (the robot's own mu, the
+/// foot's own length, the ground), without the design margins a config may add at its points.
+#include <string>
+#include <vector>
+
+#include "dynamics/model.hpp"
+#include "gaits/trajectory/trajectory.hpp"
+
+namespace gaitopt::gaits {
+
+inline constexpr double kMaxDspTipDrift = 1e-6;           ///< [m]
+inline constexpr double kMaxRateMismatch = 2e-3;          ///< of the rates' peak
+inline constexpr double kMaxAccelerationMismatch = 1e-2;  ///< of the accelerations' peak
+/// [m] how far below the ground the swing tip, or beyond the foot's ends its centre of
+/// pressure, may pass before it counts: a micrometre, the drift's bound.
+inline constexpr double kGroundTolerance = 1e-6;
+/// The derivative checks compare with three-point differences, which themselves err by
+/// O(h^2) (export_checks.hpp): at 200 Hz by about 0.4 % of the default gait's peak rate. They
+/// are checked on exports at this rate or finer.
+inline constexpr double kDerivativeCheckRateHz = 1000;
+
+struct ExportBreach {
+  std::string check;  ///< the figure's key under summary.json's between_nodes
+  double value = 0;
+  double bound = 0;
+  std::string meaning;  ///< what it means for a controller that follows the export
+};
+
+/// The bounds the export `dense`, sampled at `rate_hz`, breaks (none: it keeps every one).
+/// Friction and the foot's centre of pressure are not judged where a normal force is <= 0
+/// (that breach is reported instead).
+std::vector<ExportBreach> exportBreaches(const Trajectory& dense, const dynamics::Model& model,
+                                         double rate_hz);
+
+}  // namespace gaitopt::gaits
