@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 
 #include "config/quantities.hpp"
+#include "gaits/export/export_contract.hpp"
 #include "ocp/guess/initial_guess.hpp"
 #include "ocp/problem/gait_problem.hpp"
 #include "ocp/problem/ocp_config.hpp"
@@ -15,6 +16,15 @@ namespace py = pybind11;
 
 namespace gaitopt::python {
 namespace {
+
+/// The export contract's breaches as summary.json's between_nodes.breaches lists them.
+py::list breaches(const std::vector<gaits::ExportBreach>& list) {
+  py::list out;
+  for (const auto& b : list)
+    out.append(py::dict(py::arg("check") = b.check, py::arg("value") = b.value,
+                        py::arg("bound") = b.bound, py::arg("meaning") = b.meaning));
+  return out;
+}
 
 py::dict optimize(const std::string& config_path, double rate_hz) {
   config::requireInRange(config::kSampleRate, rate_hz, "rate_hz");
@@ -39,7 +49,9 @@ py::dict optimize(const std::string& config_path, double rate_hz) {
   out["wall_time_s"] = r.wall_time_s;
   out["robot"] = model;
   out["knots"] = ocp::reconstruct(solution.problem, model, r.x);
-  out["trajectory"] = ocp::reconstructDense(solution.problem, model, r.x, rate_hz);
+  const gaits::Trajectory dense = ocp::reconstructDense(solution.problem, model, r.x, rate_hz);
+  out["trajectory"] = dense;
+  out["breaches"] = breaches(gaits::exportBreaches(dense, model, rate_hz));
   return out;
 }
 
@@ -49,7 +61,9 @@ void bindSolve(py::module_& m) {
   m.def("optimize", &optimize, py::arg("config_path"), py::arg("rate_hz") = 1000.0,
         "Solves an OCP config with Ipopt as `gaitopt optimize` does. Returns a dict: status, "
         "iterations, cost, max_violation, wall_time_s, robot (on the config's slope), knots "
-        "(one per collocation point) and trajectory (sampled at rate_hz, as trajectory.csv). "
+        "(one per collocation point), trajectory (sampled at rate_hz, as trajectory.csv) and "
+        "breaches (the bounds the trajectory breaks between the points, as summary.json's "
+        "between_nodes.breaches: a list of dicts check, value, bound, meaning). "
         "InputError for a bad config, InfeasibleError or NotConvergedError for a failed solve.");
 }
 

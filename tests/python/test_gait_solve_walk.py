@@ -66,6 +66,15 @@ def test_optimize_cost_equals_the_cli(cli, tmp_path):
     traj = py["trajectory"]
     assert traj.duration == pytest.approx(summary["duration"])
     assert traj.step_length == pytest.approx(summary["step_length"])
+    assert py["breaches"] == summary["between_nodes"]["breaches"] == []
+
+
+def test_optimize_lists_the_breaches_of_the_export_contract():
+    # The default problem collocates its double support in theta: the leading tip drifts
+    # 0.59 mm between the points (results/dsp_coordinates.md), its one breach.
+    py = gaitopt.optimize(str(ROOT / "configs/ocp/mu2004_walk.yaml"))
+    assert [b["check"] for b in py["breaches"]] == ["max_dsp_tip_drift"]
+    assert py["breaches"][0]["value"] > 1e-4 and py["breaches"][0]["bound"] == 1e-6
 
 
 def test_walk_stays_on_the_reference(poly_gait):
