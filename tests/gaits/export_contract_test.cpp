@@ -16,8 +16,8 @@ using gaits::Knot;
 using gaits::Trajectory;
 
 /// A robot standing still, feet together: the stance leg and the torso upright (theta = 0), the
-/// swing leg hanging (theta = pi, design.md#conventions), so the swing tip is on the ground at the
-/// stance tip. `rate` Hz over 0.1 s of SSP, the stance tip carrying `force` and the ankle
+/// swing leg hanging (theta = pi, docs/design.md#conventions), so the swing tip is on the ground at
+/// the stance tip. `rate` Hz over 0.1 s of SSP, the stance tip carrying `force` and the ankle
 /// `ankle_torque`.
 Trajectory standing(double rate, const Vec2d& force, double ankle_torque = 0) {
   std::vector<Knot> knots;
