@@ -51,7 +51,8 @@ py::dict optimize(const std::string& config_path, double rate_hz) {
   out["knots"] = ocp::reconstruct(solution.problem, model, r.x);
   const gaits::Trajectory dense = ocp::reconstructDense(solution.problem, model, r.x, rate_hz);
   out["trajectory"] = dense;
-  out["breaches"] = breaches(gaits::exportBreaches(dense, model, rate_hz));
+  out["breaches"] = breaches(
+      gaits::exportBreaches(gaits::exportFigures(dense, model), model.friction(), rate_hz));
   return out;
 }
 

@@ -25,28 +25,36 @@ class Breaches {
 
 }  // namespace
 
-std::vector<ExportBreach> exportBreaches(const Trajectory& dense, const dynamics::Model& model,
-                                         double rate_hz) {
+ExportFigures exportFigures(const Trajectory& dense, const dynamics::Model& model) {
+  return {.max_dsp_tip_drift = maxDspTipDrift(dense, model),
+          .max_rate_mismatch = maxRateMismatch(dense),
+          .max_acceleration_mismatch = maxAccelerationMismatch(dense),
+          .min_normal_force = minNormalForce(dense),
+          .max_friction_ratio = maxFrictionRatio(dense),
+          .min_foot_cop_margin = minFootCopMargin(dense, model),
+          .min_swing_clearance = minSwingClearance(dense, model)};
+}
+
+std::vector<ExportBreach> exportBreaches(const ExportFigures& f, double friction, double rate_hz) {
   Breaches b;
-  b.atMost("max_dsp_tip_drift", maxDspTipDrift(dense, model), kMaxDspTipDrift,
+  b.atMost("max_dsp_tip_drift", f.max_dsp_tip_drift, kMaxDspTipDrift,
            "the double support's leading tip leaves the place it is pinned to (the DSP in "
            "reduced coordinates holds it: constraints.dsp_reduced_coordinates)");
   if (rate_hz >= kDerivativeCheckRateHz) {
-    b.atMost("max_rate_mismatch", maxRateMismatch(dense), kMaxRateMismatch,
+    b.atMost("max_rate_mismatch", f.max_rate_mismatch, kMaxRateMismatch,
              "the rates are not the derivatives of the angles");
-    b.atMost("max_acceleration_mismatch", maxAccelerationMismatch(dense), kMaxAccelerationMismatch,
+    b.atMost("max_acceleration_mismatch", f.max_acceleration_mismatch, kMaxAccelerationMismatch,
              "the accelerations, which a computed-torque law feeds forward, are not the "
              "derivatives of the rates");
   }
-  const double normal = minNormalForce(dense);
-  b.atLeast("min_normal_force", normal, 0.0, "a tip in contact pulls on the ground");
-  if (normal > 0) {
-    b.atMost("max_friction_ratio", maxFrictionRatio(dense), model.friction(),
+  b.atLeast("min_normal_force", f.min_normal_force, 0.0, "a tip in contact pulls on the ground");
+  if (f.min_normal_force > 0) {
+    b.atMost("max_friction_ratio", f.max_friction_ratio, friction,
              "a tip force leaves the friction cone of the robot's mu: the tip slips");
-    b.atLeast("min_foot_cop_margin", minFootCopMargin(dense, model), -kGroundTolerance,
+    b.atLeast("min_foot_cop_margin", f.min_foot_cop_margin, -kGroundTolerance,
               "foot B's centre of pressure leaves the foot: the foot rolls");
   }
-  b.atLeast("min_swing_clearance", minSwingClearance(dense, model), -kGroundTolerance,
+  b.atLeast("min_swing_clearance", f.min_swing_clearance, -kGroundTolerance,
             "the swing tip passes below the ground");
   return b.take();
 }

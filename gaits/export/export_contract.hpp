@@ -34,10 +34,24 @@ struct ExportBreach {
   std::string meaning;  ///< what it means for a controller that follows the export
 };
 
-/// The bounds the export `dense`, sampled at `rate_hz`, breaks (none: it keeps every one).
-/// Friction and the foot's centre of pressure are not judged where a normal force is <= 0
-/// (that breach is reported instead).
-std::vector<ExportBreach> exportBreaches(const Trajectory& dense, const dynamics::Model& model,
+/// The figures of a dense export the contract bounds, each computed once: summary.json writes
+/// them under between_nodes by these names, and exportBreaches judges the same numbers.
+struct ExportFigures {
+  double max_dsp_tip_drift = 0;          ///< [m] maxDspTipDrift
+  double max_rate_mismatch = 0;          ///< maxRateMismatch
+  double max_acceleration_mismatch = 0;  ///< maxAccelerationMismatch
+  double min_normal_force = 0;           ///< [N] minNormalForce
+  double max_friction_ratio = 0;         ///< maxFrictionRatio
+  double min_foot_cop_margin = 0;        ///< [m] minFootCopMargin
+  double min_swing_clearance = 0;        ///< [m] minSwingClearance
+};
+
+ExportFigures exportFigures(const Trajectory& dense, const dynamics::Model& model);
+
+/// The bounds an export with these figures, sampled at `rate_hz`, breaks (none: it keeps every
+/// one); `friction` is the robot's mu. Friction and the foot's centre of pressure are not judged
+/// where a normal force is <= 0 (that breach is reported instead).
+std::vector<ExportBreach> exportBreaches(const ExportFigures& figures, double friction,
                                          double rate_hz);
 
 }  // namespace gaitopt::gaits

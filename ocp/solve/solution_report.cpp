@@ -18,9 +18,8 @@ namespace gaitopt::ocp {
 namespace {
 
 /// The worst friction ratio, or why there is none (a tip pulling on the ground).
-nlohmann::ordered_json frictionRatioJson(const gaits::Trajectory& traj) {
-  const double ratio = gaits::maxFrictionRatio(traj);
-  if (std::isfinite(ratio) && gaits::minNormalForce(traj) > 0) return ratio;
+nlohmann::ordered_json frictionRatioJson(const gaits::ExportFigures& f) {
+  if (std::isfinite(f.max_friction_ratio) && f.min_normal_force > 0) return f.max_friction_ratio;
   return "unbounded: a normal force <= 0";
 }
 
@@ -227,21 +226,22 @@ nlohmann::ordered_json betweenNodeMetrics(const gaits::Trajectory& dense,
                                           const dynamics::Model& model, double rate_hz) {
   const double defect = gaits::maxDynamicsResidual(dense, model);
   const double peak = gaits::peakTorque(dense).maxCoeff();
+  const gaits::ExportFigures f = gaits::exportFigures(dense, model);
   using Json = nlohmann::ordered_json;
   return {{"max_dynamics_defect", defect},
           // undefined for a passive gait (no torque to compare with)
           {"dynamics_defect_per_peak_torque", peak > kPassiveTorque ? Json(defect / peak) : Json()},
           {"max_tip_acceleration", gaits::maxTipAcceleration(dense, model)},
-          {"min_normal_force", gaits::minNormalForce(dense)},
-          {"max_friction_ratio", frictionRatioJson(dense)},
+          {"min_normal_force", f.min_normal_force},
+          {"max_friction_ratio", frictionRatioJson(f)},
           {"min_zmp_margin", gaits::minZmpMargin(dense, model)},
-          {"min_foot_cop_margin", gaits::minFootCopMargin(dense, model)},
-          {"min_swing_clearance", gaits::minSwingClearance(dense, model)},
-          {"max_dsp_tip_drift", gaits::maxDspTipDrift(dense, model)},
-          {"max_rate_mismatch", gaits::maxRateMismatch(dense)},
-          {"max_acceleration_mismatch", gaits::maxAccelerationMismatch(dense)},
+          {"min_foot_cop_margin", f.min_foot_cop_margin},
+          {"min_swing_clearance", f.min_swing_clearance},
+          {"max_dsp_tip_drift", f.max_dsp_tip_drift},
+          {"max_rate_mismatch", f.max_rate_mismatch},
+          {"max_acceleration_mismatch", f.max_acceleration_mismatch},
           {"rate_hz", rate_hz},
-          {"breaches", breachesJson(gaits::exportBreaches(dense, model, rate_hz))}};
+          {"breaches", breachesJson(gaits::exportBreaches(f, model.friction(), rate_hz))}};
 }
 
 nlohmann::ordered_json solutionSummary(const GaitResultOptions& o, const dynamics::Model& model,

@@ -35,7 +35,9 @@ Trajectory standing(double rate, const Vec2d& force, double ankle_torque = 0) {
 
 std::vector<std::string> checks(const Trajectory& traj, double rate) {
   std::vector<std::string> names;
-  for (const auto& b : gaits::exportBreaches(traj, loadNamed("mu2004_five_link"), rate))
+  const dynamics::Model model = loadNamed("mu2004_five_link");
+  for (const auto& b :
+       gaits::exportBreaches(gaits::exportFigures(traj, model), model.friction(), rate))
     names.push_back(b.check);
   return names;
 }
@@ -48,7 +50,8 @@ TEST(ExportContract, AForceOutsideTheRobotsConeIsASlipNotTheConfigsMargin) {
   const dynamics::Model model = loadNamed("mu2004_five_link");
   const double mu = model.friction();  // 0.6; a config's friction margin does not count here
   EXPECT_TRUE(checks(standing(1000, {0.99 * mu * 300, 300}), 1000).empty());
-  const auto breaches = gaits::exportBreaches(standing(1000, {1.01 * mu * 300, 300}), model, 1000);
+  const auto breaches = gaits::exportBreaches(
+      gaits::exportFigures(standing(1000, {1.01 * mu * 300, 300}), model), mu, 1000);
   ASSERT_EQ(breaches.size(), 1u);
   EXPECT_EQ(breaches[0].check, "max_friction_ratio");
   EXPECT_NEAR(breaches[0].value, 1.01 * mu, 1e-12);

@@ -209,7 +209,8 @@ TEST_F(DesignedStrike, ItsExportIsExactAndInsideTheConesBetweenThePoints) {
   // pressure stays on the foot between them (0.6 mm inside; without the margin 0.9 mm off), so
   // the export keeps every bound of its contract.
   EXPECT_LT(friction, 0.47);
-  const auto breaches = gaits::exportBreaches(dense, solved_->model, 1000);
+  const auto breaches = gaits::exportBreaches(gaits::exportFigures(dense, solved_->model),
+                                              solved_->model.friction(), 1000);
   for (const auto& b : breaches)
     ADD_FAILURE() << b.check << " " << b.value << ", bound " << b.bound;
 }
