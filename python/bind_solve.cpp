@@ -4,6 +4,7 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include "config/overrides.hpp"
 #include "config/quantities.hpp"
 #include "gaits/export/export_contract.hpp"
 #include "ocp/guess/initial_guess.hpp"
@@ -26,9 +27,10 @@ py::list breaches(const std::vector<gaits::ExportBreach>& list) {
   return out;
 }
 
-py::dict optimize(const std::string& config_path, double rate_hz) {
+py::dict optimize(const std::string& config_path, double rate_hz,
+                  const std::vector<std::string>& set) {
   config::requireInRange(config::kSampleRate, rate_hz, "rate_hz");
-  ocp::OcpConfig config = ocp::loadOcpConfig(config_path);
+  ocp::OcpConfig config = ocp::loadOcpConfig(config_path, config::parseOverrides(set));
   const dynamics::Model model = ocp::problemModel(config);
   ocp::requireReachable(model, config, config_path);
   config.solver.progress = false;
@@ -60,7 +62,9 @@ py::dict optimize(const std::string& config_path, double rate_hz) {
 
 void bindSolve(py::module_& m) {
   m.def("optimize", &optimize, py::arg("config_path"), py::arg("rate_hz") = 1000.0,
-        "Solves an OCP config with Ipopt as `gaitopt optimize` does. Returns a dict: status, "
+        py::arg("set") = std::vector<std::string>{},
+        "Solves an OCP config with Ipopt as `gaitopt optimize` does; `set` lists KEY=VALUE "
+        "overrides as its --set does. Returns a dict: status, "
         "iterations, cost, max_violation, wall_time_s, robot (on the config's slope), knots "
         "(one per collocation point), trajectory (sampled at rate_hz, as trajectory.csv) and "
         "breaches (the bounds the trajectory breaks between the points, as summary.json's "

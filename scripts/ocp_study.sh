@@ -24,7 +24,7 @@ if [[ ! -x "$bin" ]]; then
   echo "       build it first: cmake --build $1 -j2 --target ocp_study" >&2
   exit 1
 fi
-here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 mkdir -p "$out"
 
 cpu="$(sed -n 's/^model name[[:space:]]*:[[:space:]]*//p' /proc/cpuinfo | head -n 1)"
@@ -36,5 +36,5 @@ for study in collocation derivatives guesses; do
   "$bin" "$study" --repeats "$repeats" --seeds "$seeds" >"$out/$study.csv.tmp"
   mv "$out/$study.csv.tmp" "$out/$study.csv"
 done
-/usr/bin/python3 "$here/plots/ocp_study_charts.py" "$out"
+/usr/bin/python3 "$root/plots/ocp_study_charts.py" "$out"
 echo "ocp_study.sh: $((SECONDS - start)) s"

@@ -50,24 +50,37 @@ mkdir -p "$TMP/cwd" && printf 'max_iter 1\n' >"$TMP/cwd/ipopt.opt"
 FIVE="$ROOT/configs/ocp/mu2004_walk.yaml"
 run optimize --config "$FIVE" --out "$TMP/cold5" --quiet --no-plots
 [[ $RC -eq 0 ]] || fail "(d) cold start exited $RC: $(cat "$TMP/err")"
-# (d1) the default's DSP, collocated in theta, lets the leading tip drift between the points
-# (0.59 mm, results/dsp_coordinates.md): the one breach of the export contract, warned of even
-# under --quiet and listed in summary.json.
+# (d1) the default's export keeps every bound of the export contract: its DSP, collocated in
+# Mu's reduced coordinates, holds the leading tip on its point between the points too. The same
+# problem with the DSP collocated in theta lets the tip drift (0.59 mm, results/dsp_coordinates.md):
+# the one breach, warned of even under --quiet and listed in summary.json.
+check_json "(d1) no breach" "$TMP/cold5/summary.json" <<'PY'
+b = d["between_nodes"]
+assert b["breaches"] == [] and b["max_dsp_tip_drift"] <= 1e-9, b
+PY
+grep -q "warning" "$TMP/err" && fail "(d1) a warning for the default: $(cat "$TMP/err")"
+run optimize --config "$FIVE" --out "$TMP/theta5" --quiet --no-plots \
+  --set constraints.dsp_reduced_coordinates=false --set 'phases[1].first_segment=null'
+[[ $RC -eq 0 ]] || fail "(d1) theta exited $RC: $(cat "$TMP/err")"
 grep -q "warning: on the 1000 Hz export the double support's leading tip.*max_dsp_tip_drift" \
   "$TMP/err" || fail "(d1) no drift warning: $(cat "$TMP/err")"
-check_json "(d1) breaches" "$TMP/cold5/summary.json" <<'PY'
+check_json "(d1) breaches" "$TMP/theta5/summary.json" <<'PY'
 b = d["between_nodes"]["breaches"]
 assert [x["check"] for x in b] == ["max_dsp_tip_drift"], b
 assert b[0]["value"] > 1e-4 and b[0]["bound"] == 1e-6, b
 PY
 run optimize --config "$FIVE" --out "$TMP/warm5" --warm-start "$TMP/cold5" --quiet --no-plots
 [[ $RC -eq 0 ]] || fail "(d) warm start exited $RC: $(cat "$TMP/err")"
-"$PY" - "$TMP/cold5/summary.json" "$TMP/warm5/summary.json" <<'PY' || fail "(d) warm start"
+"$PY" - "$TMP/cold5/summary.json" "$TMP/warm5/summary.json" "$TMP/theta5/summary.json" \
+  <<'PY' || fail "(d) warm start"
 import json, sys
-cold, warm = (json.load(open(f)) for f in sys.argv[1:3])
+cold, warm, theta = (json.load(open(f)) for f in sys.argv[1:4])
 assert abs(warm["cost"] - cold["cost"]) < 1e-4 * cold["cost"], (warm["cost"], cold["cost"])
-# 131.516 to 5 digits in 15 iterations (29 with Ipopt's default multiplier start); a margin for other BLAS
-assert abs(cold["cost"] - 131.516) < 5e-4 and cold["iterations"] <= 18, (cold["cost"], cold["iterations"])
+# Pinning the tip at every point, not only its acceleration, can only cost more, and little: the
+# reduced form's optimum lies within 1 % above theta's (measured 0.8 %). 15 iterations measured
+# (27 with Ipopt's default multiplier start); a margin for other BLAS.
+assert theta["cost"] < cold["cost"] < 1.01 * theta["cost"], (cold["cost"], theta["cost"])
+assert cold["iterations"] <= 18, cold["iterations"]
 assert warm["iterations"] < cold["iterations"], (warm["iterations"], cold["iterations"])
 PY
 # (e) every shipped OCP config converges.

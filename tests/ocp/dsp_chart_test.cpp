@@ -127,7 +127,7 @@ TEST(DspChart, RefusesARobotWithoutKnees) {
 
 TEST(DspChart, ConfigReadsTheSwitchAndAPhaseMesh) {
   const std::string file = kDir + "mu2004_walk.yaml";
-  const std::string dsp = "  - {name: DSP, duration: 0.1, segments: 6}";
+  const std::string dsp = "  - {name: DSP, duration: 0.1, segments: 6, first_segment: 0.12}";
   EXPECT_EQ(test::loadEditedOcpConfig(
                 file, dsp, "  - {name: DSP, duration: 0.1, segments: 2, mesh: [0, 0.25, 1]}"),
             "");

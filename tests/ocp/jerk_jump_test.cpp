@@ -15,12 +15,17 @@ namespace gaitopt::ocp {
 namespace {
 
 constexpr double kJump = 2000;  // rad/s^3
-// Samples on every node of the default problem: SSP nodes every 20 ms, DSP every 1/60 s.
+// Samples on every node of the default problem on equal DSP segments: SSP nodes every 20 ms, DSP
+// every 1/60 s.
 constexpr double kNodeRate = 6000;  // Hz
 
-/// The default problem with the jump bound (0: off), solved from its polynomial guess.
+/// The default problem with its DSP collocated in theta on 6 equal segments, where the export's
+/// accelerations are the collocated ones, and the jump bound (0: off), solved from its
+/// polynomial guess.
 OcpConfig defaultWithJump(double jump) {
   auto c = loadOcpConfig(test::shippedOcpConfig("mu2004_walk"));
+  c.dsp_reduced_coordinates = false;
+  c.phases.back().first_segment = 0;
   c.jerk_jump_limit = jump;
   return c;
 }
