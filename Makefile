@@ -8,6 +8,12 @@
 #   make studies  every study of configs/studies/ into build/studies/ (STUDIES="a b" for some)
 JOBS ?= $(shell nproc)
 BUILD ?= build
+# The configs whose solves the inertia audit follows: every shipped one whose KKT matrices leave
+# the static pivots, and the two too large to decompose densely also on coarse meshes (@SSP,DSP).
+INERTIA_AUDIT_CONFIGS ?= $(addprefix configs/ocp/,mu2004_walk_robust.yaml \
+  mu2004_walk_strike.yaml mu2004_walk_work.yaml mu2004_walk_cot.yaml mu2004_walk_cot.yaml@12,4 \
+  mu2004_walk_ensemble.yaml mu2004_walk_ensemble.yaml@6,4 compass_gait_walk.yaml \
+  three_link_walk.yaml)
 SAN_BUILD ?= build-sanitize
 # The sanitizer build keeps assertions (no NDEBUG) but compiles at -O1, as OSS-Fuzz does: Eigen at
 # -O0 made the sanitizer suite several times slower than the Release one for no extra findings.
@@ -19,8 +25,8 @@ SAN_OPT ?= -g1 -O1
 CMAKE_GEN = $(shell command -v ninja >/dev/null 2>&1 && echo "-G Ninja")
 
 .PHONY: deps configure build test test-quick test-release test-sanitize valgrind demo demo-full \
-  bench studies ocp-study dart-side-by-side library-throughput fidelity fuzz fresh-demo format \
-  clean
+  bench studies ocp-study dart-side-by-side library-throughput fidelity inertia-audit fuzz \
+  fresh-demo format clean
 
 # Each target names every option, so one build folder serves them all in any order.
 # The demo builds the CLI alone and needs none of the test, benchmark, binding or MPI packages;
@@ -97,6 +103,10 @@ library-throughput: build
 
 fidelity: build
 	@/usr/bin/python3 scripts/fidelity_chart.py $(BUILD)/apps/gaitopt $(BUILD)/fidelity
+
+# The KKT solver's inertia against MUMPS's and a dense eigendecomposition's (bench/inertia_audit.cpp).
+inertia-audit: build
+	@$(BUILD)/bench/inertia_audit results/inertia_audit.md 4 $(INERTIA_AUDIT_CONFIGS)
 
 fuzz:
 	@bash scripts/fuzz.sh $(FUZZ_SECONDS)

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ocp/solve/kkt/block_ldl.hpp"
+#include "ocp/solve/kkt/kkt_observer.hpp"
 #include "ocp/solve/kkt/kkt_pairs.hpp"
 #include "ocp/solve/kkt/kkt_solver.hpp"
 #include "ocp/solve/kkt/kkt_statistics.hpp"
@@ -202,6 +203,43 @@ TEST(KktSolver, AMatrixWhoseStaticPivotsFailIsFactorizedWithPivotingNotByMumps) 
     EXPECT_LT(backwardError(a.dense, x, b), 1e-14) << "seed " << seed;
   }
   EXPECT_GE(tried, 1) << "the family has a matrix whose static pivots fail";
+}
+
+// The audit's window (bench/inertia_audit.cpp): each factorization, static or pivoting, is seen
+// once, with the matrix factorized and the count Ipopt is told, which is the dense count.
+TEST(KktSolver, TheObserverSeesEveryFactorizationWithTheInertiaIpoptIsTold) {
+  struct Seen {
+    int n, negative;
+    double first;
+  };
+  std::vector<Seen> seen;
+  threadFactorizationObserver() = [&seen](const SymmetricPattern& p, const double* v, int neg) {
+    seen.push_back({p.n, neg, v[0]});
+  };
+  std::vector<int> dense;
+  const int pivotingBefore = threadKktStatistics().pivoting_factorizations;
+  for (unsigned seed = 1; seed <= 40; ++seed) {
+    const AugmentedSystem a = randomAugmentedSystem(seed);
+    const Eigen::VectorXd ev =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(a.dense).eigenvalues();
+    if (ev.cwiseAbs().minCoeff() < 1e-10 * ev.cwiseAbs().maxCoeff()) continue;  // singular
+    const Lower l = lowerOf(a.dense);
+    KktSolver solver(l.pattern);
+    solver.factorize(l.values.data());
+    ASSERT_EQ(seen.size(), dense.size() + 1) << "seed " << seed;
+    EXPECT_EQ(seen.back().n, a.n());
+    EXPECT_EQ(seen.back().first, l.values[0]);
+    EXPECT_EQ(seen.back().negative, solver.negativeEigenvalues());
+    dense.push_back(negativeEigenvalues(a.dense));
+    EXPECT_EQ(seen.back().negative, dense.back()) << "seed " << seed;
+  }
+  EXPECT_GE(dense.size(), 5u);
+  EXPECT_GT(threadKktStatistics().pivoting_factorizations, pivotingBefore)
+      << "both kinds of factorization seen";
+  threadFactorizationObserver() = nullptr;
+  const Lower l = lowerOf(randomAugmentedSystem(1, Convexity::kConvexW).dense);
+  KktSolver(l.pattern).factorize(l.values.data());
+  EXPECT_EQ(seen.size(), dense.size()) << "seen after the observer was reset";
 }
 
 TEST(KktSolver, ASingularMatrixIsReportedAsSuch) {

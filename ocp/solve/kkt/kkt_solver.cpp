@@ -5,6 +5,7 @@
 #include <cmath>
 #include <utility>
 
+#include "ocp/solve/kkt/kkt_observer.hpp"
 #include "ocp/solve/kkt/kkt_pairs.hpp"
 #include "ocp/solve/kkt/kkt_statistics.hpp"
 #include "ocp/solve/kkt/pair_order.hpp"
@@ -82,13 +83,20 @@ bool KktSolver::lostADiagonal(const double* values) const {
   return false;
 }
 
+// An audit (kkt_observer.hpp) sees each matrix with the count Ipopt will read for it.
+void KktSolver::factorize(const double* values) {
+  chooseAndFactorize(values);
+  if (const FactorizationObserver& observe = threadFactorizationObserver())
+    observe(pattern_, values, negativeEigenvalues());
+}
+
 // The static pivots first, while they hold: a zero pivot, or an inertia other than a KKT
 // matrix's (one negative eigenvalue per constraint row), which from static pivots can be a
 // small pivot's rounding, turns this solver to pivoting for the rest of its matrices. With
 // Ipopt's finite-difference Jacobian on RABBIT the static count was off at every iteration
 // (delta_w 1e4, 500 iterations, where MUMPS's pivoting needs no regularisation and converges in
 // 35).
-void KktSolver::factorize(const double* values) {
+void KktSolver::chooseAndFactorize(const double* values) {
   ++threadKktStatistics().factorizations;
   if (!static_ || lostADiagonal(values)) analyse(values);
   if (!usePivoting_) {

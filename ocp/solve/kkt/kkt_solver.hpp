@@ -35,7 +35,8 @@ class KktSolver {
   /// Factorizes A(values); analyses again first if a variable row's diagonal has become zero
   /// since (Ipopt's first matrix, for the least-squares multipliers, has an identity there).
   /// The static pivots while they hold, then pivoting (kkt_solver.cpp says when); on a pivot
-  /// below `tiny` there, MUMPS factorizes A instead. @throws SingularMatrix from MUMPS.
+  /// below `tiny` there, MUMPS factorizes A instead. The thread's observer (kkt_observer.hpp),
+  /// if set, then sees A and its count of negative eigenvalues. @throws SingularMatrix from MUMPS.
   void factorize(const double* values);
   /// rhs := A^{-1} rhs, refined against A(values) while Ipopt's residual ratio is missed, at most
   /// max(2, refinementSteps) steps; if it is still missed, A is factorized again with a larger
@@ -51,6 +52,8 @@ class KktSolver {
 
  private:
   bool lostADiagonal(const double* values) const;
+  /// factorize's choice of factorization (the observer, kkt_observer.hpp, sees its result).
+  void chooseAndFactorize(const double* values);
   void factorizePivoting(const double* values);
   void factorizeWithMumps(const double* values);
   void applyInverse(double* x) const;
