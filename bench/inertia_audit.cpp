@@ -202,6 +202,7 @@ ocp::OcpConfig configOf(const std::string& argument, Audit& a) {
 Audit audit(const std::string& argument, int checks) {
   Audit a;
   ocp::OcpConfig config = configOf(argument, a);
+  std::fprintf(stderr, "inertia_audit: %s %s: solving\n", a.config.c_str(), a.mesh.c_str());
   config.solver.linear_solver = "ldl";
   const auto model = ocp::problemModel(config);
   const gaits::Trajectory guess = ocp::initialGuess(model, config);
@@ -213,6 +214,9 @@ Audit audit(const std::string& argument, int checks) {
   } catch (const std::exception& e) {  // a failed solve's matrices are audited all the same
     a.status = std::string("error: ") + e.what();
   }
+  std::fprintf(stderr, "inertia_audit: %s %s: %s, %d factorizations, %zu counts differ\n",
+               a.config.c_str(), a.mesh.c_str(), a.status.c_str(), a.factorizations,
+               a.disagreements.size());
   watch.decide();
   return a;
 }
@@ -274,7 +278,7 @@ std::string report(const std::vector<Audit>& audits) {
 
 int main(int argc, char** argv) {
   if (argc < 4) {
-    std::fprintf(stderr, "usage: inertia_audit OUT.md CHECKS CONFIG...\n");
+    std::fprintf(stderr, "usage: inertia_audit OUT.md CHECKS CONFIG[@SSP,DSP]...\n");
     return 2;
   }
   try {
