@@ -156,15 +156,17 @@ class Auditor {
   /// Reservoir sampling (Vitter's algorithm R, a fixed seed): the matrices to decide densely
   /// are drawn evenly from the whole path, not its first disagreements.
   void sample(const SymmetricPattern& p, const double* values) {
+    ++sampled_;
+    const long slot = static_cast<int>(kept_.size()) < checks_
+                          ? static_cast<long>(kept_.size())
+                          : std::uniform_int_distribution<long>(0, sampled_ - 1)(random_);
+    if (slot >= checks_) return;  // not drawn: no copy of the matrix
     Kept kept{audit_.disagreements.size() - 1, p,
               std::vector<double>(values, values + p.nonZeros())};
-    ++sampled_;
-    if (static_cast<int>(kept_.size()) < checks_) {
+    if (slot == static_cast<long>(kept_.size()))
       kept_.push_back(std::move(kept));
-      return;
-    }
-    const auto slot = std::uniform_int_distribution<long>(0, sampled_ - 1)(random_);
-    if (slot < checks_) kept_[slot] = std::move(kept);
+    else
+      kept_[slot] = std::move(kept);
   }
 
   struct Kept {
