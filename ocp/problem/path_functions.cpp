@@ -125,9 +125,9 @@ void SwingHeight::hessian(const Eigen::VectorXd& v, const Eigen::VectorXd& weigh
 SwingClearance::SwingClearance(const dynamics::Model& model, const Phase& phase,
                                const ClearanceProfile& profile)
     : PathConstraint(phase.name() + "_clearance", phase.name(), phase.layout,
-                     std::make_shared<SwingHeight>(model, phase.point), phase.layout.points() - 1),
-      lower_(phase.layout.points() - 1) {
-  for (int p = 0; p < lower_.size(); ++p) lower_(p) = profile.at(phase.layout.time(p, 1.0));
+                     std::make_shared<SwingHeight>(model, phase.point)),
+      lower_(phase.layout.points()) {
+  for (int p = 0; p < phase.layout.points(); ++p) lower_(p) = profile.at(phase.layout.time(p, 1.0));
 }
 
 }  // namespace gaitopt::ocp

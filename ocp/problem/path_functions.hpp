@@ -130,15 +130,9 @@ class SwingHeight : public PointFunction {
   PointLayout point_;
 };
 
-/// y_E(v_p) >= h(s_p) at every point p of the single support but the last, s_p = t_p / T its
-/// phase fraction (clearance_profile.hpp). The points sit at fixed fractions of T, so each bound
-/// is a constant even when T is free: the rows and their derivatives are those of SwingHeight.
-/// The last point is left out because touchdown_position (touchdown.hpp) already holds the tip
-/// on the ground there: a bound y_E >= 0 on the same row as the equality y_E = 0 has the same
-/// gradient, so the constraint gradients are linearly dependent (no unique multipliers), and as
-/// the bound's slack goes to zero Ipopt's Newton matrix goes singular to working precision. Which
-/// way its rounding falls then steers the path: the robust problem reached 1600.5 with MUMPS and
-/// the iteration limit with `ldl`; without the row both reach 618.90 (docs/optimal_gaits.md).
+/// y_E(v_p) >= h(s_p) at every point p of the single support, s_p = t_p / T its phase fraction
+/// (clearance_profile.hpp). The points sit at fixed fractions of T, so each bound is a constant
+/// even when T is free: the rows and their derivatives are those of SwingHeight.
 class SwingClearance : public PathConstraint {
  public:
   SwingClearance(const dynamics::Model& model, const Phase& phase, const ClearanceProfile& profile);

@@ -36,34 +36,29 @@ PointPattern probePattern(const PointFunction& f, int size) {
 }
 
 PathConstraint::PathConstraint(std::string name, std::string phase, const PhaseLayout& layout,
-                               std::shared_ptr<const PointFunction> function, int points)
-    : ConstraintSet(std::move(name), (points < 0 ? layout.points() : points) * function->rows(),
-                    std::move(phase)),
+                               std::shared_ptr<const PointFunction> function)
+    : ConstraintSet(std::move(name), layout.points() * function->rows(), std::move(phase)),
       layout_(layout),
       f_(std::move(function)),
-      points_(points < 0 ? layout.points() : points),
-      pattern_(probePattern(*f_, layout.pointSize())) {
-  if (points_ > layout_.points())
-    throw std::invalid_argument("a path constraint on more points than its phase has");
-}
+      pattern_(probePattern(*f_, layout.pointSize())) {}
 
 Eigen::VectorXd PathConstraint::lowerBounds() const {
-  return f_->lowerBounds().replicate(points_, 1);
+  return f_->lowerBounds().replicate(layout_.points(), 1);
 }
 
 Eigen::VectorXd PathConstraint::upperBounds() const {
-  return f_->upperBounds().replicate(points_, 1);
+  return f_->upperBounds().replicate(layout_.points(), 1);
 }
 
 void PathConstraint::values(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> g) const {
   const int m = f_->rows();
-  for (int p = 0; p < points_; ++p) f_->evaluate(layout_.point(x, p), g.segment(p * m, m));
+  for (int p = 0; p < layout_.points(); ++p) f_->evaluate(layout_.point(x, p), g.segment(p * m, m));
 }
 
 void PathConstraint::jacobian(const Eigen::VectorXd& x, Triplets& out) const {
   const int m = f_->rows();
   Eigen::MatrixXd block(m, layout_.pointSize());
-  for (int p = 0; p < points_; ++p) {
+  for (int p = 0; p < layout_.points(); ++p) {
     f_->jacobian(layout_.point(x, p), block);
     for (const auto& [r, c] : pattern_.jacobian)
       out.emplace_back(p * m + r, layout_.pointOffset(p) + c, block(r, c));
@@ -74,7 +69,7 @@ void PathConstraint::hessian(const Eigen::VectorXd& x, const Eigen::VectorXd& la
                              Triplets& out) const {
   const int m = f_->rows();
   Eigen::MatrixXd block(layout_.pointSize(), layout_.pointSize());
-  for (int p = 0; p < points_; ++p) {
+  for (int p = 0; p < layout_.points(); ++p) {
     f_->hessian(layout_.point(x, p), lambda.segment(p * m, m), block);
     appendPattern(block, pattern_.hessian, layout_.pointOffset(p), out);
   }

@@ -35,15 +35,13 @@ struct PointPattern {
 };
 PointPattern probePattern(const PointFunction& f, int size);
 
-/// f(v_p) within bounds at every point of a phase (or its first `points`). Each point fills its
-/// own block, with the entries of the probed pattern only (fewer nonzeros for Ipopt's linear
-/// solver).
+/// f(v_p) within bounds at every point of a phase. Each point fills its own block, with the
+/// entries of the probed pattern only (fewer nonzeros for Ipopt's linear solver).
 class PathConstraint : public ConstraintSet {
  public:
-  /// @param phase   the phase the layout's points belong to (ConstraintSet)
-  /// @param points  how many of the phase's points, from the first (-1: all)
+  /// @param phase  the phase the layout's points belong to (ConstraintSet)
   PathConstraint(std::string name, std::string phase, const PhaseLayout& layout,
-                 std::shared_ptr<const PointFunction> function, int points = -1);
+                 std::shared_ptr<const PointFunction> function);
   Eigen::VectorXd lowerBounds() const override;
   Eigen::VectorXd upperBounds() const override;
   void values(const Eigen::VectorXd& x, Eigen::Ref<Eigen::VectorXd> g) const override;
@@ -56,7 +54,6 @@ class PathConstraint : public ConstraintSet {
  private:
   PhaseLayout layout_;
   std::shared_ptr<const PointFunction> f_;
-  int points_;
   PointPattern pattern_;
 };
 
