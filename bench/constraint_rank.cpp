@@ -18,8 +18,6 @@
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
-
 #include "ocp/guess/initial_guess.hpp"
 #include "ocp/solve/gait_solve.hpp"
 
@@ -32,32 +30,6 @@ using namespace gaitopt::ocp;
 constexpr int kPrinted = 6;
 /// A singular value below this fraction of the largest is a dependency worth naming.
 constexpr double kDependent = 1e-6;
-
-std::string rowName(const Nlp& nlp, int row) {
-  int start = 0;
-  for (const auto& set : nlp.constraintSets()) {
-    if (row < start + set->rows()) {
-      const GridNode n = set->nodeOf(row - start);
-      if (n.index < 0)
-        return fmt::format("{} ({}, row {})", set->name(), set->phase(), row - start);
-      return fmt::format("{} ({}, {} {}, row {})", set->name(), set->phase(), n.kind, n.index,
-                         n.entry);
-    }
-    start += set->rows();
-  }
-  return "?";
-}
-
-std::string boundName(const Nlp& nlp, int variable) {
-  for (const auto& b : nlp.variableBlocks())
-    if (variable >= b.offset && variable < b.offset + b.size) {
-      const int e = variable - b.offset;
-      if (b.point_size == 0) return fmt::format("bound of {} ({}, element {})", b.name, b.phase, e);
-      return fmt::format("bound of {} ({}, point {}, element {})", b.name, b.phase,
-                         e / b.point_size, e % b.point_size);
-    }
-  return "?";
-}
 
 bool nearBound(double value, double lower, double upper, double tol) {
   return std::abs(value - lower) < tol || std::abs(value - upper) < tol;
@@ -79,12 +51,12 @@ ActiveSet activeSet(const Nlp& nlp, const Eigen::VectorXd& x, double tol) {
   for (int i = 0; i < nlp.constraints(); ++i)
     if (gl(i) == gu(i) || nearBound(g(i), gl(i), gu(i), tol)) {
       rows.push_back(jacobian.row(i));
-      a.names.push_back(rowName(nlp, i));
+      a.names.push_back(whereOf(nlp.locateConstraintRow(i)));
     }
   for (int v = 0; v < nlp.variables(); ++v)
     if (nearBound(x(v), nlp.lowerBounds()(v), nlp.upperBounds()(v), tol)) {
       rows.push_back(Eigen::RowVectorXd::Unit(nlp.variables(), v));
-      a.names.push_back(boundName(nlp, v));
+      a.names.push_back("bound of " + whereOf(nlp.locateVariable(v)));
     }
   a.gradients.resize(static_cast<Eigen::Index>(rows.size()), nlp.variables());
   for (size_t k = 0; k < rows.size(); ++k) {

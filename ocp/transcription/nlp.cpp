@@ -30,6 +30,21 @@ std::pair<int, double> farthestOutside(const Eigen::VectorXd& value, const Eigen
   return worst;
 }
 
+/// The entry of `value` farthest outside [lower, upper], placed by `locate` (index -> Violation)
+/// and given its value, bounds and distance; empty when every entry is within.
+template <class Locate>
+Violation worstOf(const Eigen::VectorXd& value, const Eigen::VectorXd& lower,
+                  const Eigen::VectorXd& upper, Locate locate) {
+  const auto [i, amount] = farthestOutside(value, lower, upper);
+  if (i < 0) return {};
+  Violation v = locate(i);
+  v.amount = amount;
+  v.value = value(i);
+  v.lower = lower(i);
+  v.upper = upper(i);
+  return v;
+}
+
 }  // namespace
 
 void SparsityPattern::record(const Triplets& entries) {
@@ -165,58 +180,50 @@ Triplets Nlp::hessianTriplets(const Eigen::VectorXd& x, double obj_factor,
   return all;
 }
 
-Violation Nlp::worstConstraint(const Eigen::VectorXd& x) const {
-  const Eigen::VectorXd g = constraintValues(x), lower = constraintLower(),
-                        upper = constraintUpper();
-  const auto [row, amount] = farthestOutside(g, lower, upper);
-  if (row < 0) return {};
+Violation Nlp::locateConstraintRow(int row) const {
   int first = 0;
   for (const auto& s : sets_) {
     const int r = row - first;
     if (r < s->rows())
-      return {.name = s->name(),
-              .phase = s->phase(),
-              .part = "row",
-              .index = r,
-              .node = s->nodeOf(r),
-              .amount = amount,
-              .value = g(row),
-              .lower = lower(row),
-              .upper = upper(row)};
+      return {
+          .name = s->name(), .phase = s->phase(), .part = "row", .index = r, .node = s->nodeOf(r)};
     first += s->rows();
   }
   throw std::logic_error("constraint row beyond the last set");
 }
 
-Violation Nlp::worstBound(const Eigen::VectorXd& x) const {
-  const auto [i, amount] = farthestOutside(x, xl_, xu_);
-  if (i < 0) return {};
+Violation Nlp::locateVariable(int i) const {
   for (const auto& b : blocks_) {
     if (i >= b.offset + b.size) continue;
     const int element = i - b.offset;
     const GridNode node = b.point_size > 0
                               ? GridNode{"point", element / b.point_size, element % b.point_size}
                               : GridNode{};
-    return {.name = b.name,
-            .phase = b.phase,
-            .part = "element",
-            .index = element,
-            .node = node,
-            .amount = amount,
-            .value = x(i),
-            .lower = xl_(i),
-            .upper = xu_(i)};
+    return {.name = b.name, .phase = b.phase, .part = "element", .index = element, .node = node};
   }
   throw std::logic_error("variable beyond the last block");
 }
 
-std::string describe(const Violation& v) {
-  if (v.name.empty()) return "none";
+Violation Nlp::worstConstraint(const Eigen::VectorXd& x) const {
+  return worstOf(constraintValues(x), constraintLower(), constraintUpper(),
+                 [this](int row) { return locateConstraintRow(row); });
+}
+
+Violation Nlp::worstBound(const Eigen::VectorXd& x) const {
+  return worstOf(x, xl_, xu_, [this](int i) { return locateVariable(i); });
+}
+
+std::string whereOf(const Violation& v) {
   const std::string where = v.node.index < 0 ? fmt::format("{}, {} {}", v.phase, v.part, v.index)
                                              : fmt::format("{}, {} {}, {} {}", v.phase, v.node.kind,
                                                            v.node.index, v.part, v.node.entry);
-  return fmt::format("{} ({}): {:.4g} outside [{:.4g}, {:.4g}] by {:.3g}", v.name, where, v.value,
-                     v.lower, v.upper, v.amount);
+  return fmt::format("{} ({})", v.name, where);
+}
+
+std::string describe(const Violation& v) {
+  if (v.name.empty()) return "none";
+  return fmt::format("{}: {:.4g} outside [{:.4g}, {:.4g}] by {:.3g}", whereOf(v), v.value, v.lower,
+                     v.upper, v.amount);
 }
 
 }  // namespace gaitopt::ocp

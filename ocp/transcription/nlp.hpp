@@ -102,6 +102,8 @@ struct Violation {
 /// by 0.031"; the index within the set or block when it is not on the grid; "none" when nothing
 /// is violated.
 std::string describe(const Violation& v);
+/// Where alone, e.g. "ssp_clearance (ssp, point 12, row 0)" (describe's first part).
+std::string whereOf(const Violation& v);
 
 /// A term of the objective.
 class CostTerm {
@@ -159,6 +161,12 @@ class Nlp {
   const std::vector<VariableBlock>& variableBlocks() const { return blocks_; }
   const std::vector<std::unique_ptr<CostTerm>>& costTerms() const { return costs_; }
 
+  /// Where constraint row `row` sits: its set, phase and grid node (amounts and bounds 0).
+  /// @throws std::logic_error beyond the last row
+  Violation locateConstraintRow(int row) const;
+  /// Where variable `i` sits: its block, phase and grid node (amounts and bounds 0).
+  /// @throws std::logic_error beyond the last variable
+  Violation locateVariable(int i) const;
   /// The constraint row of `x` farthest outside its bounds (the first on ties).
   Violation worstConstraint(const Eigen::VectorXd& x) const;
   /// The variable of `x` farthest outside its bounds (the first on ties).
