@@ -213,6 +213,10 @@ TEST(KktSolver, TheObserverSeesEveryFactorizationWithTheInertiaIpoptIsTold) {
     double first;
   };
   std::vector<Seen> seen;
+  // A failed assertion must not leave the thread's observer writing into `seen` after it is gone.
+  struct ResetObserver {
+    ~ResetObserver() { threadFactorizationObserver() = nullptr; }
+  } reset;
   threadFactorizationObserver() = [&seen](const SymmetricPattern& p, const double* v, int neg) {
     seen.push_back({p.n, neg, v[0]});
   };
