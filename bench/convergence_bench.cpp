@@ -112,9 +112,11 @@ std::vector<Draw> ocpDraws(const std::string& path) {
   return draws;
 }
 
-/// A library point's draw: its index row as the bench records it.
+/// A library point's draw: its index row as the bench records it (a point that could not be set
+/// up says why, as a config's draw does).
 Draw drawOf(const std::string& name, int segments, const library::IndexRow& row) {
-  return {name,          row.start,      segments, row.status,
+  const std::string status = row.status == "error" ? "error: " + row.message : row.status;
+  return {name,          row.start,      segments, status,
           row.converged, row.iterations, row.cost, row.solve_time_s};
 }
 

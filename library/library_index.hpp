@@ -18,7 +18,7 @@ struct IndexRow {
   std::string point;  ///< the point's folder name under points/
   double speed = 0, step_length = 0, slope = 0;
   std::vector<double> config_values;  ///< one per config axis of the grid (Grid::configAxes)
-  std::string status;  ///< Ipopt's status, or "error: ..." when the point could not be set up
+  std::string status;  ///< Ipopt's status, or "error" when the point could not be set up
   bool converged = false;
   double cost = 0;
   double cost_of_transport = 0;       ///< of the optimal gait (absolute work / (m g d))

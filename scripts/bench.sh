@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs the dynamics micro-benchmarks and prints a markdown table of per-benchmark median and
 # minimum time over 15 repetitions, with the ratio of each median to BM_MassMatrix's; then
-# the OCP solve-time table (bench/ocp_bench.cpp), the solve-time profile (where a
+# the OCP solve-time table (bench/ocp_bench.cpp), the default's whole solves paired against
+# its double support in theta (scripts/paired_times.py), the solve-time profile (where a
 # whole solve's time goes, and the solver settings measured against the shipped ones,
 # bench/solve_profile.cpp), every shipped config with MUMPS and with gaitopt's KKT solver
 # (configs/studies/linear_solver_compare.yaml) and how often each converges on the five-link
@@ -70,6 +71,17 @@ echo
 ocp="$1/bench/ocp_bench"
 [[ -x "$ocp" ]] || { echo "error: $ocp not built" >&2; exit 1; }
 "$ocp" 5
+
+echo
+gaitopt="$1/apps/gaitopt"
+[[ -x "$gaitopt" ]] || { echo "error: $gaitopt not built" >&2; exit 1; }
+default_case="$gaitopt:configs/ocp/mu2004_walk.yaml"
+echo "The five-link default against its double support in theta as shipped until 2026-11-29 (six"
+echo "equal segments), whole processes run in turn:"
+/usr/bin/python3 scripts/paired_times.py --runs 15 --out "$1/paired_times.md" \
+  "theta=$default_case:constraints.dsp_reduced_coordinates=false:phases[1].first_segment=0.16666666666666667" \
+  "default=$default_case"
+echo "(also in $1/paired_times.{md,csv}; results/paired_times.{md,csv} are copies)"
 
 echo
 profile="$1/bench/solve_profile"
