@@ -34,12 +34,17 @@ def parse_case(text):
     return {"label": label, "binary": parts[0], "config": parts[1], "sets": parts[2:]}
 
 
-def run_once(case, out_dir):
-    """One whole `gaitopt optimize` process: solve s, process s, peak MiB, iterations, cost."""
-    command = [case["binary"], "optimize", "--config", case["config"], "--out", str(out_dir),
-               "--no-plots", "--quiet"]
+def solve_command(case):
+    """The case's `gaitopt optimize` command line, without its output options."""
+    command = [case["binary"], "optimize", "--config", case["config"]]
     for setting in case["sets"]:
         command += ["--set", setting]
+    return command
+
+
+def run_once(case, out_dir):
+    """One whole `gaitopt optimize` process: solve s, process s, peak MiB, iterations, cost."""
+    command = solve_command(case) + ["--out", str(out_dir), "--no-plots", "--quiet"]
     with tempfile.TemporaryFile(mode="w+") as err:
         start = time.perf_counter()
         child = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=err)
@@ -58,12 +63,6 @@ def run_once(case, out_dir):
 
 def load_average():
     return " ".join(Path("/proc/loadavg").read_text().split()[:3])
-
-
-def describe(case):
-    """A case as the command line it ran, without the scratch folder."""
-    sets = "".join(f" --set {setting}" for setting in case["sets"])
-    return f"{case['binary']} optimize --config {case['config']}{sets}"
 
 
 def median_of(rounds, label, key, base=None):
@@ -93,7 +92,7 @@ def table(cases, rows, rounds, loads):
              f"{rounds} rounds after one warm-up; medians, and medians of the ratios to "
              f"{cases[0]['label']} taken round by round. Load average before and after: "
              f"{loads[0]}; {loads[1]}. The cases: "
-             + "; ".join(f"{c['label']} = `{describe(c)}`" for c in cases) + ".", "",
+             + "; ".join(f"{c['label']} = `{' '.join(solve_command(c))}`" for c in cases) + ".", "",
              "| case | iterations | cost J | solve s | process s | peak MiB | solve / base | "
              "process / base |",
              "|---|---:|---:|---:|---:|---:|---:|---:|"]
