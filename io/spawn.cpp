@@ -21,23 +21,12 @@ struct FileActions {
   FileActions& operator=(const FileActions&) = delete;
 };
 
-}  // namespace
-
-int runProgram(const std::vector<std::string>& argv, bool quiet) {
-  return runProgramInto(argv, quiet ? "/dev/null" : "");
-}
-
-int runProgramInto(const std::vector<std::string>& argv, const std::string& log) {
+/// Starts argv with the file actions `fa` and waits for it.
+int spawnAndWait(const std::vector<std::string>& argv, const FileActions& fa) {
   if (argv.empty()) throw std::invalid_argument("runProgram: empty argument vector");
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
-  FileActions fa;
-  if (!log.empty()) {
-    posix_spawn_file_actions_addopen(&fa.actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
-                                     0644);
-    posix_spawn_file_actions_adddup2(&fa.actions, 1, 2);
-  }
   pid_t pid = 0;
   const int error = ::posix_spawn(&pid, args[0], &fa.actions, nullptr, args.data(), environ);
   if (error != 0)
@@ -47,6 +36,26 @@ int runProgramInto(const std::vector<std::string>& argv, const std::string& log)
     if (errno != EINTR) throw std::system_error(errno, std::generic_category(), "waitpid");
   if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
   return WEXITSTATUS(status);
+}
+
+}  // namespace
+
+int runProgram(const std::vector<std::string>& argv, Output output) {
+  if (output == Output::kNone) return runProgramInto(argv, "/dev/null");
+  FileActions fa;
+  if (output == Output::kErrors)
+    posix_spawn_file_actions_addopen(&fa.actions, 1, "/dev/null", O_WRONLY, 0);
+  return spawnAndWait(argv, fa);
+}
+
+int runProgramInto(const std::vector<std::string>& argv, const std::string& log) {
+  FileActions fa;
+  if (!log.empty()) {
+    posix_spawn_file_actions_addopen(&fa.actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                     0644);
+    posix_spawn_file_actions_adddup2(&fa.actions, 1, 2);
+  }
+  return spawnAndWait(argv, fa);
 }
 
 }  // namespace gaitopt::io

@@ -22,21 +22,22 @@ std::string scriptDir() {
 
 }  // namespace
 
-int plotScriptStatus(const std::string& script, const std::vector<std::string>& args) {
+int plotScriptStatus(const std::string& script, const std::vector<std::string>& args,
+                     io::Output output) {
   std::fflush(stdout);  // keep our progress lines before the script's output
   const std::string python = "/usr/bin/python3";
   std::vector<std::string> argv = {python, scriptDir() + "/" + script};
   argv.insert(argv.end(), args.begin(), args.end());
   try {
     if (!std::filesystem::exists(python) ||
-        io::runProgram({python, "-c", "import matplotlib"}, true) != 0) {
+        io::runProgram({python, "-c", "import matplotlib"}, io::Output::kNone) != 0) {
       fmt::print(stderr,
                  "warning: no pictures: {} with matplotlib is missing "
                  "(apt-get install python3-matplotlib)\n",
                  python);
       return -1;
     }
-    const int status = io::runProgram(argv);
+    const int status = io::runProgram(argv, output);
     if (status != 0 && status != kScriptInputError)
       fmt::print(stderr, "warning: plotting failed: {} exited {}\n", script, status);
     return status;
@@ -46,13 +47,14 @@ int plotScriptStatus(const std::string& script, const std::vector<std::string>& 
   }
 }
 
-bool runPlotScript(const std::string& script, const std::vector<std::string>& args) {
-  return plotScriptStatus(script, args) == 0;
+bool runPlotScript(const std::string& script, const std::vector<std::string>& args,
+                   io::Output output) {
+  return plotScriptStatus(script, args, output) == 0;
 }
 
 std::function<void(const std::string& dir)> gaitPictures(bool plots) {
   if (!plots) return {};
-  return [](const std::string& dir) { runPlotScript("gait_plots.py", {dir}); };
+  return [](const std::string& dir) { runPlotScript("gait_plots.py", {dir}, io::Output::kErrors); };
 }
 
 }  // namespace gaitopt::report

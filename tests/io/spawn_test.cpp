@@ -2,6 +2,7 @@
 #include "io/spawn.hpp"
 
 #include <system_error>
+#include <tuple>
 
 #include "io_test_dir.hpp"
 
@@ -22,6 +23,21 @@ TEST_F(SpawnTest, ArgumentsAreNotExpandedByAShell) {
   EXPECT_TRUE(std::filesystem::exists(arg));
   EXPECT_FALSE(std::filesystem::exists(path("PWNED")));
   EXPECT_FALSE(std::filesystem::exists("PWNED"));
+}
+
+// kErrors keeps the program's stderr and drops its stdout; kNone drops both. The capture
+// redirects this process's descriptors, which the child inherits.
+TEST_F(SpawnTest, OutputChoosesTheStreamsThatReachOurs) {
+  const std::vector<std::string> both = {"/bin/sh", "-c", "echo listed; echo warned >&2"};
+  for (const auto& [output, out, err] :
+       {std::tuple{Output::kAll, "listed\n", "warned\n"},
+        std::tuple{Output::kErrors, "", "warned\n"}, std::tuple{Output::kNone, "", ""}}) {
+    testing::internal::CaptureStdout();
+    testing::internal::CaptureStderr();
+    EXPECT_EQ(runProgram(both, output), 0);
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), err);
+    EXPECT_EQ(testing::internal::GetCapturedStdout(), out);
+  }
 }
 
 TEST_F(SpawnTest, MissingProgramIsAnError) {

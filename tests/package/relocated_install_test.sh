@@ -40,6 +40,9 @@ check() { # check NAME COMMAND...: runs it, fails with its output unless it exit
 check optimize "$G" optimize --config "$TMP/moved/share/gaitopt/configs/ocp/rabbit_kelly2017.yaml" \
   --out opt --rate 200 --quiet
 [[ -f opt/trajectory.csv && -f opt/overview.png ]] || { echo "FAIL: optimize: no pictures"; exit 1; }
+# The pictures are drawn in the staging folder opt.tmp-PID, renamed to opt when complete: no
+# line may name it.
+! grep -q 'opt\.tmp-' out.log || { echo "FAIL: optimize named its staging folder: $(cat out.log)"; exit 1; }
 check simulate "$G" simulate --reference opt --controller hzd --steps 3 --no-poincare --rate 100 \
   --out walk --quiet
 grep -q '"steps_completed": 3' walk/summary.json || { echo "FAIL: simulate: $(cat out.log)"; exit 1; }
