@@ -45,7 +45,7 @@ SUMMARY_NUMBERS = ["step_length", "duration", "speed", "friction", "min_normal_f
 KINEMATICS_TOLERANCE = 1e-6
 # Stick-diagram frames per phase (the DSP gets fewer: it is a sixth of the step or less).
 SSP_FRAMES, DSP_FRAMES = 12, 4
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -85,10 +85,16 @@ def robot_file_foot(text):
         return (float(m[1]), float(m[2])) if m else None
 
 
+# The reason robot_foot gives for a robot whose summary.json says it walks on point tips.
+POINT_FEET = "point feet (summary.json)"
+
+
 def robot_foot(s):
-    """((heel, toe) [m], where it came from), or (None, reason) when unknown."""
+    """((heel, toe) [m], where it came from), or (None, reason) for point tips: summary.json's
+    foot, else (folders written before the summary named it) the robot file of that name."""
     if "foot" in s:
-        return (float(s["foot"]["heel"]), float(s["foot"]["toe"])), "summary.json"
+        foot = (float(s["foot"]["heel"]), float(s["foot"]["toe"]))
+        return (foot, "summary.json") if any(foot) else (None, POINT_FEET)
     files = ([os.path.join(ROOT, s["robot_file"])] if isinstance(s.get("robot_file"), str)
              else sorted(glob.glob(os.path.join(ROOT, "configs", "robots", "*.yaml"))))
     for path in files:
@@ -558,7 +564,7 @@ def main(result_dir):
     g = Gait(result_dir)
     if not g.dsp.any():
         print("dsp_zmp.png skipped: the trajectory has no DSP rows", file=sys.stderr)
-    if g.foot is None:
+    if g.foot is None and g.foot_source != POINT_FEET:
         print(f"note: ZMP drawn against point tips: {g.foot_source}", file=sys.stderr)
     for name, make in pictures(g):
         path = os.path.join(result_dir, name)

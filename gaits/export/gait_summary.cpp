@@ -20,7 +20,9 @@ ordered_json robotJson(const dynamics::Model& model) {
     links.push_back({{"name", l.name}, {"length", l.length}, {"continues", l.continues}});
   ordered_json joints = ordered_json::array();
   for (const auto& j : model.joints()) joints.push_back({{"name", j.name}});
-  return {{"links", links}, {"joints", joints}};
+  // The foot the ZMP margins were taken against (0 and 0: point tips), for the pictures.
+  const dynamics::Foot& foot = model.foot();
+  return {{"links", links}, {"joints", joints}, {"foot", {{"heel", foot.heel}, {"toe", foot.toe}}}};
 }
 
 double costOf(const std::string& type, double work, double torque_sq, double cot) {

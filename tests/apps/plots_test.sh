@@ -350,6 +350,10 @@ s = {"robot": "made_up", "status": "designed", "step_length": L, "duration": T, 
      "joints": [{"name": j} for j in ["stance_ankle", "stance_knee", "stance_hip", "swing_hip", "swing_knee"]]}
 if foot == "summary":
     s["foot"] = {"heel": 0.05, "toe": 0.15}
+elif foot == "point":
+    s["foot"] = {"heel": 0.0, "toe": 0.0}
+elif foot == "robot_file":  # a folder written before summaries named the foot
+    s["robot"] = "mu2004_five_link"
 json.dump(s, open(f"{out}/summary.json", "w"))
 PY
 }
@@ -408,6 +412,19 @@ PY
 make_gait "$TMP/pointfoot" none
 plot gait_plots.py "$TMP/pointfoot"
 [[ $RC -eq 0 ]] && grep -q "ZMP drawn against point tips" "$TMP/err" || fail "(h) no foot: $(cat "$TMP/err")"
+# A summary that says point feet: no note. One without the key: the foot of the shipped robot
+# file of that name (configs/robots/, beside plots/ in a checkout and in an installation).
+make_gait "$TMP/pointfeet" point
+plot gait_plots.py "$TMP/pointfeet"
+[[ $RC -eq 0 && ! -s "$TMP/err" ]] || fail "(h) point feet: $(cat "$TMP/err")"
+make_gait "$TMP/robotfile" robot_file
+(cd "$PLOTS" && "$PY" - "$TMP/robotfile" <<'PY') || fail "(h) foot from the robot file"
+import sys
+import gait_plots
+g = gait_plots.Gait(sys.argv[1])
+assert g.foot == (0.05, 0.15) and g.foot_source == "configs/robots/mu2004_five_link.yaml", (
+    g.foot, g.foot_source)
+PY
 G="$TMP/torn"
 make_gait "$G"
 edit "$G/trajectory.csv" "lines = text.split('\n'); lines[4] = lines[4].rsplit(',', 1)[0]; text = '\n'.join(lines)"

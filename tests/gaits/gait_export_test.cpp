@@ -135,6 +135,13 @@ TEST_F(GaitExport, SummaryKeepsTheStatesEitherSideOfTheSwitchAndAtTheEnd) {
   EXPECT_EQ(summary["step_end"]["fe_y"].get<double>(), step_->knots().back().force_swing.y());
 }
 
+// The foot of configs/robots/mu2004_five_link.yaml, which the pictures draw the ZMP against.
+TEST_F(GaitExport, SummaryNamesTheFootOfTheRobot) {
+  const auto summary = readJson(dir_ / "summary.json");
+  EXPECT_EQ(summary["foot"]["heel"].get<double>(), 0.05);
+  EXPECT_EQ(summary["foot"]["toe"].get<double>(), 0.15);
+}
+
 TEST_F(GaitExport, ReadingTheFolderGivesTheStepBackAndTheSameChecks) {
   const Trajectory back = gaits::readTrajectoryCsv(csv(), *model_);
   ASSERT_EQ(back.knots().size(), step_->knots().size());
