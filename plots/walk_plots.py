@@ -203,9 +203,11 @@ def mark_steps(ax, w, labels=True):
         ax.axvline(t, color="k", ls=":", lw=0.8, label="step start" if k == 0 else None)
         if labels:
             impact = w.impact_before(step)
+            # Upright: ten steps' labels side by side ran into each other.
             ax.annotate(f"{step}" + (f" ({impact})" if impact else ""), (t, 0),
                         xycoords=("data", "axes fraction"), xytext=(2, 3),
-                        textcoords="offset points", fontsize=7, color="0.3")
+                        textcoords="offset points", fontsize=7, color="0.3", rotation=90,
+                        va="bottom")
     if w.s["fell"]:
         ax.axvline(w.t[-1], color="tab:red", lw=1.2, label="fall")
 
@@ -448,7 +450,7 @@ def overview_figure(w):
     draw_all_torques(fig.add_subplot(grid[2, 0]), w)
     draw_friction(fig.add_subplot(grid[2, 1]), w)
     fig.suptitle(headline(w), fontsize=11)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0, 1, 0.98))  # the headline above the stick diagram's title
     return fig
 
 
