@@ -30,7 +30,8 @@ void runCompare(const CompareOptions& o) {
   out.write([&](const std::string& dir) {
     std::vector<std::string> args = o.dirs;
     args.push_back(dir);
-    const int status = report::plotScriptStatus("compare_gaits.py", args);
+    // Its list of what it wrote names the staging folder (io/output/output_folder.hpp).
+    const int status = report::plotScriptStatus("compare_gaits.py", args, io::Output::kErrors);
     if (status == report::kScriptInputError)  // a malformed folder; the script named the file
       throw io::CommandError(io::kExitInputError, "");
     if (status != 0)

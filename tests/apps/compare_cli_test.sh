@@ -22,6 +22,8 @@ for f in comparison.md comparison.png angles_overlay.png torques_overlay.png for
 done
 grep -q "^| step length \[m\] | 0.350 | 0.350 | 1.00 |" "$TMP/cmp/comparison.md" ||
   fail "(a) table: $(cat "$TMP/cmp/comparison.md")"
+# Written in cmp.tmp-PID and renamed to cmp when complete: no line names the staging folder.
+! grep -q 'cmp\.tmp-' "$TMP/out" || fail "(a) named its staging folder: $(cat "$TMP/out")"
 
 # (a') three folders: a column per gait, each against A, and a first row saying which hip plan each
 # polynomial gait has (Mu's own design, or searched for the foot).
