@@ -21,10 +21,8 @@ The foot (heel and toe around each tip) comes from summary.json's `foot` key, or
 robot file in configs/robots/ that the summary names; without either the tips are points.
 A missing file, column or key, or a malformed value, ends the script with exit code 1.
 """
-import glob
 import math
 import os
-import re
 import sys
 
 import matplotlib
@@ -33,6 +31,7 @@ import numpy as np
 import plot_io
 import plot_style as style
 from plot_io import InputError
+from robot_foot import POINT_FEET, robot_foot
 
 plt = style.pyplot()
 
@@ -45,7 +44,6 @@ SUMMARY_NUMBERS = ["step_length", "duration", "speed", "friction", "min_normal_f
 KINEMATICS_TOLERANCE = 1e-6
 # Stick-diagram frames per phase (the DSP gets fewer: it is a sixth of the step or less).
 SSP_FRAMES, DSP_FRAMES = 12, 4
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -65,49 +63,7 @@ def read_summary(path, n):
                 and isinstance(link.get("length"), (int, float))
                 and isinstance(link.get("continues"), bool)):
             raise InputError(f"{path}: key 'links[{i}]': expected {{name, length, continues}}")
-    if "foot" in s:
-        plot_io.require_type(path, s, "foot", dict, "an object {heel, toe}")
-        plot_io.require_numbers(path, s["foot"], ["heel", "toe"], prefix="foot.")
     return s
-
-
-def robot_file_foot(text):
-    """(heel, toe) from a robot YAML text's `foot: {heel: .., toe: ..}`, or None."""
-    try:
-        import yaml
-        foot = (yaml.safe_load(text) or {}).get("foot")
-        if isinstance(foot, dict) and all(plot_io.is_number(foot.get(k)) for k in ("heel", "toe")):
-            return float(foot["heel"]), float(foot["toe"])
-        return None
-    except ImportError:
-        m = re.search(r"^foot:\s*\{\s*heel:\s*([-+.\deE]+)\s*,\s*toe:\s*([-+.\deE]+)\s*\}",
-                      text, re.M)
-        return (float(m[1]), float(m[2])) if m else None
-
-
-# The reason robot_foot gives for a robot whose summary.json says it walks on point tips.
-POINT_FEET = "point feet (summary.json)"
-
-
-def robot_foot(s):
-    """((heel, toe) [m], where it came from), or (None, reason) for point tips: summary.json's
-    foot, else (folders written before the summary named it) the robot file of that name."""
-    if "foot" in s:
-        foot = (float(s["foot"]["heel"]), float(s["foot"]["toe"]))
-        return (foot, "summary.json") if any(foot) else (None, POINT_FEET)
-    files = ([os.path.join(ROOT, s["robot_file"])] if isinstance(s.get("robot_file"), str)
-             else sorted(glob.glob(os.path.join(ROOT, "configs", "robots", "*.yaml"))))
-    for path in files:
-        try:
-            with open(path, encoding="utf-8") as f:
-                text = f.read()
-        except OSError:
-            continue
-        if re.search(rf"^name:\s*{re.escape(str(s['robot']))}\s*$", text, re.M):
-            foot = robot_file_foot(text)
-            if foot is not None:
-                return foot, os.path.relpath(path, ROOT)
-    return None, f"no foot in summary.json or in a robot file named {s['robot']}"
 
 
 class Gait:
@@ -119,7 +75,8 @@ class Gait:
         self.col, self.phase, self.n = self.traj.col, self.traj.phase, self.traj.n
         self.traj.require([f"dtheta{i}" for i in range(1, self.n + 1)]
                           + [f"tau{j}" for j in range(self.n)])
-        self.s = read_summary(os.path.join(result_dir, "summary.json"), self.n)
+        summary_path = os.path.join(result_dir, "summary.json")
+        self.s = read_summary(summary_path, self.n)
         self.t = self.traj.t
         self.theta = self.traj.stack("theta", 1, self.n)
         self.dtheta = self.traj.stack("dtheta", 1, self.n)
@@ -133,7 +90,7 @@ class Gait:
         if np.any(self.torso != self.torso[self.swap]):
             raise InputError("summary.json: key 'links': the torso (continues = false) must sit "
                              "in the middle of the chain for the leg swap")
-        self.foot, self.foot_source = robot_foot(self.s)
+        self.foot, self.foot_source = robot_foot(summary_path, self.s)
         self.check_kinematics(csv_path)
 
     def link_points(self, k):

@@ -144,4 +144,28 @@ expect_error "(e) missing key" "$TMP/no_status/summary.json: missing key 'status
 compare "$A"
 [[ $RC -eq 1 ]] && grep -q "^Usage: compare_gaits.py A_DIR B_DIR" "$TMP/err" || fail "(f) usage"
 
+# (g) The ZMP panel draws the stance foot's heel and toe of each gait whose summary names a foot
+# (A: 5 cm heel, 15 cm toe), and none for point tips (B names none, and no robot file is
+# "made_up"); a malformed foot names its key.
+cp -r "$A" "$TMP/footed"
+"$PY" -c "import json, sys; p = sys.argv[1]; s = json.load(open(p))
+s['foot'] = {'heel': 0.05, 'toe': 0.15}; json.dump(s, open(p, 'w'))" "$TMP/footed/summary.json"
+(cd "$ROOT/plots" && "$PY" - "$TMP/footed" "$B" <<'PY') || fail "(g) foot lines"
+import sys
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import compare_gaits
+a, b = compare_gaits.Gait(sys.argv[1], "A", "-"), compare_gaits.Gait(sys.argv[2], "B", "--")
+assert a.foot == (0.05, 0.15) and b.foot is None, (a.foot, b.foot)
+fig, ax = plt.subplots()
+compare_gaits.draw_zmp(ax, [a, b])
+dotted = sorted(line.get_ydata()[0] for line in ax.lines if line.get_linestyle() == ":")
+assert dotted == [-0.05, 0.15], dotted
+PY
+"$PY" -c "import json, sys; p = sys.argv[1]; s = json.load(open(p))
+s['foot'] = {'heel': 'long', 'toe': 0.15}; json.dump(s, open(p, 'w'))" "$TMP/footed/summary.json"
+expect_error "(g) malformed foot" "$TMP/footed/summary.json: key 'foot.heel'" "$TMP/footed" "$B" \
+  "$TMP/out_g"
+
 echo "compare_plots_test: all checks passed"
