@@ -17,7 +17,7 @@ ending in .md), creates it and writes, printing one line per file written:
                        with the friction coefficient (summary key 'friction') when present
   zmp_overlay.png      zmp_x with the support interval (stance tip B at x = 0; in the DSP up
                        to the leading tip E at step_length, or swing_x when the key is absent)
-                       and the heel and toe of B's foot (robot_foot.py) for gaits on feet
+                       and B's foot, heel to toe, shaded for gaits on feet (robot_foot.py)
   comparison.png       angles, torques, normal forces and ZMP on one page
 The pictures read each folder's trajectory.csv: A solid, B dashed, C dotted, D dash-dotted, one
 colour per quantity; grey vertical lines mark each gait's touchdown (SSP -> DSP; the step end for a
@@ -338,9 +338,8 @@ def draw_zmp(ax, gaits):
     # The foot in the single support: a ZMP outside [-heel, toe] tips the stance foot.
     for foot in dict.fromkeys(g.foot for g in gaits if g.foot is not None):
         tags = ", ".join(g.tag for g in gaits if g.foot == foot)
-        for edge in (-foot[0], foot[1]):
-            ax.axhline(edge, color=style.FOOT_EDGE, ls=":", lw=1.2)
-        entries.append((style.FOOT_EDGE, f"foot of B ({tags}): heel {foot[0]:g} m, toe {foot[1]:g} m"))
+        ax.axhspan(-foot[0], foot[1], gid="foot", **style.FOOT_SHADE)
+        entries.append((style.FOOT_SHADE["color"], f"foot of B ({tags}): heel {foot[0]:g} m, toe {foot[1]:g} m"))
     for g in gaits:
         ax.plot(g.t, g.col["zmp_x"], color=style.ZMP, ls=g.ls, lw=1.6)
     mark_phases(ax, gaits)

@@ -38,8 +38,9 @@ TOUCHDOWN = "0.45"
 DSP_SHADE = {"color": "tab:purple", "alpha": 0.12, "lw": 0}
 # The support region (foot or feet) behind a ZMP curve.
 SUPPORT_SHADE = {"color": "0.85", "lw": 0}
-# The heel and toe lines of a foot drawn over a ZMP curve.
-FOOT_EDGE = "tab:brown"
+# The stance foot from heel to toe behind the ZMP curves of several gaits (their line styles
+# tell the gaits apart, so the foot is a band, not lines).
+FOOT_SHADE = {"color": "tab:brown", "alpha": 0.12, "lw": 0}
 WALK_SHADE = {"color": "tab:green", "alpha": 0.12, "lw": 0}
 
 

@@ -144,13 +144,13 @@ expect_error "(e) missing key" "$TMP/no_status/summary.json: missing key 'status
 compare "$A"
 [[ $RC -eq 1 ]] && grep -q "^Usage: compare_gaits.py A_DIR B_DIR" "$TMP/err" || fail "(f) usage"
 
-# (g) The ZMP panel draws the stance foot's heel and toe of each gait whose summary names a foot
+# (g) The ZMP panel shades the stance foot from heel to toe for each gait whose summary names a foot
 # (A: 5 cm heel, 15 cm toe), and none for point tips (B names none, and no robot file is
 # "made_up"); a malformed foot names its key.
 cp -r "$A" "$TMP/footed"
 "$PY" -c "import json, sys; p = sys.argv[1]; s = json.load(open(p))
 s['foot'] = {'heel': 0.05, 'toe': 0.15}; json.dump(s, open(p, 'w'))" "$TMP/footed/summary.json"
-(cd "$ROOT/plots" && "$PY" - "$TMP/footed" "$B" <<'PY') || fail "(g) foot lines"
+(cd "$ROOT/plots" && "$PY" - "$TMP/footed" "$B" <<'PY') || fail "(g) foot band"
 import sys
 import matplotlib
 matplotlib.use("Agg")
@@ -160,8 +160,8 @@ a, b = compare_gaits.Gait(sys.argv[1], "A", "-"), compare_gaits.Gait(sys.argv[2]
 assert a.foot == (0.05, 0.15) and b.foot is None, (a.foot, b.foot)
 fig, ax = plt.subplots()
 compare_gaits.draw_zmp(ax, [a, b])
-dotted = sorted(line.get_ydata()[0] for line in ax.lines if line.get_linestyle() == ":")
-assert dotted == [-0.05, 0.15], dotted
+feet = [p.get_xy()[:, 1] for p in ax.patches if p.get_gid() == "foot"]
+assert len(feet) == 1 and (feet[0].min(), feet[0].max()) == (-0.05, 0.15), feet
 PY
 "$PY" -c "import json, sys; p = sys.argv[1]; s = json.load(open(p))
 s['foot'] = {'heel': 'long', 'toe': 0.15}; json.dump(s, open(p, 'w'))" "$TMP/footed/summary.json"
