@@ -58,11 +58,22 @@ void animateGait(ReportContent& c, const sim::ReferenceFolder& gait) {
       gait.dir, gait.model.name());
 }
 
+/// The robot a walk folder's summary names: its robot_file as simulate found it (a path from
+/// where simulate ran), else the robot file of that name (sim::robotOfFolder); empty if neither.
+std::string walkRobotFile(const ReportContent& c, const std::string& dir) {
+  const std::string recorded = c.summary.value("robot_file", "");
+  if (!recorded.empty() && fs::is_regular_file(recorded)) return recorded;
+  try {
+    return sim::robotOfFolder(dir);
+  } catch (const config::ConfigError&) {
+    return "";  // the page is still drawn, its links unnamed
+  }
+}
+
 /// The walk as simulated, every step in the world frame (stick.csv).
 void animateWalk(ReportContent& c, const std::string& dir) {
   c.frames = framesJson(readStickCsv(dir + "/stick.csv"));
-  const std::string robot = c.summary.value("robot_file", "");
-  if (!robot.empty() && fs::is_regular_file(robot))
+  if (const std::string robot = walkRobotFile(c, dir); !robot.empty())
     c.link_names = linkNames(dynamics::loadRobot(robot));
   c.animation_note = fmt::format(
       "The closed-loop walk of {}/stick.csv in the world frame; link colours follow the legs "

@@ -15,10 +15,7 @@
 #include "io/terminal_text.hpp"
 
 namespace gaitopt::sim {
-namespace {
 
-/// The robot file named by the folder's summary.json, by the configs/robots convention: under the
-/// working directory (a user's own robots), else the shipped one (io/data_dir.hpp).
 std::string robotOfFolder(const std::string& dir) {
   const std::string summary = dir + "/summary.json";
   if (!std::filesystem::is_regular_file(summary))
@@ -37,6 +34,8 @@ std::string robotOfFolder(const std::string& dir) {
                   "--robot FILE",
                   path, io::dataDir()));
 }
+
+namespace {
 
 /// The ground slope the gait was designed for: summary.json's "slope_rad", 0 when the folder
 /// has no summary or the key (results written before slopes existed) [rad].

@@ -19,6 +19,13 @@ struct ReferenceFolder {
   gaits::Trajectory step;
 };
 
+/// The robot file named by the result folder's summary.json ("robot"), by the configs/robots
+/// convention: configs/robots/NAME.yaml under the working directory (a user's own robots), else
+/// the shipped one (io/data_dir.hpp).
+/// @throws config::ConfigError when the folder has no summary, it names no robot, or neither
+///         file exists.
+std::string robotOfFolder(const std::string& dir);
+
 /// @throws config::ConfigError unless the result folder `dir` holds a usable gait of `model`:
 /// no FAILED.txt, not "converged": false, and summary.json's robot (when recorded) is model's.
 void requireGaitOf(const std::string& dir, const dynamics::Model& model);

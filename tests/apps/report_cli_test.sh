@@ -54,6 +54,21 @@ gif = Image.open(sys.argv[1] + "/walk.gif")
 assert gif.n_frames >= frames - 1, (gif.n_frames, frames)
 PY
 
+# (b') the page of a walk whose robot file was given relative to the repository, made from
+# another folder: its links are still named (the robot of the summary's name).
+run simulate --robot tests/apps/mu2004_five_link_long_heel.yaml --reference "$TMP/poly" --steps 1 \
+  --no-poincare --no-plots --out "$TMP/walk_rel"
+[[ $RC -eq 0 ]] || fail "(b') simulate exited $RC: $(cat "$TMP/err")"
+(cd "$TMP" && "$GAITOPT" report walk_rel --no-gif >/dev/null 2>"$TMP/err") ||
+  fail "(b') report exited: $(cat "$TMP/err")"
+"$PY" - "$TMP/walk_rel/report.html" <<'PY' || fail "(b') link names"
+import json, re, sys
+page = open(sys.argv[1]).read()
+data = json.loads(re.search(r"const DATA = (.*?);\n", page).group(1))
+names = ["stance_shank", "stance_thigh", "torso", "swing_thigh", "swing_shank"]
+assert data["link_names"] == names, data["link_names"]
+PY
+
 # (c) not a result folder: exit 2 naming it; no page written.
 mkdir -p "$TMP/empty"
 run report "$TMP/empty"
