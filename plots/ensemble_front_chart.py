@@ -12,7 +12,8 @@ optimum (summary.json's cost). Writes into STUDY_DIR, printing their paths:
                      walked 20 steps without a gap around the nominal (empty when the nominal fails)
   OUT_DIR/front.md   the same as a table
   OUT_DIR/front.png  cost ratio against the width of each interval, one line per ground and
-                     controller, the points labelled with the ensemble width
+                     controller, the points labelled with the ensemble width; a gait that
+                     falls on the nominal plant left of the intervals, under "falls at ×1"
 A missing or malformed input ends the script with "error: <file>: ..." and exit code 1.
 """
 import os
@@ -129,19 +130,50 @@ def write_tables(rows, out):
             f.write(f"| {r['width_percent']} | {cost} | {posture} | " + " | ".join(cells) + " |\n")
 
 
+# Where a gait that falls on the nominal plant is drawn: left of the intervals, apart from a
+# gait that walks the nominal plant only (an interval of width 0).
+FALLS_AT = -0.06
+# Marker sizes by ground, largest first, so that coinciding points of several grounds all show.
+MARKER_SIZES = [9, 6.5, 4]
+
+
+def front_points(rows, ground, controller):
+    """[(interval width or FALLS_AT, cost ratio, ensemble width W)] of the converged widths."""
+    points = []
+    for r in rows:
+        if r["converged"]:
+            walked = r[(ground, controller)]
+            points.append((FALLS_AT if walked is None else walked[1] - walked[0],
+                           r["cost_ratio"], r["width_percent"]))
+    return points
+
+
+def label_points(ax, points):
+    """One label per place (cost ratios equal to 0.01 share one), naming every ensemble width
+    drawn there ("W=5, 10")."""
+    at = {}
+    for x, y, width in points:
+        at.setdefault((x, round(y, 2)), []).append((y, width))
+    for (x, _), drawn in at.items():
+        text = "W=" + ", ".join(str(w) for w in sorted({w for _, w in drawn}))
+        ax.annotate(text, (x, max(y for y, _ in drawn)), fontsize=7, xytext=(5, 3),
+                    textcoords="offset points")
+
+
 def draw(rows, path):
     plt = style.pyplot()
-    fig, axes = plt.subplots(1, len(CONTROLLERS), figsize=(9, 3.6), sharey=True)
-    converged = [r for r in rows if r["converged"]]
+    fig, axes = plt.subplots(1, len(CONTROLLERS), figsize=(9, 3.8), sharey=True)
     for ax, (controller, label) in zip(axes, CONTROLLERS.items()):
-        for ground, marker in zip(GROUNDS, "osD"):
-            spans = [(r["cost_ratio"], 0.0 if r[(ground, controller)] is None else
-                      r[(ground, controller)][1] - r[(ground, controller)][0], r["width_percent"])
-                     for r in converged]
-            ax.plot([s[1] for s in spans], [s[0] for s in spans], marker=marker, label=ground)
-            for ratio, span, width in spans:
-                ax.annotate(f"W={width}", (span, ratio), fontsize=7, xytext=(3, 3),
-                            textcoords="offset points")
+        drawn = []
+        for ground, marker, size in zip(GROUNDS, "osD", MARKER_SIZES):
+            points = front_points(rows, ground, controller)
+            ax.plot([p[0] for p in points], [p[1] for p in points], marker=marker,
+                    markersize=size, label=ground)
+            drawn += points
+        label_points(ax, drawn)
+        ax.axvline(FALLS_AT / 2, color="0.6", lw=0.8, ls=":")
+        ax.set_xticks([FALLS_AT] + [t for t in ax.get_xticks() if t >= 0])
+        ax.set_xticklabels(["falls\nat ×1"] + [f"{t:g}" for t in ax.get_xticks()[1:]])
         style.finish(ax, "plant-mass interval walked 20 steps (width)", "cost / default optimum's",
                      title=label)
     fig.suptitle("Ensemble widths: cost against the mass interval walked "

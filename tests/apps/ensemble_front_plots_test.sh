@@ -39,6 +39,23 @@ has_text "$out/front.md" "| 20 | 900.0 (9.00), not converged | —, —, — |" 
 grep -q "^10,1,250,2.5,12,44,56,0.9-1.1,,," "$out/front.csv" ||
   fail "width 10 csv row: $(cat "$out/front.csv")"
 
+# Where the chart puts a width: a gait that falls on the nominal plant apart from one that walks
+# it only (an interval of width 0), a failed solve not at all; widths drawn at one place (cost
+# ratios equal to 0.01) share one label.
+(cd "$ROOT/plots" && "$PY" - <<'PY') || fail "front points or labels"
+import ensemble_front_chart as chart
+import plot_style
+key = ("rigid", "computed_torque")
+rows = [{"converged": True, "cost_ratio": 1.5, "width_percent": 5, key: (1.0, 1.0)},
+        {"converged": True, "cost_ratio": 1.6, "width_percent": 10, key: None},
+        {"converged": False, "cost_ratio": 9.0, "width_percent": 20, key: (0.9, 1.1)}]
+points = chart.front_points(rows, *key)
+assert chart.FALLS_AT < 0 and points == [(0.0, 1.5, 5), (chart.FALLS_AT, 1.6, 10)], points
+fig, ax = plot_style.pyplot().subplots()
+chart.label_points(ax, [(0.2, 1.690, 5), (0.2, 1.692, 10), (0.3, 1.7, 15), (0.2, 1.8, 20)])
+assert sorted(t.get_text() for t in ax.texts) == ["W=15", "W=20", "W=5, 10"], ax.texts
+PY
+
 echo '{"status": "Solve_Succeeded"}' >"$TMP/default/summary.json"
 "$PY" "$chart" "$out" "$TMP/default" >/dev/null 2>"$TMP/err" && fail "a default without a cost passed"
 grep -q "^error: $TMP/default/summary.json: .*cost" "$TMP/err" || fail "stderr: $(cat "$TMP/err")"
