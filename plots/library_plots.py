@@ -116,6 +116,21 @@ def read_points(path, d, axes):
     return points
 
 
+# What a point's optimum minimised (its summary.json's cost_type), for the legend: an optimum of
+# the torque squared can cost more transport than the polynomial gait.
+COST_NAMES = {"torque_squared": "∫Στ² optimum", "abs_work": "absolute-work optimum",
+              "cost_of_transport": "cost-of-transport optimum"}
+
+
+def optimum_name(library_dir, points):
+    """COST_NAMES of the first converged point whose folder kept its summary, else 'optimal'."""
+    for p in points:
+        path = os.path.join(library_dir, "points", p["name"], "summary.json")
+        if p["converged"] and os.path.isfile(path):
+            return COST_NAMES.get(plot_io.read_json(path).get("cost_type"), "optimal")
+    return "optimal"
+
+
 def read_index(library_dir):
     """(index.json object, axes, points) of the folder."""
     if not os.path.isdir(library_dir):
@@ -153,9 +168,9 @@ def mark_failed(ax, xs, label):
             clip_on=False, zorder=4, label=label)
 
 
-def draw_cot_speed(ax, axes, points):
-    """(a) CoT against speed: one colour per (step length, slope), optimal solid, polynomial
-    dashed; failed points as red x at the bottom."""
+def draw_cot_speed(ax, axes, points, optimum="optimal"):
+    """(a) CoT against speed: one colour per (step length, slope), the optimum (named
+    `optimum`) solid, polynomial dashed; failed points as red x at the bottom."""
     speeds = axes["speed"]
     series = sorted({p["at"][1:] for p in points})
     colours = plt.get_cmap("viridis" if len(series) > 10 else "tab10")
@@ -175,7 +190,8 @@ def draw_cot_speed(ax, axes, points):
     ax.plot([], [], "k--", lw=1.2, label="polynomial gait (dashed)")
     ax.set_xlabel(AXIS_LABELS["speed"])
     ax.set_ylabel("cost of transport")
-    ax.set_title("(a) cost of transport: optimal (solid) vs polynomial (dashed)", fontsize=10)
+    ax.set_title(f"(a) cost of transport: {optimum} (solid) vs polynomial (dashed)",
+                 fontsize=10)
     ax.grid(True, alpha=0.4)
     shown = [v for p in points if p["converged"] for v in (p["cot"], p["poly"])
              if np.isfinite(v)]
@@ -293,14 +309,14 @@ def headline(d, axes, points):
             f"({dims})")
 
 
-def library_figure(d, axes, points):
+def library_figure(d, axes, points, optimum="optimal"):
     heat = len(axes["speed"]) >= 2 and len(axes["step_length"]) >= 2
     by_slope = len(axes["slope"]) >= 2
     by_key = next((k for k in config_keys(axes) if len(axes[k]) >= 2), None)
     panels = 1 + heat + by_slope + (by_key is not None)
     fig, axs = plt.subplots(1, panels, figsize=(6.4 * panels, 4.8), squeeze=False)
     axs = list(axs.flat)
-    draw_cot_speed(axs.pop(0), axes, points)
+    draw_cot_speed(axs.pop(0), axes, points, optimum)
     if heat:
         draw_heat_map(fig, axs.pop(0), axes, points)
     if by_slope:
@@ -326,7 +342,7 @@ def load_matplotlib():
 def main(library_dir):
     d, axes, points = read_index(library_dir)
     load_matplotlib()
-    fig = library_figure(d, axes, points)
+    fig = library_figure(d, axes, points, optimum_name(library_dir, points))
     path = os.path.join(library_dir, "library.png")
     plot_style.save(fig, path)
     print(path)

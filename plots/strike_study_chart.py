@@ -144,21 +144,28 @@ def write_markdown(rows, path):
 def chart(rows, path):
     """Cost against the widest interval over the controllers, one point per variant."""
     plt = style.pyplot()
+    from matplotlib.ticker import NullFormatter
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.6), sharey=True)
     solved = [rs for rs in by_variant(rows).values() if "cost" in rs[0]]
     velocities = sorted({rs[0]["strike_velocity"] for rs in solved})
     margins = sorted({(rs[0]["friction_margin"], rs[0]["zmp_margin"]) for rs in solved})
     cmap = plt.cm.viridis
     for ax, (sweep, (column, _, unit)) in zip(axes, SWEEPS.items()):
+        widest = []
         for rs in solved:
             r = rs[0]
             k = margins.index((r["friction_margin"], r["zmp_margin"]))
             colour = cmap(velocities.index(r["strike_velocity"]) / max(len(velocities) - 1, 1))
-            ax.scatter(max([width(x, column) for x in rs if "controller" in x], default=0),
-                       r["cost"], color=colour,
+            widest.append(max([width(x, column) for x in rs if "controller" in x], default=0))
+            ax.scatter(widest[-1], r["cost"], color=colour,
                        marker=MARKERS[k % len(MARKERS)], s=46, edgecolor="0.2", lw=0.5)
         ax.set_yscale("log")
         ax.set_yticks([100, 200, 500, 1000, 2000], ["100", "200", "500", "1000", "2000"])
+        ax.yaxis.set_minor_formatter(NullFormatter())  # no "6x10^2" between
+        if not any(widest):  # an axis of one value would centre it on a range of nothing
+            ax.set_xlim(-0.5, 5)
+            ax.text(0.5, 0.03, f"no variant walks a {sweep} other than the nominal",
+                    transform=ax.transAxes, ha="center", fontsize=8)
         style.finish(ax, f"widest walking {sweep} interval over the controllers [{unit}]",
                      "cost of the optimum [N² m² s]", legend=False)
     for v in velocities:

@@ -78,6 +78,19 @@ h, w = im.imread(sys.argv[1]).shape[:2]
 assert (w, h) == (1408, 528), (w, h)
 PY
 
+# (a') panel (a) names what the optimum minimised (the first converged point's summary.json),
+# so that a torque-squared optimum costing more transport than the polynomial gait reads right;
+# "optimal" when no point kept its folder.
+mkdir -p "$TMP/a/points/v0.400_L0.300_s+0.000"
+echo '{"cost_type": "torque_squared"}' >"$TMP/a/points/v0.400_L0.300_s+0.000/summary.json"
+(cd "$ROOT/plots" && "$PY" - "$TMP/a" "$TMP/b_absent" <<'PY') || fail "(a') optimum named"
+import sys
+import library_plots
+d, axes, points = library_plots.read_index(sys.argv[1])
+assert library_plots.optimum_name(sys.argv[1], points) == "∫Στ² optimum"
+assert library_plots.optimum_name(sys.argv[2], points) == "optimal"
+PY
+
 # (b) 2 speeds x 1 step x 3 slopes, one failed: CoT vs speed and vs slope (no heat map).
 make_index "$TMP/b" "[0.5, 0.7]" "[0.35]" "[-0.05, 0.0, 0.05]" 4
 plot "$TMP/b"
