@@ -164,7 +164,8 @@ def chart(rows, path):
         ax.yaxis.set_minor_formatter(NullFormatter())  # no "6x10^2" between
         if not any(widest):  # an axis of one value would centre it on a range of nothing
             ax.set_xlim(-0.5, 5)
-            ax.text(0.5, 0.03, f"no variant walks a {sweep.replace('_', ' ')} but the nominal one",
+            what = sweep.replace("_", " ")
+            ax.text(0.5, 0.03, f"no variant walks a {what} but the nominal one",
                     transform=ax.transAxes, ha="center", fontsize=8)
         style.finish(ax, f"widest walking {sweep} interval over the controllers [{unit}]",
                      "cost of the optimum [N² m² s]", legend=False)
