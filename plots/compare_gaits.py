@@ -339,7 +339,8 @@ def draw_zmp(ax, gaits):
     for foot in dict.fromkeys(g.foot for g in gaits if g.foot is not None):
         tags = ", ".join(g.tag for g in gaits if g.foot == foot)
         ax.axhspan(-foot[0], foot[1], gid="foot", **style.FOOT_SHADE)
-        entries.append((style.FOOT_SHADE["color"], f"foot of B ({tags}): heel {foot[0]:g} m, toe {foot[1]:g} m"))
+        entries.append((style.FOOT_SHADE["color"],
+                        f"foot of B ({tags}): heel {foot[0]:g} m, toe {foot[1]:g} m"))
     for g in gaits:
         ax.plot(g.t, g.col["zmp_x"], color=style.ZMP, ls=g.ls, lw=1.6)
     mark_phases(ax, gaits)
