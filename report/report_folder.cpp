@@ -52,6 +52,8 @@ std::vector<std::string> linkNames(const dynamics::Model& model) {
 void animateGait(ReportContent& c, const sim::ReferenceFolder& gait) {
   c.frames = framesJson(gaitFrames(gait.model, gait.step, kGaitFrameRate));
   c.link_names = linkNames(gait.model);
+  c.foot_heel = gait.model.foot().heel;
+  c.foot_toe = gait.model.foot().toe;
   c.animation_note = fmt::format(
       "One step of {}/trajectory.csv ({}), drawn in the frame of the stance tip; it loops. "
       "Each step the legs swap (relabelling, Mu sec. 2.4).",
@@ -70,11 +72,27 @@ std::string walkRobotFile(const ReportContent& c, const std::string& dir) {
   }
 }
 
+/// The plant's own foot from a walk's summary, which the robot file found by name need not have
+/// (walks written since 2026-12-01 record it); the foot of c unchanged without the key.
+void takeSummaryFoot(ReportContent& c) {
+  const auto& foot = c.summary.value("foot", nlohmann::ordered_json::object());
+  if (!foot.contains("heel") || !foot["heel"].is_number() || !foot.contains("toe") ||
+      !foot["toe"].is_number())
+    return;
+  c.foot_heel = foot["heel"].get<double>();
+  c.foot_toe = foot["toe"].get<double>();
+}
+
 /// The walk as simulated, every step in the world frame (stick.csv).
 void animateWalk(ReportContent& c, const std::string& dir) {
   c.frames = framesJson(readStickCsv(dir + "/stick.csv"));
-  if (const std::string robot = walkRobotFile(c, dir); !robot.empty())
-    c.link_names = linkNames(dynamics::loadRobot(robot));
+  if (const std::string robot = walkRobotFile(c, dir); !robot.empty()) {
+    const dynamics::Model model = dynamics::loadRobot(robot);
+    c.link_names = linkNames(model);
+    c.foot_heel = model.foot().heel;
+    c.foot_toe = model.foot().toe;
+  }
+  takeSummaryFoot(c);
   c.animation_note = fmt::format(
       "The closed-loop walk of {}/stick.csv in the world frame; link colours follow the legs "
       "as labelled at each step's start (stance leg first).",

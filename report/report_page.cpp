@@ -77,6 +77,7 @@ std::string renderReportPage(const ReportContent& c) {
                               {"frames", c.frames},
                               {"animation_note", c.animation_note},
                               {"link_names", c.link_names},
+                              {"foot", {c.foot_heel, c.foot_toe}},
                               {"charts", nlohmann::json::array()},
                               {"tables", nlohmann::json::array()}};
   for (const std::string& png : c.charts)

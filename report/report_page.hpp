@@ -18,8 +18,11 @@ struct ReportContent {
   nlohmann::json frames;                ///< framesJson() of the animation, null for none
   std::string animation_note;           ///< what is animated, or why nothing is
   std::vector<std::string> link_names;  ///< legend of the stick figure
-  std::vector<std::string> charts;      ///< PNG files, inlined as data URIs
-  std::vector<std::string> tables;      ///< CSV files shown as tables
+  /// The robot's foot behind and ahead of each tip [m], drawn under a tip on the ground (the
+  /// stance tip, both in the double support); 0 and 0: point tips.
+  double foot_heel = 0, foot_toe = 0;
+  std::vector<std::string> charts;  ///< PNG files, inlined as data URIs
+  std::vector<std::string> tables;  ///< CSV files shown as tables
 };
 
 /// RFC 4648 base64 of `bytes`.

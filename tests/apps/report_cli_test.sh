@@ -24,6 +24,7 @@ import base64, json, pathlib, re, sys
 page, folder = pathlib.Path(sys.argv[1]).read_text(), pathlib.Path(sys.argv[2])
 data = json.loads(re.search(r"const DATA = (.*?);\n", page).group(1))
 assert data["kind"] == "gait", data["kind"]
+assert data["foot"] == [0.05, 0.15], data["foot"]  # configs/robots/mu2004_five_link.yaml's
 f = data["frames"]
 assert f["phase"][0] == "SSP" and f["phase"][-1] == "DSP", f["phase"][::10]
 assert abs(f["t"][-1] - f["t"][0] - 0.7) < 1e-3, f["t"][-1]  # the gait's 0.6 s SSP + 0.1 s DSP
@@ -67,6 +68,7 @@ page = open(sys.argv[1]).read()
 data = json.loads(re.search(r"const DATA = (.*?);\n", page).group(1))
 names = ["stance_shank", "stance_thigh", "torso", "swing_thigh", "swing_shank"]
 assert data["link_names"] == names, data["link_names"]
+assert data["foot"] == [0.30, 0.15], data["foot"]  # the long heel walked, from the summary
 PY
 
 # (c) not a result folder: exit 2 naming it; no page written.
