@@ -3,7 +3,8 @@
 the README (the report page of `gaitopt report` animates the whole walk).
 
 Usage: walk_gif.py RESULT_DIR
-Reads RESULT_DIR/stick.csv (walk_plots.read_stick) and writes RESULT_DIR/walk.gif with Pillow,
+Reads RESULT_DIR/stick.csv (walk_plots.read_stick), and the foot from summary.json
+(robot_foot.py), and writes RESULT_DIR/walk.gif with Pillow,
 one GIF frame per stick.csv frame at its real-time spacing, the ground and the axes fixed so the
 robot is seen to walk across. A missing or malformed file ends the script with exit code 1.
 """
@@ -18,6 +19,7 @@ from matplotlib import animation  # noqa: E402
 
 import plot_io  # noqa: E402
 import walk_plots  # noqa: E402
+from robot_foot import robot_foot  # noqa: E402
 
 STEPS = 6  # shown: enough to see the gait repeat, small enough for a README (about 1 MB)
 DPI = 80
@@ -28,7 +30,19 @@ def first_steps(frames, steps):
     return [f for f in frames if f[1] <= steps]
 
 
-def draw(frames, path):
+# A tip this close to the ground [m] stands on its foot (the leading tip in the double support).
+ON_GROUND = 2e-3
+
+
+def feet_at(p0, p1, foot):
+    """([x heel, x toe], y) of each foot on the ground: under the stance tip (the first link's
+    start) and under the other tip (the last link's end) when it is on the ground."""
+    heel, toe = foot
+    tips = [p0[0]] + ([p1[-1]] if abs(p1[-1][1]) < ON_GROUND else [])
+    return [([x - heel, x + toe], [y, y]) for x, y in tips]
+
+
+def draw(frames, path, foot=None):
     starts = np.concatenate([f[2] for f in frames] + [f[3] for f in frames])
     x_min, y_min = starts.min(axis=0)
     x_max, y_max = starts.max(axis=0)
@@ -41,6 +55,7 @@ def draw(frames, path):
     ax.set_yticks([])
     lines = [ax.plot([], [], lw=4, solid_capstyle="round", color=COLORS[k % len(COLORS)])[0]
              for k in range(len(frames[0][2]))]
+    feet = [ax.plot([], [], lw=3, solid_capstyle="butt", color="0.15")[0] for _ in range(2)]
     label = ax.text(0.01, 0.92, "", transform=ax.transAxes, fontsize=10)
     fig.tight_layout()
 
@@ -48,8 +63,11 @@ def draw(frames, path):
         t, step, p0, p1 = frames[i]
         for k, line in enumerate(lines):
             line.set_data([p0[k, 0], p1[k, 0]], [p0[k, 1], p1[k, 1]])
+        drawn = feet_at(p0, p1, foot) if foot else []
+        for k, line in enumerate(feet):
+            line.set_data(*(drawn[k] if k < len(drawn) else ([], [])))
         label.set_text(f"step {step}   t = {t:.2f} s")
-        return lines + [label]
+        return lines + feet + [label]
 
     dt = np.diff([f[0] for f in frames])
     interval_ms = 1000 * float(np.median(dt[dt > 0])) if np.any(dt > 0) else 50
@@ -64,8 +82,10 @@ def main(result_dir):
     stick = os.path.join(result_dir, "stick.csv")
     n = int(plot_io.read_csv(stick, "stick diagram", ["link"])["link"].max())
     frames = first_steps(walk_plots.read_stick(stick, n), STEPS)
+    summary = os.path.join(result_dir, "summary.json")
+    foot = robot_foot(summary, plot_io.read_json(summary))[0] if os.path.isfile(summary) else None
     path = os.path.join(result_dir, "walk.gif")
-    draw(frames, path)
+    draw(frames, path, foot)
     print(path)
 
 

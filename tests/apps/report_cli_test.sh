@@ -71,6 +71,19 @@ assert data["link_names"] == names, data["link_names"]
 assert data["foot"] == [0.30, 0.15], data["foot"]  # the long heel walked, from the summary
 PY
 
+# (b'') walk.gif's feet: under the stance tip always, under the other tip when it is on the ground.
+(cd "$ROOT/plots" && "$PY" - <<'PY') || fail "(b'') feet of walk.gif"
+import numpy as np
+import walk_gif
+p0 = np.array([[0.0, 0.0], [0.1, 0.3]])
+p1 = np.array([[0.1, 0.3], [0.35, 0.001]])
+feet = walk_gif.feet_at(p0, p1, (0.05, 0.15))
+assert np.allclose([x for xs, _ in feet for x in xs], [-0.05, 0.15, 0.30, 0.50]), feet
+assert [ys for _, ys in feet] == [[0.0, 0.0], [0.001, 0.001]], feet
+p1[-1, 1] = 0.05  # the swing tip 5 cm up: the stance foot alone
+assert len(walk_gif.feet_at(p0, p1, (0.05, 0.15))) == 1
+PY
+
 # (c) not a result folder: exit 2 naming it; no page written.
 mkdir -p "$TMP/empty"
 run report "$TMP/empty"
