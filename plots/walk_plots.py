@@ -30,6 +30,7 @@ import numpy as np  # noqa: E402
 import multipliers_plot  # noqa: E402
 import plot_io  # noqa: E402
 from plot_io import InputError  # noqa: E402
+from robot_foot import robot_foot  # noqa: E402
 
 PHASES = ("SSP", "DSP")
 IMPACTS = ("double", "single", "compliant", "lcp", "dart", "")
@@ -145,6 +146,7 @@ class Walk:
         self.steps = read_steps(os.path.join(result_dir, "steps.csv"))
         self.frames = read_stick(os.path.join(result_dir, "stick.csv"), self.n)
         self.s = read_summary(os.path.join(result_dir, "summary.json"))
+        self.foot = robot_foot(os.path.join(result_dir, "summary.json"), self.s)[0]
         self.t = self.col["t"]
         self.dsp = self.phase == "DSP"
         self.theta = self.stack("theta", 1)
@@ -277,6 +279,9 @@ def draw_walk_stick(ax, w, colorbar=True):
     for x, y, step in zip(w.col["stance_x"][first], w.col["stance_y"][first],
                           w.col["step"][first]):
         impact = w.impact_before(step)
+        if w.foot is not None:  # the stance foot, heel to toe
+            ax.plot([x - w.foot[0], x + w.foot[1]], [y, y], color="k", lw=2.5,
+                    solid_capstyle="butt")
         ax.plot(x, y, "k^", ms=6)
         ax.annotate(f"{int(step)}" + (f"\n{impact}" if impact else ""), (x, y),
                     xytext=(0, -9), textcoords="offset points", ha="center", va="top",
@@ -291,6 +296,8 @@ def draw_walk_stick(ax, w, colorbar=True):
     ax.plot([], [], "k-", label="SSP")
     ax.plot([], [], "k--", label="DSP")
     ax.plot([], [], "k^", ls="none", label="stance tip: step (impact before)")
+    if w.foot is not None:
+        ax.plot([], [], "k-", lw=2.5, label=f"foot: heel {w.foot[0]:g} m, toe {w.foot[1]:g} m")
     ax.set_aspect("equal")
     ax.set_ylim(bottom=min(-0.12, ax.get_ylim()[0]))
     if colorbar:
