@@ -136,6 +136,27 @@ done
 [[ $(wc -l <"$TMP/out") -eq 6 ]] || fail "(a) expected 6 lines: $(cat "$TMP/out")"
 [[ ! -s "$TMP/err" ]] || fail "(a) stderr: $(cat "$TMP/err")"
 
+# (a') the stick diagram stands each step's stance tip on the foot of the walk's summary.
+cp -r "$TMP/walk" "$TMP/footed_walk"
+(cd "$PLOTS" && "$PY" - "$TMP/footed_walk" <<'PY') || fail "(a') feet of the stick diagram"
+import json, sys
+import plot_style
+import walk_plots
+path = sys.argv[1] + "/summary.json"
+s = json.load(open(path))
+s["foot"] = {"heel": 0.05, "toe": 0.15}
+json.dump(s, open(path, "w"))
+w = walk_plots.Walk(sys.argv[1])
+assert w.foot == (0.05, 0.15), w.foot
+fig, ax = plot_style.pyplot().subplots()
+walk_plots.draw_walk_stick(ax, w, colorbar=False)
+feet = [line.get_xdata() for line in ax.lines if line.get_linewidth() == 2.5 and
+        len(line.get_xdata()) == 2]
+starts = sorted(set(w.col["step"]))
+assert len(feet) == len(starts), (len(feet), starts)
+assert all(abs((x[1] - x[0]) - 0.2) < 1e-12 for x in feet), feet
+PY
+
 # (b) a walk that fell: no Poincare multipliers, so five pictures and a note on stderr.
 make_walk "$TMP/fell" 3 1
 plot walk_plots.py "$TMP/fell"
