@@ -34,8 +34,7 @@ void runCompare(const CompareOptions& o) {
     const int status = report::plotScriptStatus("compare_gaits.py", args, io::Output::kErrors);
     if (status == report::kScriptInputError)  // a malformed folder; the script named the file
       throw io::CommandError(io::kExitInputError, "");
-    if (status != 0)
-      throw std::runtime_error("compare: plots/compare_gaits.py failed (see above)");
+    if (status != 0) throw std::runtime_error("compare: plots/compare_gaits.py failed (see above)");
   });
   fmt::print("compare: wrote {}/comparison.md and the overlays\n", out.path());
 }

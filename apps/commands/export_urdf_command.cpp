@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "apps/command_runner.hpp"
+#include "apps/shipped_file.hpp"
 #include "config/config_error.hpp"
 #include "dynamics/robot_files/robot_config.hpp"
 #include "dynamics/robot_files/urdf_export.hpp"
@@ -35,6 +36,7 @@ void registerExportUrdfCommand(CLI::App& app) {
       app.add_subcommand("export-urdf", "Write the robot as a URDF (DART, Drake, Pinocchio, ROS)");
   cmd->add_option("--robot", options->robot_path, "Robot YAML file (e.g. configs/robots/*.yaml)")
       ->required()
+      ->transform(orShippedFile())
       ->option_text("FILE");
   cmd->add_option("--out", options->out, "The URDF file (written whole)")
       ->required()

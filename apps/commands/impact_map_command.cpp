@@ -11,6 +11,7 @@
 
 #include "apps/command_runner.hpp"
 #include "apps/option_checks.hpp"
+#include "apps/shipped_file.hpp"
 #include "config/config_error.hpp"
 #include "dynamics/robot_files/robot_config.hpp"
 #include "gaits/export/gait_summary.hpp"
@@ -96,6 +97,7 @@ void registerImpactMapCommand(CLI::App& app) {
                          "(Mu 2004 ch. 5)");
   cmd->add_option("--robot", options->robot_path, "Robot YAML (configs/robots/*.yaml)")
       ->required()
+      ->transform(orShippedFile())
       ->option_text("FILE");
   cmd->add_option("--out", options->out_dir, "Result folder (created)")
       ->required()

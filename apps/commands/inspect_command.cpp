@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "apps/command_runner.hpp"
+#include "apps/shipped_file.hpp"
 #include "dynamics/robot_files/robot_config.hpp"
 #include "gaits/trajectory/state_file.hpp"
 #include "report/inspect_report.hpp"
@@ -33,6 +34,7 @@ void registerInspectCommand(CLI::App& app) {
       "to the stance tip). Exit codes: 0 ok, 2 bad robot/state file or usage, 1 other failure.");
   cmd->add_option("--robot", options->robot_path, "Robot YAML file (e.g. configs/robots/*.yaml)")
       ->required()
+      ->transform(orShippedFile())
       ->option_text("FILE");
   cmd->add_option("--state", options->state_path,
                   "JSON state file {\"theta\":[...],\"dtheta\":[...],\"ddtheta\":[...]}: "

@@ -6,6 +6,7 @@
 #include <fmt/ranges.h>
 
 #include "apps/command_runner.hpp"
+#include "apps/shipped_file.hpp"
 #include "config/config_error.hpp"
 #include "gaits/trajectory/trajectory_csv.hpp"
 #include "io/output/output_folder.hpp"
@@ -93,7 +94,8 @@ void runOptimize(const OptimizeOptions& o) {
   });
   // A failure of an earlier run would sit next to this result and contradict it.
   io::removeIfOurs(out.path() + ".failed");
-  fmt::print("optimize: wrote {}/trajectory.csv, summary.json and pictures\n", out.path());
+  fmt::print("optimize: wrote {}/trajectory.csv, summary.json{}\n", out.path(),
+             o.output.plots ? " and pictures" : "");
   warnOfBreaches(summary["between_nodes"]);
 }
 
@@ -103,6 +105,7 @@ void registerOptimizeCommand(CLI::App& app) {
       "optimize", "Solve the gait optimal control problem of a config with Ipopt");
   cmd->add_option("--config", options->config_path, "OCP YAML (configs/ocp/*.yaml)")
       ->required()
+      ->transform(orShippedFile())
       ->option_text("FILE");
   addOutputOptions(cmd, options->output);
   cmd->add_option("--warm-start", options->warm_start,

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "apps/command_runner.hpp"
+#include "apps/shipped_file.hpp"
 #include "config/overrides.hpp"
 #include "dynamics/model_variation.hpp"
 #include "dynamics/robot_files/robot_config.hpp"
@@ -56,8 +57,8 @@ void runPoly(const PolyOptions& options) {
       summary["energy_J"].get<double>(), summary["cost_of_transport"].get<double>(),
       summary["min_normal_force"].get<double>(), summary["max_friction_ratio"].get<double>(),
       summary["min_zmp_margin"].get<double>());
-  fmt::print("poly: wrote {}/trajectory.csv ({} samples), summary.json and pictures\n", out.path(),
-             samples);
+  fmt::print("poly: wrote {}/trajectory.csv ({} samples), summary.json{}\n", out.path(), samples,
+             options.output.plots ? " and pictures" : "");
 }
 
 void registerPolyCommand(CLI::App& app) {
@@ -66,9 +67,11 @@ void registerPolyCommand(CLI::App& app) {
       app.add_subcommand("poly", "Design the polynomial gait of Mu (2004) ch. 3 and export it");
   cmd->add_option("--robot", options->robot_path, "Robot YAML (configs/robots/*.yaml)")
       ->required()
+      ->transform(orShippedFile())
       ->option_text("FILE");
   cmd->add_option("--gait", options->gait_path, "Gait YAML (configs/gaits/*.yaml)")
       ->required()
+      ->transform(orShippedFile())
       ->option_text("FILE");
   addOutputOptions(cmd, options->output);
   cmd->add_option("--set", options->sets,

@@ -11,6 +11,7 @@
 
 #include "apps/command_runner.hpp"
 #include "apps/option_checks.hpp"
+#include "apps/shipped_file.hpp"
 #include "config/config_error.hpp"
 #include "config/overrides.hpp"
 #include "gaits/export/gait_summary.hpp"
@@ -130,6 +131,7 @@ void registerLibraryCommand(CLI::App& app) {
       "Solve a gait library: a grid of speed x step length x slope x any numeric config key");
   cmd->add_option("--config", o->config_path, "Library YAML (configs/library/*.yaml)")
       ->required()
+      ->transform(orShippedFile())
       ->option_text("FILE");
   cmd->add_option("--out", o->out_dir, "Library folder (created; a rerun resumes it)")
       ->required()

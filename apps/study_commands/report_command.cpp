@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "apps/command_runner.hpp"
+#include "apps/shipped_file.hpp"
 #include "config/config_error.hpp"
 #include "io/output/checked_write.hpp"
 #include "report/plot_script.hpp"
@@ -30,6 +31,7 @@ void registerReportCommand(CLI::App& app) {
       ->required();
   cmd->add_option("--robot", options->robot_path,
                   "Robot file of a gait (default configs/robots/<summary's robot>.yaml)")
+      ->transform(orShippedFile())
       ->option_text("FILE");
   cmd->add_option("--out", options->out, "The page (default DIR/report.html)")->option_text("FILE");
   cmd->add_flag("!--no-gif", options->gif, "Do not draw walk.gif for a walk folder");

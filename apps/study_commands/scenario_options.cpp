@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "apps/option_checks.hpp"
+#include "apps/shipped_file.hpp"
 #include "sim/walk/ground_registry.hpp"
 
 namespace gaitopt::apps {
@@ -48,6 +49,7 @@ void addScenarioOptions(CLI::App* cmd, sim::ScenarioSettings& o) {
       ->option_text("DIR");
   cmd->add_option("--robot", o.robot_path,
                   "Robot YAML (default: configs/robots/<summary robot>.yaml)")
+      ->transform(orShippedFile())
       ->option_text("FILE");
   cmd->add_option("--controller", o.controller,
                   "Controller, one of:" + entryList(sim::controllers()))

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "apps/command_runner.hpp"
+#include "apps/shipped_file.hpp"
 #include "config/overrides.hpp"
 #include "io/output/output_folder.hpp"
 #include "parallel/parallel_for.hpp"
@@ -39,6 +40,7 @@ void registerStudyCommand(CLI::App& app) {
       "study", "Solve configs over combinations of config values, walk and sweep each optimum");
   cmd->add_option("--config", options->config_path, "Study YAML (configs/studies/*.yaml)")
       ->required()
+      ->transform(orShippedFile())
       ->option_text("FILE");
   cmd->add_option("--out", options->out_dir, "Study folder (created; reruns resume in it)")
       ->required()

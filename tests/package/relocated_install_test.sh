@@ -43,6 +43,10 @@ check optimize "$G" optimize --config "$TMP/moved/share/gaitopt/configs/ocp/rabb
 # The pictures are drawn in the staging folder opt.tmp-PID, renamed to opt when complete: no
 # line may name it.
 ! grep -q 'opt\.tmp-' out.log || { echo "FAIL: optimize named its staging folder: $(cat out.log)"; exit 1; }
+# A configs/... path as the docs spell it names the shipped file: there is no configs/ here.
+check shipped "$G" optimize --config configs/ocp/rabbit_kelly2017.yaml --out opt_shipped --rate 200 \
+  --quiet --no-plots
+[[ -f opt_shipped/trajectory.csv ]] || { echo "FAIL: optimize of the shipped config"; exit 1; }
 check simulate "$G" simulate --reference opt --controller hzd --steps 3 --no-poincare --rate 100 \
   --out walk --quiet
 grep -q '"steps_completed": 3' walk/summary.json || { echo "FAIL: simulate: $(cat out.log)"; exit 1; }
