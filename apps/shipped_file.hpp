@@ -9,8 +9,8 @@
 
 namespace gaitopt::apps {
 
-/// The transform of such an option: configs/X becomes the shipped configs/X when there is no
-/// configs/X here and the shipped one exists; any other path is left as it is.
+/// The transform of such an option: a path under configs/ becomes the shipped file of that path
+/// when the working directory has none and the shipped one exists; any other path is kept.
 CLI::Validator orShippedFile();
 
 }  // namespace gaitopt::apps
