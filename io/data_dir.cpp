@@ -47,4 +47,10 @@ std::string dataFile(const std::string& relative) {
   return (fs::path(dataDir()) / relative).string();
 }
 
+std::string localOrShipped(const std::string& relative) {
+  if (fs::exists(relative)) return relative;
+  if (std::string shipped = dataFile(relative); fs::exists(shipped)) return shipped;
+  return "";
+}
+
 }  // namespace gaitopt::io

@@ -21,4 +21,9 @@ std::string dataDir();
 /// dataDir() / `relative` (e.g. "configs/grounds/rigid.yaml").
 std::string dataFile(const std::string& relative);
 
+/// A file the docs name by its shipped path (e.g. "configs/robots/NAME.yaml"): `relative` under
+/// the working directory when it is there (a user's own), else dataFile(relative) when that is
+/// there, else empty.
+std::string localOrShipped(const std::string& relative);
+
 }  // namespace gaitopt::io

@@ -25,9 +25,7 @@ std::string robotOfFolder(const std::string& dir) {
   if (!json.is_object() || !json.contains("robot") || !json["robot"].is_string())
     throw config::ConfigError(summary, "robot", 0, "expected the robot's name (or pass --robot)");
   const std::string path = "configs/robots/" + json["robot"].get<std::string>() + ".yaml";
-  if (std::filesystem::exists(path)) return path;
-  if (const std::string shipped = io::dataFile(path); std::filesystem::exists(shipped))
-    return shipped;
+  if (std::string found = io::localOrShipped(path); !found.empty()) return found;
   throw config::ConfigError(
       summary, "robot", 0,
       fmt::format("no {} under the working directory nor among the shipped robots ({}); pass "
