@@ -3,6 +3,7 @@
 #include "io/data_dir.hpp"
 
 #include <filesystem>
+#include <string>
 
 #include "io_test_dir.hpp"
 
@@ -37,7 +38,7 @@ TEST_F(LocalOrShipped, TheUsersOwnFileFirst) {
 }
 
 TEST_F(LocalOrShipped, NothingWhenNeitherExists) {
-  EXPECT_EQ(localOrShipped("configs/robots/no_such_robot.yaml"), "");
+  EXPECT_EQ(localOrShipped(std::string(kRobot) + ".missing"), "");
 }
 
 }  // namespace
