@@ -20,9 +20,8 @@ ordered_json robotJson(const dynamics::Model& model) {
     links.push_back({{"name", l.name}, {"length", l.length}, {"continues", l.continues}});
   ordered_json joints = ordered_json::array();
   for (const auto& j : model.joints()) joints.push_back({{"name", j.name}});
-  // The foot the ZMP margins were taken against (0 and 0: point tips), for the pictures.
-  const dynamics::Foot& foot = model.foot();
-  return {{"links", links}, {"joints", joints}, {"foot", {{"heel", foot.heel}, {"toe", foot.toe}}}};
+  // The foot the ZMP margins were taken against.
+  return {{"links", links}, {"joints", joints}, {"foot", footJson(model.foot())}};
 }
 
 double costOf(const std::string& type, double work, double torque_sq, double cot) {
@@ -33,6 +32,10 @@ double costOf(const std::string& type, double work, double torque_sq, double cot
 }
 
 }  // namespace
+
+ordered_json footJson(const dynamics::Foot& foot) {
+  return {{"heel", foot.heel}, {"toe", foot.toe}};
+}
 
 ordered_json gaitSummary(const Trajectory& traj, const dynamics::Model& model,
                          const SummaryContext& context) {

@@ -26,6 +26,10 @@ struct SummaryContext {
 nlohmann::ordered_json gaitSummary(const Trajectory& traj, const dynamics::Model& model,
                                    const SummaryContext& context);
 
+/// {"heel", "toe"} of a foot [m] (0 and 0: point tips): the key `foot` of a gait's and of a walk's
+/// summary, from which the pictures draw the soles.
+nlohmann::ordered_json footJson(const dynamics::Foot& foot);
+
 /// Writes JSON to path + ".tmp" and renames it when complete. @throws std::runtime_error.
 void writeJsonFile(const nlohmann::ordered_json& json, const std::string& path);
 

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <vector>
 
+#include "gaits/export/gait_summary.hpp"
+
 namespace gaitopt::sim {
 namespace {
 
@@ -98,7 +100,7 @@ nlohmann::ordered_json walkSummary(const ScenarioSettings& settings, const Refer
   nlohmann::ordered_json j{{"robot", ref.model.name()}, {"robot_file", ref.robot_path}};
   j.update(scenarioJson(settings, s));
   j["friction"] = plant.friction();
-  j["foot"] = {{"heel", plant.foot().heel}, {"toe", plant.foot().toe}};  // the plant's, as walked
+  j["foot"] = gaits::footJson(plant.foot());  // the plant's, as walked
   j["steps_completed"] = r.walk.steps_completed;
   j["fell"] = r.walk.fell;
   j["failure"] = r.walk.failure;
