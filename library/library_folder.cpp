@@ -48,7 +48,7 @@ GaitLookup FolderGaits::lookup() {
 }
 
 LibraryFolder readLibraryFolder(const std::string& dir) {
-  const std::string path = dir + "/library.json";
+  const std::string path = dir + "/" + kLibraryFile;
   if (!std::filesystem::is_regular_file(path))
     throw config::ConfigError(path, "", 0, "not a gait library folder (no library.json)");
   const auto j = io::readStrictJson(path);
@@ -91,7 +91,7 @@ nlohmann::ordered_json libraryClaim(const LibrarySetup& s) {
 }
 
 void claimLibraryFolder(const LibrarySetup& s) {
-  io::claimSettings(s.out_dir + "/library.json", libraryClaim(s));
+  io::claimSettings(s.out_dir + "/" + kLibraryFile, libraryClaim(s));
 }
 
 ScheduleState previousState(const LibrarySetup& s, const LibraryIndex& index, bool retry_failed) {

@@ -20,6 +20,9 @@
 
 namespace gaitopt::library {
 
+/// The file of a library folder that records what it is a library of.
+inline constexpr const char* kLibraryFile = "library.json";
+
 /// The grid and base problem a library folder was built from.
 struct LibraryFolder {
   Grid grid;

@@ -31,7 +31,7 @@ void claimStudyFolder(const StudyConfig& c, const std::vector<std::string>& sets
   for (const std::string& input : studyInputs(c)) files.push_back(io::fileFingerprint(input));
   nlohmann::ordered_json claim = {{"name", c.name}, {"inputs_fnv1a", files}};
   if (!sets.empty()) claim["set"] = sets;  // keyed only when given: a plain rerun resumes
-  io::claimSettings(dir + "/study.json", claim);
+  io::claimSettings(dir + "/" + kStudyFile, claim);
 }
 
 }  // namespace gaitopt::study

@@ -10,6 +10,9 @@
 
 namespace gaitopt::study {
 
+/// The file of a study folder that records its settings.
+inline constexpr const char* kStudyFile = "study.json";
+
 /// Every file the study's runs read: the study config, the gait configs and what they name (the
 /// robot, the guess gait), the robots its walks name.
 std::vector<std::string> studyInputs(const StudyConfig& config);

@@ -55,7 +55,7 @@ void runScheduler(const LibraryOptions& o, const library::LibrarySetup& setup,
                   std::unique_ptr<parallel::Executor> executor) {
   std::vector<std::string> inputs = ocp::ocpInputs(setup.config.base);
   inputs.insert(inputs.end(), {o.config_path, setup.config.ocp_path});
-  const io::ResumableFolder folder(setup.out_dir, inputs);
+  const io::ResumableFolder folder(setup.out_dir, inputs, library::kLibraryFile);
   std::filesystem::create_directories(setup.out_dir + "/points");
   library::claimLibraryFolder(setup);
   library::LibraryIndex index(setup.out_dir, setup.grid);

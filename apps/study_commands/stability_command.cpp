@@ -24,6 +24,9 @@
 namespace gaitopt::apps {
 namespace {
 
+/// The file of a sweep folder that records what its rows belong to (sim/studies/sweep_study.hpp).
+constexpr const char* kSettingsFile = "settings.json";
+
 /// A point's job and its row kept in memory (map node, key, failure text): a few hundred bytes,
 /// rounded up.
 constexpr double kBytesPerPoint = 512;
@@ -187,11 +190,11 @@ void runStability(const StabilityOptions& o) {
   sim::Scenario base = sim::makeScenario(o.scenario);
   base.poincare = o.poincare;
   Grids grids = parseGrids(o, base, ref.model);
-  const io::ResumableFolder folder(o.out_dir, sim::scenarioInputs(o.scenario, ref));
+  const io::ResumableFolder folder(o.out_dir, sim::scenarioInputs(o.scenario, ref), kSettingsFile);
   const std::string& out_dir = folder.path();
   nlohmann::ordered_json key = sim::sweepFolderSettings(o.scenario, ref, base);
   key.update(gridKey(grids));
-  io::claimSettings(out_dir + "/settings.json", key);
+  io::claimSettings(out_dir + "/" + kSettingsFile, key);
   openFiles(grids, out_dir);
   // Each job walks one point and appends its row: on disk as soon as it is done.
   std::vector<std::function<void()>> todo;

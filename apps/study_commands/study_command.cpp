@@ -19,7 +19,7 @@ namespace gaitopt::apps {
 void runStudyCommand(const StudyOptions& o) {
   const study::StudyConfig config =
       study::loadStudyConfig(o.config_path, config::parseOverrides(o.sets));
-  const io::ResumableFolder folder(o.out_dir, study::studyInputs(config));
+  const io::ResumableFolder folder(o.out_dir, study::studyInputs(config), study::kStudyFile);
   study::claimStudyFolder(config, o.sets, folder.path());
   study::StudyTools tools{std::filesystem::read_symlink("/proc/self/exe").string(), {}};
   if (!o.quiet)

@@ -5,6 +5,8 @@
 
 #include <cerrno>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <optional>
 
 #include <fmt/format.h>
@@ -63,7 +65,27 @@ std::string checkedPath(const std::string& out, const std::vector<std::string>& 
                         const std::string& option) {
   std::string path = normaliseOutPath(out, option);
   refuseInputs(path, inputs, option);
+  refuseInsideResult(path, option);
   return path;
+}
+
+/// The marker's second line in a resumable run's folder.
+constexpr const char* kResumableLine = "It holds a resumable run's points, written in place.\n";
+
+/// Whether the marker file `marker` says its folder is a resumable run's.
+bool markedResumable(const fs::path& marker) {
+  std::ifstream in(marker);
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return text.find(kResumableLine) != std::string::npos;
+}
+
+/// Whether `dir` holds anything besides the marker and `claim`, while `claim` is missing.
+bool holdsAnotherResult(const fs::path& dir, const std::string& claim) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec) || fs::exists(dir / claim, ec)) return false;
+  for (const auto& entry : fs::directory_iterator(dir, ec))
+    if (entry.path().filename() != kMarker) return true;
+  return false;
 }
 
 /// Creates the staging folder `staging` afresh, marked as gaitopt's.
@@ -135,9 +157,25 @@ void requireOurs(const std::string& dir, const std::string& option) {
     refuse("holds files that gaitopt did not write");
 }
 
-void writeMarker(const std::string& dir) {
+void refuseInsideResult(const std::string& out, const std::string& option) {
+  const fs::path o = realPath(out);
+  for (fs::path a = o.parent_path(); a != a.parent_path(); a = a.parent_path()) {
+    std::error_code ec;
+    if (!fs::is_regular_file(a / kMarker, ec)) continue;
+    if (markedResumable(a / kMarker)) return;
+    throw config::ConfigError(
+        option, "", 0,
+        fmt::format("'{}' lies inside the gaitopt result '{}', which the next run writing there "
+                    "replaces whole, this folder with it; choose a folder beside it",
+                    out, a.string()));
+  }
+}
+
+void writeMarker(const std::string& dir, bool resumable) {
   writeFile((fs::path(dir) / kMarker).string(),
-            "This folder was written by gaitopt; the next gaitopt run writing here replaces it.\n");
+            std::string("This folder was written by gaitopt; the next gaitopt run writing here "
+                        "replaces it.\n") +
+                (resumable ? kResumableLine : ""));
 }
 
 void removeIfOurs(const std::string& dir) {
@@ -196,11 +234,17 @@ void OutputFolder::write(const std::function<void(const std::string&)>& fill) co
 }
 
 ResumableFolder::ResumableFolder(const std::string& dir, const std::vector<std::string>& inputs,
-                                 const std::string& option)
+                                 const std::string& claim, const std::string& option)
     : path_(checkedPath(dir, inputs, option)), lock_(path_) {
   requireOurs(path_, option);
+  if (holdsAnotherResult(path_, claim))
+    throw config::ConfigError(
+        option, "", 0,
+        fmt::format("'{}' holds another gaitopt result (it has no {}); this command adds rows "
+                    "only to a folder of its own kind: choose another {} or remove it",
+                    path_, claim, option));
   fs::create_directories(path_);
-  if (!fs::exists(fs::path(path_) / kMarker)) writeMarker(path_);
+  writeMarker(path_, true);  // also upgrades the marker of a folder written before it said so
 }
 
 }  // namespace gaitopt::io

@@ -4,6 +4,9 @@
 /// - the path is normalised ("DIR/" is DIR); "", ".", "..", "/" are refused (exit 2);
 /// - it must not be, contain or lie inside an input of the same command, whether named on the
 ///   command line or inside a config (compared as real paths);
+/// - it must not lie inside another gaitopt result, which a later run writing there would replace
+///   whole, unless that result is a resumable run's folder (ResumableFolder), which holds its
+///   points in place;
 /// - an existing OUT is replaced only when it is a gaitopt folder (the marker file kMarker) or
 ///   empty, never a regular file, a link or a folder of someone else's files;
 /// - one writer at a time (FolderLock, OUT.lock); OUT.tmp-PID and OUT.old-PID left by killed
@@ -32,8 +35,13 @@ void refuseInputs(const std::string& out, const std::vector<std::string>& inputs
 /// @throws config::ConfigError unless `dir` is absent, an empty folder or a gaitopt folder.
 void requireOurs(const std::string& dir, const std::string& option);
 
-/// Writes the marker into `dir`. @throws WriteError.
-void writeMarker(const std::string& dir);
+/// @throws config::ConfigError when `out` lies inside a gaitopt result folder other than a
+/// resumable one.
+void refuseInsideResult(const std::string& out, const std::string& option);
+
+/// Writes the marker into `dir`; `resumable` marks a folder that others may be written into (a
+/// library's points). @throws WriteError.
+void writeMarker(const std::string& dir, bool resumable = false);
 
 /// Removes `dir` when it is a gaitopt folder or empty (e.g. OUT.failed of an earlier failed
 /// solve); anything else, a link included, is left alone.
@@ -66,13 +74,16 @@ class OutputFolder {
 
 namespace gaitopt::io {
 
-/// A folder a resumable run (stability sweep, gait library) writes in place: the same path,
-/// input and ownership rules and the same lock as OutputFolder; created with the marker.
+/// A folder a resumable run (stability sweep, gait library, study) writes in place: the same
+/// path, input and ownership rules and the same lock as OutputFolder; created with the marker.
+/// `claim` names the file in which the run records its settings (io/settings_record.hpp): a
+/// folder holding files but not that one is another command's result, and rows added to it
+/// would mix two results, so it is refused.
 class ResumableFolder {
  public:
   /// @throws config::ConfigError (exit 2), WriteError.
   ResumableFolder(const std::string& dir, const std::vector<std::string>& inputs,
-                  const std::string& option = "--out");
+                  const std::string& claim, const std::string& option = "--out");
   const std::string& path() const { return path_; }
 
  private:

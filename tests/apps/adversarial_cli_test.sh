@@ -62,6 +62,21 @@ case_out_inside_reference() {
   run simulate --reference gait --out gait/walk --steps 2 --no-plots --quiet
   code 2 && says "is inside the input 'gait'" && [[ ! -e gait/walk ]] || bad "wrote into the reference"
 }
+case_resumable_run_onto_another_result() {
+  poly --out res && code 0 || return 1
+  local before
+  before=$(md5sum res/trajectory.csv res/summary.json)
+  sweep --reference gait --sweep push=0:1:2 --out res
+  code 2 && says "holds another gaitopt result \(it has no settings.json\)" || return 1
+  [[ $(md5sum res/trajectory.csv res/summary.json) == "$before" && ! -e res/settings.json ]] ||
+    bad "the stability run wrote into the gait result"
+}
+case_out_inside_another_result() {
+  poly --out res && code 0 || return 1
+  poly --out res/inner
+  code 2 && says "lies inside the gaitopt result" && [[ ! -e res/inner ]] ||
+    bad "a result was written where the next run on res would delete it"
+}
 
 # --- Files gaitopt creates: never through a link, never a user's file ---------------------------
 case_lock_is_a_link() {
@@ -205,6 +220,8 @@ CASES=(
   "paths: optimize --out a result folder holding the config's robot and gait|config_inputs"
   "paths: library --out a folder holding its OCP's robot|library_config_inputs"
   "paths: simulate --out inside its --reference|out_inside_reference"
+  "paths: stability --out a gait result (rows would mix into it)|resumable_run_onto_another_result"
+  "paths: --out inside another result, which its next run replaces|out_inside_another_result"
   "links: OUT.lock a symbolic link to a user's file|lock_is_a_link"
   "links: OUT.lock a user's own file|lock_is_a_users_file"
   "links: OUT.lock of a killed gaitopt run is taken|lock_left_by_a_killed_run"

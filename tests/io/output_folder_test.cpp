@@ -133,20 +133,48 @@ TEST_F(OutputFolderTest, LeftoversThatGaitoptDidNotMakeAreKept) {
 TEST_F(OutputFolderTest, OutputInsideAnInputFolderIsRefused) {
   fs::create_directories(path("ref"));
   EXPECT_THROW(OutputFolder(path("ref/walk"), {path("ref")}), config::ConfigError);
-  EXPECT_THROW(ResumableFolder(path("ref/sweep/"), {path("ref")}), config::ConfigError);
+  EXPECT_THROW(ResumableFolder(path("ref/sweep/"), {path("ref")}, "claim.json"),
+               config::ConfigError);
   EXPECT_FALSE(fs::exists(path("ref/sweep")));
 }
 
 TEST_F(OutputFolderTest, ResumableFolderKeepsItsFilesAndRefusesForeignOnes) {
   {
-    const ResumableFolder f(path("sweep"), {});
+    const ResumableFolder f(path("sweep"), {}, "claim.json");
+    put(path("sweep/claim.json"), "{}");
     put(path("sweep/rows.csv"), "a\n");
   }
-  const ResumableFolder again(path("sweep"), {});
+  const ResumableFolder again(path("sweep"), {}, "claim.json");
   EXPECT_EQ(slurp(path("sweep/rows.csv")), "a\n");
   fs::create_directories(path("home"));
   put(path("home/notes"), "x");
-  EXPECT_THROW(ResumableFolder(path("home"), {}), config::ConfigError);
+  EXPECT_THROW(ResumableFolder(path("home"), {}, "claim.json"), config::ConfigError);
+}
+
+TEST_F(OutputFolderTest, ResumableRunRefusesAnotherCommandsResultAndLeavesItWhole) {
+  OutputFolder(path("gait"), {}).write([](const std::string& d) { fillWith(d, "gait"); });
+  EXPECT_THROW(ResumableFolder(path("gait"), {}, "claim.json"), config::ConfigError);
+  EXPECT_EQ(slurp(path("gait/result.txt")), "gait");
+  EXPECT_FALSE(fs::exists(path("gait/claim.json")));
+  // A result that has only the marker (a run killed before it claimed the folder) is its own.
+  fs::create_directories(path("bare"));
+  writeMarker(path("bare"));
+  EXPECT_NO_THROW(ResumableFolder(path("bare"), {}, "claim.json"));
+}
+
+TEST_F(OutputFolderTest, OutputInsideAResultIsRefusedUnlessTheResultIsResumable) {
+  OutputFolder(path("gait"), {}).write([](const std::string& d) { fillWith(d, "gait"); });
+  EXPECT_THROW(OutputFolder(path("gait/walk"), {}), config::ConfigError);
+  EXPECT_THROW(ResumableFolder(path("gait/deep/sweep"), {}, "claim.json"), config::ConfigError);
+  EXPECT_FALSE(fs::exists(path("gait/walk")));
+  // A library's points live in its folder; one written before the marker said so is upgraded.
+  fs::create_directories(path("lib"));
+  writeMarker(path("lib"));
+  put(path("lib/claim.json"), "{}");
+  EXPECT_THROW(OutputFolder(path("lib/points/p"), {}), config::ConfigError);
+  const ResumableFolder lib(path("lib"), {}, "claim.json");
+  OutputFolder(path("lib/points/p"), {}).write([](const std::string& d) { fillWith(d, "p"); });
+  EXPECT_EQ(slurp(path("lib/points/p/result.txt")), "p");
 }
 
 }  // namespace
