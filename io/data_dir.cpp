@@ -15,7 +15,7 @@ namespace {
 fs::path shareAbove(const fs::path& file) {
   std::error_code ec;
   fs::path dir = file.parent_path();
-  for (int up = 0; up < 3 && dir.has_relative_path(); ++up, dir = dir.parent_path())
+  for (int up = 0; up <= 3 && dir.has_relative_path(); ++up, dir = dir.parent_path())
     if (fs::is_directory(dir / "share" / "gaitopt" / "configs", ec))
       return dir / "share" / "gaitopt";
   return {};

@@ -73,6 +73,11 @@ assert gaitopt.__file__.startswith(sys.argv[1]), gaitopt.__file__
 r = gaitopt.optimize(sys.argv[1] + "/share/gaitopt/configs/ocp/rabbit_kelly2017.yaml", rate_hz=200)
 assert abs(r["cost"] - 390.79) < 0.01, r["cost"]  # RABBIT's optimum (Kelly 2017 setting)
 print(f"ok: import gaitopt from the moved prefix, RABBIT's optimum {r['cost']:.2f}")
+# A walk reads its ground from the installed share/gaitopt, three folders above the module.
+robot = gaitopt.Robot(sys.argv[1] + "/share/gaitopt/configs/robots/rabbit.yaml")
+w = gaitopt.simulate(robot, r["trajectory"], steps=2, controller="hzd", ground="rigid")
+assert w["steps_completed"] == 2 and not w["fell"], w["failure"]
+print("ok: the module walked RABBIT on the installed rigid ground")
 PY
 SH
 echo "relocated_install_test: all checks passed"
