@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "sim/controllers/hzd_controller.hpp"
 #include "sim/walk/walk.hpp"
 
@@ -137,6 +139,12 @@ void setSweepValue(Scenario& s, const std::string& name, double value) {
   sweepParameter(name);
   if (name == "push") {
     Push push = s.push.value_or(Push{});
+    // A walk that ends before the pushed step would report the push as survived.
+    if (s.steps < push.step)
+      throw std::invalid_argument(fmt::format(
+          "the push comes in step {} (from mid single support); a walk of {} step(s) never "
+          "meets it: walk at least {} steps (--steps)",
+          push.step, s.steps, push.step));
     push.impulse = Vec2d(value, 0);
     s.push = push;
   } else if (name == "mass_error") {

@@ -55,7 +55,13 @@ Scenario makeScenario(const ScenarioSettings& o) {
   // Mu's setting: the controller knows how far its model may be off (sec. 4.3).
   if (s.errors_on_controller) s.uncertainty_bound = s.parameter_errors;
   if (o.friction >= 0) s.friction = o.friction;
-  if (o.push != 0) setSweepValue(s, "push", o.push);
+  if (o.push != 0) {
+    try {
+      setSweepValue(s, "push", o.push);
+    } catch (const std::invalid_argument& e) {
+      throw config::ConfigError("--push", "", 0, e.what());
+    }
+  }
   if (o.mass_error) setSweepValue(s, "mass_error", *o.mass_error);
   if (o.length_error) setSweepValue(s, "length_error", *o.length_error);
   s.gain_scale = o.gain_scale;

@@ -114,7 +114,7 @@ run poly --robot "$ROBOT" --gait "$GAIT" --out "$TMP/ref" --no-plots
 while IFS='|' read -r name pattern args; do
   read -ra argv <<<"$args"
   timeout 120 "$GAITOPT" stability --reference "$TMP/ref" --robot "$ROBOT" --out "$TMP/out_dir" \
-    --steps 1 --quiet --no-plots "${argv[@]}" </dev/null >"$TMP/out" 2>"$TMP/err"
+    --steps 2 --quiet --no-plots "${argv[@]}" </dev/null >"$TMP/out" 2>"$TMP/err"
   RC=$?
   expect "$name" 2 "$pattern"
 done <<'CASES'
@@ -127,6 +127,12 @@ map axis out of range|--map: key 'gain_scale': expected a number in \[0.001, 100
 map of 10^6 x 10^6 points|--map push=-3:3:1000000,mass_error=-0.2:0.2:1000000: a grid of 1e\+12 points needs about .* GB| --map push=-3:3:1000000,mass_error=-0.2:0.2:1000000
 sweeps summed over the budget|--sweep friction=0:1:1000000: a grid of 2e\+06 points needs about .* GB| --sweep push=-3:3:1000000 --sweep friction=0:1:1000000
 CASES
+
+# A push comes in step 2: a walk of one step never meets it and would report it survived.
+run simulate --reference "$TMP/ref" --out "$TMP/out_dir" --steps 1 --push 5 --no-plots --quiet
+expect "push after the walk's end" 2 "--push: the push comes in step 2 \(from mid single support\); a walk of 1 step\(s\) never meets it"
+run stability --reference "$TMP/ref" --out "$TMP/out_dir" --steps 1 --sweep push=-1:1:3 --no-plots --quiet
+expect "swept push after the walk's end" 2 "--sweep: key 'push': the push comes in step 2"
 
 # A state whose rates would overflow the energies to inf (printed as null), and angles of 1e308.
 echo '{"theta": [0, 0, 0, 3, 3], "dtheta": [1e308, 0, 0, 0, 0]}' >"$TMP/fast.json"

@@ -31,6 +31,16 @@ TEST(Scenario, StiffnessNeedsTheImpedanceGroundAndNamesAreChecked) {
   EXPECT_THROW(sweepParameter("wind"), std::invalid_argument);
 }
 
+TEST(Scenario, APushNeedsAWalkThatReachesItsStep) {
+  Scenario s;
+  s.steps = Push{}.step - 1;
+  EXPECT_THROW(setSweepValue(s, "push", 1.0), std::invalid_argument);
+  EXPECT_FALSE(s.push.has_value());
+  s.steps = Push{}.step;
+  setSweepValue(s, "push", 1.0);
+  EXPECT_EQ(sweepValue(s, "push"), 1.0);
+}
+
 TEST(Scenario, UncertaintyGoesToThePlantOrToTheControllersModel) {
   const auto& nominal = test::fiveLinkRobot();
   Scenario s;
