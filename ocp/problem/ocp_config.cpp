@@ -159,14 +159,24 @@ void readConstraints(const YamlReader& r, OcpConfig& c) {
   c.dsp_reduced_coordinates = r.booleanOr("dsp_reduced_coordinates", false);
 }
 
-/// The margin must leave a foot: under half its length (heel + toe), read from the robot file.
-void checkZmpMargin(const YamlReader& r, const OcpConfig& c) {
-  const dynamics::Foot foot = dynamics::loadRobot(c.robot_path).foot();
+/// The margins must leave a foot (under half its length, heel + toe) and a friction cone (under
+/// the robot's mu), both read from the robot file.
+void checkMarginsFitTheRobot(const YamlReader& r, const OcpConfig& c) {
+  const dynamics::Model robot = dynamics::loadRobot(c.robot_path);
+  const dynamics::Foot foot = robot.foot();
   const double half = (foot.heel + foot.toe) / 2;
-  if (!(c.zmp_margin < half))
+  if (c.zmp_margin > 0 && !(c.zmp_margin < half))
     r.fail("zmp_margin", fmt::format("expected less than half the robot's foot, (heel {} + toe {}) "
                                      "/ 2 = {} m, got {} m",
                                      foot.heel, foot.toe, half, c.zmp_margin));
+  const auto checkCone = [&](const std::string& key, double margin) {
+    if (!(margin < robot.friction()))
+      r.fail(key, fmt::format("expected less than the robot's friction coefficient {} (the margin "
+                              "narrows its cone), got {}",
+                              robot.friction(), margin));
+  };
+  checkCone("friction_margin", c.friction_margin);
+  if (c.impulse_friction_margin) checkCone("impulse_friction_margin", *c.impulse_friction_margin);
 }
 
 /// A [min, max] pair under `key`, each value checked; min > max is an error naming the key.
@@ -322,7 +332,7 @@ OcpConfig loadOcpConfig(const std::string& path, const std::vector<config::Overr
   if (root.has("mesh_refinement")) c.refinement = readRefinement(root.map("mesh_refinement"));
   if (root.has("constraints")) {
     readConstraints(root.map("constraints"), c);
-    if (c.zmp_margin > 0) checkZmpMargin(root.map("constraints"), c);
+    checkMarginsFitTheRobot(root.map("constraints"), c);
   }
   if (root.has("touchdown")) {
     c.touchdown = readTouchdown(root.map("touchdown"));

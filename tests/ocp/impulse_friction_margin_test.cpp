@@ -49,6 +49,22 @@ TEST(ImpulseFrictionMarginConfig, DefaultsToTheForcesMarginAndReadsItsOwn) {
       << negative;
 }
 
+TEST(ImpulseFrictionMarginConfig, MarginsThatLeaveNoConeAreRefusedNamingKeyAndRobotsFriction) {
+  // The shipped robot's mu is 0.6: a margin of 0.6 or more leaves no cone.
+  for (const std::string key : {"friction_margin", "impulse_friction_margin"}) {
+    const std::string edit = key == "friction_margin"
+                                 ? "friction_margin: 0.6"
+                                 : kMargin + "\n  impulse_friction_margin: 0.7";
+    const std::string error = test::loadEditedOcpConfig(kStrikeConfig, kMargin, edit);
+    EXPECT_NE(error.find(fmt::format("key 'constraints.{}': expected less than the robot's "
+                                     "friction coefficient 0.6",
+                                     key)),
+              std::string::npos)
+        << error;
+  }
+  EXPECT_EQ(test::loadEditedOcpConfig(kStrikeConfig, kMargin, "friction_margin: 0.59"), "");
+}
+
 TEST(ImpulseFrictionMarginConfig, TheContinuationMovesItWithTheMargins) {
   OcpConfig target = loadOcpConfig(kStrikeConfig);  // continuation.parameters: [margins]
   target.impulse_friction_margin = 0.1;
