@@ -13,6 +13,7 @@
 #include "gaits/polynomial/hip_plan_search.hpp"
 #include "gaits/polynomial/polynomial_gait.hpp"
 #include "gaits/trajectory/trajectory_csv.hpp"
+#include "io/output/output_folder.hpp"
 #include "python/bindings.hpp"
 
 namespace py = pybind11;
@@ -49,12 +50,18 @@ Trajectory designPoly(const dynamics::Model& robot, const std::string& gait_path
   return gaits::buildTrajectory(gaits::PolynomialGait(model, params, search.plan), model, rate_hz);
 }
 
-/// A gait folder of `traj` (trajectory files and summary.json) in the existing folder `dir`.
+/// A gait folder of `traj` (trajectory files and summary.json) at `dir`, by the CLI's --out rules
+/// (io/output/output_folder.hpp): created, or replaced whole when gaitopt wrote it; a folder of
+/// the user's own files is refused.
 size_t writeFolder(const Trajectory& traj, const dynamics::Model& robot, const std::string& dir,
                    double rate_hz) {
   config::requireInRange(config::kSampleRate, rate_hz, "rate_hz");
-  return gaits::writeGaitExport(dir, traj, robot, rate_hz,
-                                gaits::gaitSummary(traj, robot, {"", "exported"}));
+  size_t samples = 0;
+  io::OutputFolder(dir, {}, "dir").write([&](const std::string& staging) {
+    samples = gaits::writeGaitExport(staging, traj, robot, rate_hz,
+                                     gaits::gaitSummary(traj, robot, {"", "exported"}));
+  });
+  return samples;
 }
 
 }  // namespace
@@ -120,8 +127,9 @@ void bindTrajectory(py::module_& m) {
         py::arg("rate_hz") = 1000.0,
         "Writes DIR/trajectory.csv and trajectory.json on the grid t_i = i / rate_hz and "
         "DIR/summary.json with the metrics and the switch states "
-        "(docs/design.md#the-export-contract); returns "
-        "the number of samples.");
+        "(docs/design.md#the-export-contract); returns the number of samples. DIR is "
+        "created, or replaced whole when gaitopt wrote it, as the CLI's --out; a folder of "
+        "other files is refused (InputError).");
 }
 
 }  // namespace gaitopt::python

@@ -54,6 +54,23 @@ def test_written_folder_is_on_one_grid_and_reads_back(robot, poly_gait, tmp_path
     assert back.phase == step.phase
 
 
+def test_written_folder_follows_the_cli_out_rules(robot, poly_gait, tmp_path):
+    # A folder of the user's files is refused and left whole; a missing one is created, and
+    # gaitopt's own is replaced (a walk's summary.json does not survive beside the new gait).
+    mine = tmp_path / "mine"
+    mine.mkdir()
+    (mine / "summary.json").write_text("user data")
+    with pytest.raises(gaitopt.InputError, match="holds files that gaitopt did not write"):
+        gaitopt.write_trajectory(poly_gait, robot, str(mine), rate_hz=100)
+    assert (mine / "summary.json").read_text() == "user data"
+    assert not (mine / "trajectory.csv").exists()
+    new = tmp_path / "new" / "gait"
+    assert gaitopt.write_trajectory(poly_gait, robot, str(new), rate_hz=100) > 0
+    (new / "walk.csv").write_text("stale")
+    gaitopt.write_trajectory(poly_gait, robot, str(new), rate_hz=100)
+    assert not (new / "walk.csv").exists() and (new / "summary.json").exists()
+
+
 def test_optimize_cost_equals_the_cli(cli, tmp_path):
     py = gaitopt.optimize(RABBIT_OCP)
     assert py["status"] == "Solve_Succeeded" and py["max_violation"] < 1e-6
