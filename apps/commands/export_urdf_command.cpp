@@ -1,5 +1,6 @@
 #include "apps/commands/export_urdf_command.hpp"
 
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 
@@ -18,6 +19,8 @@ void runExportUrdf(const ExportUrdfOptions& o) {
   // The one file this command writes: never over an input (the robot YAML).
   if (!o.out.ends_with(".urdf"))
     throw config::ConfigError(o.out, "--out", 0, "expected a .urdf file");
+  if (std::filesystem::is_directory(o.out))
+    throw config::ConfigError(o.out, "--out", 0, "is a folder: expected a .urdf file");
   const dynamics::Model model = dynamics::loadRobot(o.robot_path);
   std::string text;
   try {

@@ -8,6 +8,7 @@
 
 #include "apps/command_runner.hpp"
 #include "apps/shipped_file.hpp"
+#include "config/config_error.hpp"
 #include "config/overrides.hpp"
 #include "dynamics/model_variation.hpp"
 #include "dynamics/robot_files/robot_config.hpp"
@@ -28,6 +29,11 @@ void runPoly(const PolyOptions& options) {
   // The gait's ground slope rotates gravity (dynamics/model.hpp).
   const dynamics::Model model =
       dynamics::withSlope(dynamics::loadRobot(options.robot_path), params.slope);
+  try {  // a robot the gait cannot be designed for is bad input (exit 2), named by its file
+    dynamics::requireKneedLegs(model, "the polynomial gait (Mu ch. 3)");
+  } catch (const std::invalid_argument& e) {
+    throw config::ConfigError(options.robot_path, "", 0, e.what());
+  }
   fmt::print("poly: {} on {}: step {:.3f} m in {:.3f} s ({:.3f} m/s)\n", params.name, model.name(),
              params.step_length, params.duration(), params.speed());
 

@@ -61,9 +61,24 @@ std::string stagingName(const std::string& out, const char* kind) {
   return out + kind + std::to_string(::getpid());
 }
 
+/// @throws config::ConfigError when an existing part of the folders above `out` is a file.
+void refuseFileOnPath(const std::string& out, const std::string& option) {
+  std::error_code ec;
+  for (fs::path a = fs::path(out).parent_path(); !a.empty(); a = a.parent_path()) {
+    if (fs::exists(a, ec)) {
+      if (fs::is_directory(a, ec)) return;
+      throw config::ConfigError(
+          option, "", 0,
+          fmt::format("'{}' lies below '{}', which is a file, not a folder", out, a.string()));
+    }
+    if (a == a.parent_path()) return;
+  }
+}
+
 std::string checkedPath(const std::string& out, const std::vector<std::string>& inputs,
                         const std::string& option) {
   std::string path = normaliseOutPath(out, option);
+  refuseFileOnPath(path, option);
   refuseInputs(path, inputs, option);
   refuseInsideResult(path, option);
   return path;

@@ -39,4 +39,12 @@ run export-urdf --robot "$TMP/clash.yaml" --out "$TMP/clash.urdf"
 [[ $RC -eq 2 ]] || fail "(d) clashing link name: exit code $RC, expected 2"
 grep -qF "'swing_foot' is used twice" "$TMP/err" || fail "(d) stderr: $(cat "$TMP/err")"
 [[ ! -e "$TMP/clash.urdf" ]] || fail "(d) a URDF was written"
+
+# (e) an --out that is a folder named like a URDF: exit 2, the folder left as it was.
+mkdir "$TMP/d.urdf" && echo "user data" >"$TMP/d.urdf/notes"
+run export-urdf --robot "$ROBOT" --out "$TMP/d.urdf"
+[[ $RC -eq 2 ]] || fail "(e) --out a folder: exit code $RC, expected 2"
+grep -qF "is a folder" "$TMP/err" || fail "(e) stderr: $(cat "$TMP/err")"
+[[ $(cat "$TMP/d.urdf/notes") == "user data" ]] || fail "(e) the folder's file was changed"
+
 echo "export_urdf_cli: all checks passed"

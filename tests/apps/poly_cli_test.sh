@@ -69,4 +69,10 @@ run poly --robot "$ROBOT" --gait "$GAIT" --set step_length=long --out "$TMP/set_
 [[ $RC -eq 2 ]] && grep -q "(--set step_length=long).*key 'step_length'" "$TMP/err" ||
   fail "(e) bad value: $RC $(cat "$TMP/err")"
 [[ ! -e "$TMP/set_bad" ]] || fail "(e) a bad --set created its folder"
+# (g) poly for a robot whose legs have one link each: bad input (exit 2) naming the robot file.
+run poly --robot "$ROOT/configs/robots/compass_gait.yaml" --gait "$ROOT/configs/gaits/mu2004.yaml" \
+  --out "$TMP/p" --no-plots
+[[ $RC -eq 2 ]] || fail "(g) poly on one-link legs: exit code $RC, expected 2"
+grep -qF "compass_gait.yaml: the polynomial gait (Mu ch. 3) needs legs of two links" "$TMP/err" ||
+  fail "(g) stderr: $(cat "$TMP/err")"
 echo "poly CLI: all checks passed"

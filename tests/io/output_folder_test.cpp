@@ -61,6 +61,18 @@ TEST_F(OutputFolderTest, PathsWithoutAFolderNameAreRefusedAndTrailingSlashNormal
   EXPECT_EQ(normaliseOutPath("results//run1///", "--out"), "results/run1");
 }
 
+TEST_F(OutputFolderTest, APathBelowAFileIsRefusedNamingTheFile) {
+  put(path("notes"), "x");
+  try {
+    OutputFolder(path("notes/sub/res"), {});
+    FAIL() << "a folder below a file was accepted";
+  } catch (const config::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("which is a file, not a folder"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(slurp(path("notes")), "x");
+}
+
 TEST_F(OutputFolderTest, SecondWriterIsRefusedWhileTheFirstHoldsTheLock) {
   const OutputFolder first(path("res"), {});
   EXPECT_THROW(OutputFolder(path("res"), {}), config::ConfigError);
