@@ -134,6 +134,32 @@ t, _ = state_at((folder / "report.html").resolve().as_uri() + "#t=0.1", pathlib.
 assert abs(t - 0.1) < 1e-3, t
 PY
 
+# (a4) what the summary holds in objects is on the page, and a gait that breaks a check between
+# the solver's points says so above the table (a copy of the gait with one breach written in).
+cp -r "$TMP/poly" "$TMP/breach" && rm -f "$TMP/breach/report.html"
+"$PY" - "$TMP/breach/summary.json" <<'PY' || fail "(a4) summary edit"
+import json, sys
+s = json.load(open(sys.argv[1]))
+s["between_nodes"] = {"rate_hz": 1000.0, "max_friction_ratio": 1.6368, "breaches": [
+    {"check": "max_friction_ratio", "value": 1.6368, "bound": 0.6,
+     "meaning": "a tip force leaves the friction cone of the robot's mu: the tip slips"}]}
+json.dump(s, open(sys.argv[1], "w"))
+PY
+run report "$TMP/breach" --no-gif
+[[ $RC -eq 0 ]] || fail "(a4) report exited $RC: $(cat "$TMP/err")"
+"$PY" - "$TMP/breach/report.html" "$(dirname "$0")" "$TMP" <<'PY' || fail "(a4) page"
+import pathlib, re, sys
+sys.path.insert(0, sys.argv[2])
+from report_browser_check import chromium
+dom = chromium(pathlib.Path(sys.argv[3]), "--dump-dom",
+               pathlib.Path(sys.argv[1]).resolve().as_uri()).stdout
+box = re.search(r'<div id="breaches"( hidden="")?>(.*?)</div>', dom, re.S)
+assert box and not box.group(1), "the breach box is missing or hidden"
+assert "breaks 1 check(s)" in box.group(2) and "the tip slips" in box.group(2), box.group(2)
+for row in ("between_nodes", "max_torso_lean", "max_stance_knee_flexion"):
+    assert re.search(rf'<td class="[^"]*"( colspan="2")?>{row}</td>', dom), f"no row {row}"
+PY
+
 # (f) a stability sweep whose reference folder now holds a gait of another robot (remade since):
 # exit 2 naming both robots, as simulate refuses such a pair, rather than animate that robot.
 mkdir -p "$TMP/sweep"
