@@ -17,6 +17,7 @@ NUMBER_WORDS = {2: "two", 3: "three"}
 # A grid sample this close to a stored switch or end state is that instant [s]
 # (gaits/trajectory/grid_export.cpp).
 SWITCH_TOLERANCE_S = 1e-9
+GRID_TOLERANCE_S = 1e-12  # a fixed-rate row's time against i / rate (trajectory_csv.cpp)
 
 
 class InputError(Exception):
@@ -181,7 +182,10 @@ def read_trajectory(path, need=()):
     phase = col.pop("phase")
     check_phases(path, phase)
     check_increasing(path, "t", col["t"])
-    col, phase = with_switch_rows(col, phase, switch_rows(path, names))
+    extra = switch_rows(path, names)
+    if extra:
+        check_grid(path, col["t"], extra[-1]["t"])
+    col, phase = with_switch_rows(col, phase, extra)
     return Trajectory(path, header, col, phase, len(thetas),
                       len(numbered_names(header, "tau", 0)))
 
@@ -207,6 +211,30 @@ def switch_rows(path, names):
         require_numbers(summary, row, [n for n in names if n != "phase"], prefix=key + ".")
         check_values(summary, key + ".phase", [row.get("phase")], ("SSP", "DSP"))
     return [row for _, row in keyed]
+
+
+def check_grid(path, t, end):
+    """Rows with switch states must be the whole grid t_i = i / rate up to the step's end, as the
+    C++ reader requires (gaits/trajectory/trajectory_csv.cpp): a file cut short would otherwise
+    be read as a step that jumps from its last row to the stored end state."""
+    summary = os.path.join(os.path.dirname(path), "summary.json")
+    rate = read_json(summary).get("sample_rate_hz")
+    if not is_number(rate) or not rate > 0:
+        raise InputError(f"{summary}: key 'sample_rate_hz': expected a rate > 0 [Hz], got {rate}")
+    n = int(np.floor(end * rate))  # the largest i with i / rate <= end, as grid_export.cpp
+    while (n + 1) / rate <= end:
+        n += 1
+    while n > 0 and n / rate > end:
+        n -= 1
+    if len(t) != n + 1:
+        raise InputError(f"{path}: {len(t)} row(s) on the grid, but t_i = i / {rate:g} Hz up to "
+                         f"the step's end at {end:g} s (summary.json) makes {n + 1}: a truncated "
+                         "or edited file")
+    off = np.flatnonzero(np.abs(t - np.arange(n + 1) / rate) > GRID_TOLERANCE_S)
+    if off.size:
+        i = int(off[0])
+        raise InputError(f"{path}: line {i + 2}: key 't': time {t[i]:.17g} is not i / rate = "
+                         f"{i} / {rate:g} Hz (summary.json)")
 
 
 def with_switch_rows(col, phase, extra):

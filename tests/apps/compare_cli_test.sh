@@ -46,4 +46,12 @@ mkdir -p "$TMP/empty"
 run compare "$TMP/poly1000" "$TMP/empty" --out "$TMP/cmp2"
 [[ $RC -eq 2 ]] || fail "(b) expected exit 2, got $RC"
 grep -q "empty/summary.json.*missing" "$TMP/err" || fail "(b) $(cat "$TMP/err")"
+# (c) a trajectory.csv cut short (its summary.json says where the grid ends): exit 2 naming it,
+# as simulate refuses it, rather than overlay a step that jumps to the stored end state.
+cp -r "$TMP/poly1000" "$TMP/cut" && head -n 200 "$TMP/poly1000/trajectory.csv" >"$TMP/cut/trajectory.csv"
+run compare "$TMP/poly1000" "$TMP/cut" --out "$TMP/cmp_cut"
+[[ $RC -eq 2 ]] || fail "(c) expected exit 2, got $RC: $(cat "$TMP/err")"
+grep -q "cut/trajectory.csv: 199 row(s) on the grid, but .* makes 701: a truncated or edited file" \
+  "$TMP/err" || fail "(c) $(cat "$TMP/err")"
+[[ ! -e "$TMP/cmp_cut" ]] || fail "(c) a comparison was written"
 echo "compare CLI: all checks passed"

@@ -416,6 +416,7 @@ with open(f"{d}/trajectory.csv", "w") as f:
 s = json.load(open(f"{d}/summary.json"))
 s["phase_switches"] = [{"t": 0.6, "from": "SSP", "to": "DSP", "before": before, "after": after}]
 s["step_end"] = end
+s["sample_rate_hz"] = 100.0  # the grid's rate, which the export writes beside its switch rows
 json.dump(s, open(f"{d}/summary.json", "w"))
 g = plot_io.read_trajectory(f"{d}/trajectory.csv")
 assert len(g.t) == 72, len(g.t)  # 71 grid rows, less 0.6 and 0.7, plus before, after, end
