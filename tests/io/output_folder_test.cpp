@@ -64,7 +64,7 @@ TEST_F(OutputFolderTest, PathsWithoutAFolderNameAreRefusedAndTrailingSlashNormal
 TEST_F(OutputFolderTest, APathBelowAFileIsRefusedNamingTheFile) {
   put(path("notes"), "x");
   try {
-    OutputFolder(path("notes/sub/res"), {});
+    OutputFolder((fs::path(path("notes")) / "sub" / "res").string(), {});
     FAIL() << "a folder below a file was accepted";
   } catch (const config::ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("which is a file, not a folder"), std::string::npos)
