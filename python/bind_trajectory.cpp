@@ -2,6 +2,8 @@
 /// gaitopt.Trajectory (gaits/trajectory/trajectory.hpp) with its knots as numpy arrays, the
 /// polynomial gait of Mu ch. 3 (design_poly) and a gait folder's trajectory.csv (read_trajectory,
 /// write_trajectory).
+#include <filesystem>
+
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
@@ -15,6 +17,7 @@
 #include "gaits/trajectory/trajectory_csv.hpp"
 #include "io/output/output_folder.hpp"
 #include "python/bindings.hpp"
+#include "sim/scenario/reference_folder.hpp"
 
 namespace py = pybind11;
 
@@ -62,6 +65,15 @@ size_t writeFolder(const Trajectory& traj, const dynamics::Model& robot, const s
                                      gaits::gaitSummary(traj, robot, {"", "exported"}));
   });
   return samples;
+}
+
+/// The trajectory.csv at `path`, refused (InputError) when the summary.json beside it says it is
+/// a failed solve or a gait of another robot, as simulate refuses such a reference: the file
+/// alone checks only the number of links.
+Trajectory readFolderTrajectory(const std::string& path, const dynamics::Model& robot) {
+  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  sim::requireGaitOf(dir.empty() ? "." : dir.string(), robot);
+  return gaits::readTrajectoryCsv(path, robot);
 }
 
 }  // namespace
@@ -120,9 +132,10 @@ void bindTrajectory(py::module_& m) {
         py::arg("rate_hz") = 1000.0,
         "The polynomial gait of Mu (2004) ch. 3 for a gait YAML (configs/gaits/); "
         "InfeasibleError when the robot cannot realise it.");
-  m.def("read_trajectory", &gaits::readTrajectoryCsv, py::arg("path"), py::arg("robot"),
+  m.def("read_trajectory", &readFolderTrajectory, py::arg("path"), py::arg("robot"),
         "Reads a trajectory.csv for the robot, with the switch states of the summary.json "
-        "beside it put back.");
+        "beside it put back; InputError when that summary names another robot or a failed "
+        "solve.");
   m.def("write_trajectory", &writeFolder, py::arg("trajectory"), py::arg("robot"), py::arg("dir"),
         py::arg("rate_hz") = 1000.0,
         "Writes DIR/trajectory.csv and trajectory.json on the grid t_i = i / rate_hz and "

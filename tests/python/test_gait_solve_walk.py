@@ -54,6 +54,18 @@ def test_written_folder_is_on_one_grid_and_reads_back(robot, poly_gait, tmp_path
     assert back.phase == step.phase
 
 
+def test_reading_a_gait_of_another_robot_or_a_failed_solve_is_refused(robot, poly_gait, tmp_path):
+    # The file alone checks only the number of links: RABBIT also has five.
+    gaitopt.write_trajectory(poly_gait, robot, str(tmp_path / "g"), rate_hz=100)
+    rabbit = gaitopt.Robot(str(ROOT / "configs/robots/rabbit.yaml"))
+    with pytest.raises(gaitopt.InputError, match="the gait is of robot 'mu2004_five_link', not "
+                                                 "of robot 'rabbit'"):
+        gaitopt.read_trajectory(str(tmp_path / "g" / "trajectory.csv"), rabbit)
+    (tmp_path / "g" / "FAILED.txt").write_text("a failed solve")
+    with pytest.raises(gaitopt.InputError, match="holds a failed solve"):
+        gaitopt.read_trajectory(str(tmp_path / "g" / "trajectory.csv"), robot)
+
+
 def test_written_folder_follows_the_cli_out_rules(robot, poly_gait, tmp_path):
     # A folder of the user's files is refused and left whole; a missing one is created, and
     # gaitopt's own is replaced (a walk's summary.json does not survive beside the new gait).
