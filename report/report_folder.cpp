@@ -166,14 +166,15 @@ ReportContent collectReport(const std::string& dir, const std::string& robot_pat
   } else if (has(dir, "trajectory.csv")) {
     c.kind = "gait";
     animateGait(c, sim::loadReferenceFolder(dir, robot_path));
-  } else if (c.summary.contains("sweeps")) {
+  } else if (c.summary.contains("sweeps") || c.summary.contains("maps")) {
     c.kind = "stability";
     c.tables = filesOf(dir, "sweep_", ".csv");
+    for (auto& t : filesOf(dir, "map_", ".csv")) c.tables.push_back(std::move(t));
     animateReference(c, dir, robot_path);
   } else {
     throw config::ConfigError(dir, "", 0,
                               "not a gait, walk, library or stability folder: no trajectory.csv, "
-                              "stick.csv, library.json or sweeps in summary.json");
+                              "stick.csv, library.json, or sweeps or maps in summary.json");
   }
   return c;
 }

@@ -55,6 +55,15 @@ gif = Image.open(sys.argv[1] + "/walk.gif")
 assert gif.n_frames >= frames - 1, (gif.n_frames, frames)
 PY
 
+# (b''') a stability folder of a map only (no sweep): its page, with the map's rows as a table.
+run stability --robot "$LONG_HEEL" --reference "$TMP/poly" --steps 2 --no-plots --quiet \
+  --map push=-1:1:2,mass_error=0:0.1:2 --out "$TMP/map"
+[[ $RC -eq 0 ]] || fail "(b''') stability exited $RC: $(cat "$TMP/err")"
+run report "$TMP/map" --robot "$LONG_HEEL"
+[[ $RC -eq 0 ]] || fail "(b''') report of a map-only folder exited $RC: $(cat "$TMP/err")"
+grep -q '"name":"map_push_mass_error.csv"' "$TMP/map/report.html" ||
+  fail "(b''') the map's rows are not on the page"
+
 # (b') the page of a walk whose robot file was given relative to the repository, made from
 # another folder: its links are still named (the robot of the summary's name).
 run simulate --robot tests/apps/mu2004_five_link_long_heel.yaml --reference "$TMP/poly" --steps 1 \
