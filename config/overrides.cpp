@@ -15,7 +15,8 @@ namespace {
 /// One step of a key path: a mapping key, or a list index.
 struct Step {
   std::string key;
-  int index = -1;  ///< >= 0: a list item
+  int index = -1;         ///< >= 0: a list item
+  std::size_t start = 0;  ///< where the step begins in the key path
 };
 
 [[noreturn]] void refuse(const Override& o, const std::string& why) {
@@ -31,7 +32,7 @@ std::vector<Step> stepsOf(const Override& o) {
     const std::string part = o.key.substr(at, end - at);
     const std::size_t bracket = part.find('[');
     if (part.empty() || bracket == 0) refuse(o, "expected a key path such as constraints.zmp");
-    steps.push_back({part.substr(0, bracket)});
+    steps.push_back({part.substr(0, bracket), -1, at});
     for (std::size_t b = bracket; b != std::string::npos; b = part.find('[', b + 1)) {
       const std::size_t close = part.find(']', b);
       int index = -1;
@@ -56,6 +57,17 @@ YAML::Node childOf(YAML::Node& node, const Step& step, const Override& o) {
   if (!node.IsMap() && !node.IsNull()) refuse(o, "the path runs through a value, not a mapping");
   if (!node[step.key]) node[step.key] = YAML::Node(YAML::NodeType::Map);
   return node[step.key];
+}
+
+/// Whether the rest of the path from step `i` is one key of the mapping `node`: a mapping whose
+/// keys are themselves paths (a library's grid: `phases[0].segments: [24, 30]`) holds that key
+/// already, or does not hold the list the path would index into.
+bool literalKeyAt(const YAML::Node& node, const std::vector<Step>& steps, std::size_t i,
+                  const Override& o) {
+  if (steps[i].index >= 0 || !node.IsMap()) return false;
+  const std::string rest = o.key.substr(steps[i].start);
+  if (node[rest]) return true;
+  return steps[i + 1].index >= 0 && !node[steps[i].key];
 }
 
 }  // namespace
@@ -100,7 +112,19 @@ void applyOverrides(YAML::Node& root, const std::vector<Override>& overrides) {
     }
     const std::vector<Step> steps = stepsOf(o);
     YAML::Node node = root;
-    for (std::size_t i = 0; i + 1 < steps.size(); ++i) node.reset(childOf(node, steps[i], o));
+    std::size_t i = 0;
+    for (; i + 1 < steps.size(); ++i) {
+      if (literalKeyAt(node, steps, i, o)) break;
+      node.reset(childOf(node, steps[i], o));
+    }
+    if (i + 1 < steps.size()) {  // a key that is itself a path, set or removed whole
+      const std::string rest = o.key.substr(steps[i].start);
+      if (value.IsNull())
+        node.remove(rest);
+      else
+        node[rest] = value;
+      continue;
+    }
     // `null` deletes the key, so the reader's default (or absence) applies, as deleting the
     // line would; a leaf that is a mapping or list in the file is replaced whole.
     if (value.IsNull() && steps.back().index < 0 && (node.IsMap() || node.IsNull()))

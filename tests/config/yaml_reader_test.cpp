@@ -106,6 +106,24 @@ TEST(YamlReader, YamlTextsOfAListAndOfOneValue) {
             std::string::npos);
 }
 
+// A mapping whose keys are paths (a library's grid): --set reaches such a key whole, whether the
+// file holds it or not, and a path into a list the mapping does not have is such a key.
+TEST(YamlReaderOverrides, AKeyThatIsItselfAPathIsSetWhole) {
+  const std::string path =
+      writeTempFile("sets_literal.yaml", "grid:\n  constraints.friction_margin: [0.1]\n");
+  const YamlReader r = withSets(
+      path, {"grid.constraints.friction_margin=[0.2]", "grid.phases[0].segments=[24, 30]"});
+  const auto any = inRange(-100, 100, "");
+  const YamlReader grid = r.map("grid");
+  EXPECT_EQ(grid.keys(),
+            (std::vector<std::string>{"constraints.friction_margin", "phases[0].segments"}));
+  EXPECT_EQ(grid.numbers("constraints.friction_margin", any), std::vector<double>{0.2});
+  EXPECT_EQ(grid.numbers("phases[0].segments", any), (std::vector<double>{24, 30}));
+  EXPECT_FALSE(withSets(path, {"grid.constraints.friction_margin=null"})
+                   .map("grid")
+                   .has("constraints.friction_margin"));
+}
+
 TEST(YamlReaderOverrides, PathsThatDoNotFitAreErrorsNamingSet) {
   const std::string path = writeTempFile("sets_bad.yaml", "a: 1\nl:\n  - {n: 3}\n");
   for (const auto& [set, why] :
