@@ -84,7 +84,9 @@ void runImpactMap(const ImpactMapOptions& options) {
     gaits::writeJsonFile(summary, dir + "/summary.json");
   });
   printResult(summary);
-  if (options.plots) report::runPlotScript("impact_map.py", {out.path()});
+  if (options.plots)
+    report::runPlotScript("impact_map.py", {out.path()},
+                          options.quiet ? io::Output::kErrors : io::Output::kAll);
   fmt::print("impact-map: wrote {}/impact_map.csv and summary.json in {:.2f} s\n", out.path(),
              elapsed);
 }

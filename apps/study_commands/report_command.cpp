@@ -19,7 +19,8 @@ void runReport(const ReportOptions& o) {
   const std::string out = o.out.empty() ? o.dir + "/report.html" : o.out;
   io::writeFileAtomically(out, report::renderReportPage(content));
   fmt::print("report: wrote {} ({} result, {} charts)\n", out, content.kind, content.charts.size());
-  if (o.gif && content.kind == "walk" && report::runPlotScript("walk_gif.py", {o.dir}))
+  if (o.gif && content.kind == "walk" &&
+      report::runPlotScript("walk_gif.py", {o.dir}, io::Output::kErrors))
     fmt::print("report: wrote {}/walk.gif\n", o.dir);
 }
 

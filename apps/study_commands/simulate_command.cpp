@@ -78,7 +78,9 @@ void runSimulate(const SimulateOptions& o) {
     gaits::writeJsonFile(sim::walkSummary(o.scenario, ref, scenario, plant, r),
                          dir + "/summary.json");
   });
-  if (o.output.plots) report::runPlotScript("walk_plots.py", {out.path()});
+  if (o.output.plots)
+    report::runPlotScript("walk_plots.py", {out.path()},
+                          (o.quiet ? io::Output::kErrors : io::Output::kAll));
   fmt::print("simulate: wrote {}/walk.csv, steps.csv, stick.csv, summary.json\n", out.path());
 }
 

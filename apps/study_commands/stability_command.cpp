@@ -244,7 +244,9 @@ void runStability(const StabilityOptions& o) {
     printRegion(name, summary["maps"][name]);
   }
   gaits::writeJsonFile(summary, out_dir + "/summary.json");
-  if (o.plots) report::runPlotScript("stability_plots.py", {out_dir});
+  if (o.plots)
+    report::runPlotScript("stability_plots.py", {out_dir},
+                          (o.quiet ? io::Output::kErrors : io::Output::kAll));
   fmt::print("stability: wrote {}/summary.json, sweep_*.csv and map_*.csv\n", out_dir);
 }
 
