@@ -7,6 +7,7 @@
 #include <memory>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "apps/command_runner.hpp"
 #include "apps/option_checks.hpp"
@@ -139,17 +140,22 @@ Grids parseGrids(const StabilityOptions& o, const sim::Scenario& base,
   return g;
 }
 
-/// Opens sweep_NAME.csv and map_A_B.csv in `out_dir` (rows of an earlier run are read back), once
-/// the folder's settings are claimed: a refused run must not touch them (a torn last row is cut).
+/// The row files of a folder: sweep_NAME.csv per sweep, map_A_B.csv per map.
+std::string fileOf(const Sweep& s) {
+  return "sweep_" + s.parameter->name() + ".csv";
+}
+std::string fileOf(const Map& m) {
+  return "map_" + m.a.parameter->name() + "_" + m.b.parameter->name() + ".csv";
+}
+
+/// Opens the row files in `out_dir` (rows of an earlier run are read back), once the folder's
+/// settings are claimed: a refused run must not touch them (a torn last row is cut).
 void openFiles(Grids& grids, const std::string& out_dir) {
-  for (auto& s : grids.sweeps)
-    s.file = std::make_unique<sim::SweepFile>(out_dir + "/sweep_" + s.parameter->name() + ".csv");
-  for (auto& m : grids.maps) {
-    const std::string a = m.a.parameter->name();
-    const std::string b = m.b.parameter->name();
-    m.file = std::make_unique<sim::SweepFile>(out_dir + "/map_" + a + "_" + b + ".csv",
-                                              std::vector<std::string>{a, b});
-  }
+  for (auto& s : grids.sweeps) s.file = std::make_unique<sim::SweepFile>(out_dir + "/" + fileOf(s));
+  for (auto& m : grids.maps)
+    m.file = std::make_unique<sim::SweepFile>(
+        out_dir + "/" + fileOf(m),
+        std::vector<std::string>{m.a.parameter->name(), m.b.parameter->name()});
 }
 
 void printInterval(const std::string& name, const nlohmann::ordered_json& j) {
@@ -247,7 +253,10 @@ void runStability(const StabilityOptions& o) {
   if (o.plots)
     report::runPlotScript("stability_plots.py", {out_dir},
                           (o.quiet ? io::Output::kErrors : io::Output::kAll));
-  fmt::print("stability: wrote {}/summary.json, sweep_*.csv and map_*.csv\n", out_dir);
+  std::vector<std::string> files{"summary.json"};
+  for (const auto& s : grids.sweeps) files.push_back(fileOf(s));
+  for (const auto& m : grids.maps) files.push_back(fileOf(m));
+  fmt::print("stability: wrote {}/{}\n", out_dir, fmt::join(files, ", "));
 }
 
 void registerStabilityCommand(CLI::App& app) {

@@ -27,6 +27,8 @@ assert s["walks_from"] == 0.3 and s["walks_to"] == 0.5, s
 assert s["fails_below"]["value"] == 0.2 and "slip" in s["fails_below"]["failure"], s
 PY
 grep -q "friction: walks from 0.3 to 0.5" "$TMP/out" || fail "(a) stdout: $(cat "$TMP/out")"
+grep -qx "stability: wrote $TMP/a/summary.json, sweep_friction.csv" "$TMP/out" ||
+  fail "(a) the last line does not list the files written: $(tail -n 1 "$TMP/out")"
 
 # (b) one job gives the same rows (up to order and wall time).
 run stability "${ARGS[@]}" --sweep friction=0.2:0.5:4 --jobs 1 --out "$TMP/b"
