@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "config/config_error.hpp"
+
 namespace gaitopt::gaits {
 namespace {
 
@@ -34,6 +36,13 @@ GridExport exportGrid(const Trajectory& traj, double rate_hz) {
   GridExport out{traj.robot(), traj.stepLength(),        rate_hz,
                  {},           switchesOf(traj.knots()), traj.knots().back()};
   const size_t n = gridSize(traj.endTime(), rate_hz);
+  if (n < kMinExportSamples)
+    throw config::ConfigError(
+        "export rate", "", 0,
+        fmt::format("{:g} Hz samples the {:.4g} s step {} time(s), fewer than the {} an export "
+                    "needs: use {:.4g} Hz or more",
+                    rate_hz, traj.endTime(), n, kMinExportSamples,
+                    std::ceil(static_cast<double>(kMinExportSamples - 1) / traj.endTime())));
   out.samples.reserve(n);
   for (size_t i = 0; i < n; ++i) out.samples.push_back(traj.at(static_cast<double>(i) / rate_hz));
   return out;

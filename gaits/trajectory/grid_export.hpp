@@ -37,9 +37,15 @@ struct GridExport {
 /// N + 1, the number of grid times i / rate_hz in [0, end] (rounding of end * rate corrected).
 size_t gridSize(double end, double rate_hz);
 
+/// The fewest samples an export may have: fewer are no trajectory a controller could follow, and
+/// the plots, the integrals of the summary and the checks between the solver's points would
+/// stand on them alone.
+inline constexpr size_t kMinExportSamples = 10;
+
 /// `traj` sampled at t_i = i / rate_hz (Trajectory::at) from 0 to its end time, with its switch
 /// pairs and final knot. @throws std::invalid_argument for a rate that is not > 0 or a
-/// trajectory that does not start at t = 0.
+/// trajectory that does not start at t = 0; config::ConfigError for a rate that gives fewer than
+/// kMinExportSamples samples.
 GridExport exportGrid(const Trajectory& traj, double rate_hz);
 
 /// The Trajectory the grid was taken from: the samples with each switch pair and the end knot

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "config/config_error.hpp"
 #include "gaits/trajectory/grid_export.hpp"
 #include "support/same_knots.hpp"
 
@@ -85,17 +86,18 @@ TEST(GridExport, ASampleAtTheSwitchIsThePostSwitchState) {
   // Fixed durations on the grid: the sample at the switch time is the DSP's first knot (at() is
   // right-continuous), the sample at the end is the end knot; joined, neither is doubled.
   const Trajectory step = stepWithSwitch(0.025, 0.6, 0.7);
-  const gaits::GridExport grid = gaits::exportGrid(step, 10);
-  ASSERT_EQ(grid.samples.size(), 8u);
-  EXPECT_EQ(grid.samples[6].t, 0.6);
-  expectSameKnot(grid.samples[6], grid.switches.at(0).after, 6);
-  expectSameKnot(grid.samples[7], grid.end, 7);
+  const gaits::GridExport grid = gaits::exportGrid(step, 20);
+  ASSERT_EQ(grid.samples.size(), 15u);
+  EXPECT_EQ(grid.samples[12].t, 0.6);
+  expectSameKnot(grid.samples[12], grid.switches.at(0).after, 12);
+  expectSameKnot(grid.samples[14], grid.end, 14);
   const Trajectory joined =
       gaits::joinGrid(step.robot(), step.stepLength(), grid.samples, grid.switches, grid.end);
-  ASSERT_EQ(joined.knots().size(), 9u);  // 0 .. 0.5, the pair at 0.6, the end at 0.7
-  expectSameKnot(joined.knots()[6], grid.switches[0].before, 6);
-  expectSameKnot(joined.knots()[7], grid.switches[0].after, 7);
-  expectSameKnot(joined.knots()[8], grid.end, 8);
+  ASSERT_EQ(joined.knots().size(), 16u);  // 0 .. 0.55, the pair at 0.6, 0.65, the end at 0.7
+  expectSameKnot(joined.knots()[12], grid.switches[0].before, 12);
+  expectSameKnot(joined.knots()[13], grid.switches[0].after, 13);
+  expectSameKnot(joined.knots()[14], grid.samples[13], 14);
+  expectSameKnot(joined.knots()[15], grid.end, 15);
 }
 
 TEST(GridExport, RejectsABadRateAndAStepNotStartingAtZero) {
@@ -105,6 +107,21 @@ TEST(GridExport, RejectsABadRateAndAStepNotStartingAtZero) {
   std::vector<Knot> late = step.knots();
   for (Knot& k : late) k.t += 0.5;
   EXPECT_THROW(gaits::exportGrid(Trajectory("late", 0.35, late), 1000), std::invalid_argument);
+}
+
+TEST(GridExport, ARateThatSamplesTheStepTooFewTimesIsBadInput) {
+  // 0.7213 s: 9 samples at 12 Hz (i = 0..8), 10 at 13 Hz, the rate the message asks for.
+  const Trajectory step = stepWithSwitch(0.01, 0.6137, 0.7213);
+  try {
+    gaits::exportGrid(step, 12);
+    FAIL() << "9 samples were exported";
+  } catch (const config::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("12 Hz samples the 0.7213 s step 9 time(s), fewer than "
+                                         "the 10 an export needs: use 13 Hz or more"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(gaits::exportGrid(step, 13).samples.size(), gaits::kMinExportSamples);
 }
 
 }  // namespace
