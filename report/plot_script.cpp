@@ -52,6 +52,13 @@ bool runPlotScript(const std::string& script, const std::vector<std::string>& ar
   return plotScriptStatus(script, args, output) == 0;
 }
 
+bool holdsPictures(const std::string& dir) {
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+    if (entry.path().extension() == ".png") return true;
+  return false;
+}
+
 std::function<void(const std::string& dir)> gaitPictures(bool plots) {
   if (!plots) return {};
   return [](const std::string& dir) { runPlotScript("gait_plots.py", {dir}, io::Output::kErrors); };

@@ -32,4 +32,8 @@ bool runPlotScript(const std::string& script, const std::vector<std::string>& ar
 /// command's last line says where the folder is.
 std::function<void(const std::string& dir)> gaitPictures(bool plots);
 
+/// Whether `dir` holds a picture (a .png), so a command names pictures only when a script drew
+/// them.
+bool holdsPictures(const std::string& dir);
+
 }  // namespace gaitopt::report

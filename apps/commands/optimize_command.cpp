@@ -95,7 +95,7 @@ void runOptimize(const OptimizeOptions& o) {
   // A failure of an earlier run would sit next to this result and contradict it.
   io::removeIfOurs(out.path() + ".failed");
   fmt::print("optimize: wrote {}/trajectory.csv, summary.json{}\n", out.path(),
-             o.output.plots ? " and pictures" : "");
+             report::holdsPictures(out.path()) ? " and pictures" : "");
   warnOfBreaches(summary["between_nodes"]);
 }
 

@@ -64,7 +64,7 @@ void runPoly(const PolyOptions& options) {
       summary["min_normal_force"].get<double>(), summary["max_friction_ratio"].get<double>(),
       summary["min_zmp_margin"].get<double>());
   fmt::print("poly: wrote {}/trajectory.csv ({} samples), summary.json{}\n", out.path(), samples,
-             options.output.plots ? " and pictures" : "");
+             report::holdsPictures(out.path()) ? " and pictures" : "");
 }
 
 void registerPolyCommand(CLI::App& app) {

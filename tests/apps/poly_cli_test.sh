@@ -69,6 +69,12 @@ run poly --robot "$ROBOT" --gait "$GAIT" --set step_length=long --out "$TMP/set_
 [[ $RC -eq 2 ]] && grep -q "(--set step_length=long).*key 'step_length'" "$TMP/err" ||
   fail "(e) bad value: $RC $(cat "$TMP/err")"
 [[ ! -e "$TMP/set_bad" ]] || fail "(e) a bad --set created its folder"
+# (h) pictures asked for but not drawn (no plot scripts): the last line names no pictures.
+GAITOPT_SCRIPTS="$TMP/no_scripts" run poly --robot "$ROBOT" --gait "$GAIT" --out "$TMP/nopics"
+[[ $RC -eq 0 ]] || fail "(h) exited $RC: $(cat "$TMP/err")"
+grep -q "plotting failed" "$TMP/err" || fail "(h) no warning: $(cat "$TMP/err")"
+grep -q "summary.json$" "$TMP/out" && ! grep -q "and pictures" "$TMP/out" ||
+  fail "(h) claims pictures: $(tail -n 1 "$TMP/out")"
 # (g) poly for a robot whose legs have one link each: bad input (exit 2) naming the robot file.
 run poly --robot "$ROOT/configs/robots/compass_gait.yaml" --gait "$ROOT/configs/gaits/mu2004.yaml" \
   --out "$TMP/p" --no-plots
