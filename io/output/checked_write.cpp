@@ -35,14 +35,16 @@ std::string errnoText(int error) {
 
 namespace {
 
-/// Writes `content` to the open `fd` and closes it; on failure removes `path` and throws.
-void writeAndClose(int fd, const std::string& path, std::string_view content) {
+/// Writes `content` to the open `fd` of the file `path` and closes it; on failure removes `path`
+/// and throws naming `shown` (the user's file, not its temporary).
+void writeAndClose(int fd, const std::string& path, std::string_view content,
+                   const std::string& shown) {
   int error = writeAll(fd, content);
   // close() reports errors a file system defers (NFS, quotas): checked too.
   if (::close(fd) != 0 && error == 0) error = errno;
   if (error != 0) {
     ::unlink(path.c_str());
-    fail(path, error);
+    fail(shown, error);
   }
 }
 
@@ -53,9 +55,9 @@ int createTemporary(const std::string& path, std::string& tmp) {
     tmp = fmt::format("{}.tmp-{}-{}", path, ::getpid(), n);
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
     if (fd >= 0) return fd;
-    if (errno != EEXIST) fail(tmp, errno);
+    if (errno != EEXIST) fail(path, errno);  // the user's file is what cannot be written
   }
-  fail(tmp, EEXIST);
+  fail(path, EEXIST);
 }
 
 }  // namespace
@@ -64,12 +66,12 @@ void writeFile(const std::string& path, std::string_view content) {
   // O_NOFOLLOW: a link at `path` is refused (ELOOP), never written through to its target.
   const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0644);
   if (fd < 0) fail(path, errno);
-  writeAndClose(fd, path, content);
+  writeAndClose(fd, path, content, path);
 }
 
 void writeFileAtomically(const std::string& path, std::string_view content) {
   std::string tmp;
-  writeAndClose(createTemporary(path, tmp), tmp, content);
+  writeAndClose(createTemporary(path, tmp), tmp, content, path);
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     const int error = errno;
     ::unlink(tmp.c_str());

@@ -59,6 +59,16 @@ TEST_F(CheckedWriteTest, MissingFolderNamesFileAndReason) {
   }
 }
 
+TEST_F(CheckedWriteTest, AnAtomicWriteNamesTheFileNotItsTemporary) {
+  const std::string file = (std::filesystem::path(path("gone")) / "page.html").string();
+  try {
+    writeFileAtomically(file, "x");
+    FAIL();
+  } catch (const WriteError& e) {
+    EXPECT_EQ(std::string(e.what()), file + ": cannot write: No such file or directory");
+  }
+}
+
 TEST_F(CheckedWriteTest, AppendGrowsAndTruncateCutsATornLine) {
   {
     AppendFile f(path("log.csv"));
