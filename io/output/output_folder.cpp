@@ -126,6 +126,18 @@ void makeStaging(const fs::path& staging) {
   }
 }
 
+/// Removes a replaced result. The new one is in place by then, so a result that cannot be
+/// removed (files of another user in it) is a warning, not a failure of the run.
+void removeOldResult(const fs::path& old) {
+  std::error_code ec;
+  fs::remove_all(old, ec);
+  if (ec)
+    fmt::print(stderr,
+               "warning: {}: the replaced result could not be removed ({}): remove it "
+               "yourself\n",
+               old.string(), ec.message());
+}
+
 }  // namespace
 
 std::string normaliseOutPath(const std::string& text, const std::string& option) {
@@ -220,7 +232,7 @@ void cleanLeftovers(const std::string& out) {
   // A kill between the two renames of write() left the previous result only as OUT.old-PID.
   if (newest_old && !fs::exists(fs::symlink_status(target))) fs::rename(*newest_old, target);
   for (const auto& p : stale)
-    if (fs::exists(fs::symlink_status(p))) fs::remove_all(p);
+    if (fs::exists(fs::symlink_status(p))) removeOldResult(p);
 }
 
 OutputFolder::OutputFolder(const std::string& out, const std::vector<std::string>& inputs,
@@ -245,7 +257,7 @@ void OutputFolder::write(const std::function<void(const std::string&)>& fill) co
   // Two renames: the old result stays whole until the new one is in place.
   if (fs::exists(fs::symlink_status(target))) fs::rename(target, old);
   fs::rename(staging, target);
-  fs::remove_all(old);
+  removeOldResult(old);
 }
 
 ResumableFolder::ResumableFolder(const std::string& dir, const std::vector<std::string>& inputs,

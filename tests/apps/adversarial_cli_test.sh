@@ -216,6 +216,27 @@ case_library_on_a_nearly_full_disk() {
   ! grep -q ",1," <<<"$(tail -n +2 <<<"$rows")" || bad "a row says converged: $rows"
 }
 
+# A user replaces a result that holds another user's files (made by root): the new result is in
+# place and the run succeeds; the old one it cannot remove is left with a warning naming it.
+case_replacing_a_result_with_another_users_files() {
+  local shared
+  shared=$(mktemp -d /tmp/gaitopt-shared.XXXXXX) && chmod 777 "$shared" || return 1
+  if [[ $(id -u) -ne 0 ]] || ! runuser -u nobody -- test -x "$GAITOPT" -a -r "$FIVE"; then
+    rm -rf "$shared" && echo "  (needs root, and a build and configs that nobody can read)" && return 77
+  fi
+  "$GAITOPT" poly --robot "$FIVE" --gait "$FIVE_GAIT" --no-plots --rate 100 --out "$shared/prev" \
+    >/dev/null 2>&1 || return 1
+  runuser -u nobody -- "$GAITOPT" poly --robot "$FIVE" --gait "$FIVE_GAIT" --no-plots --rate 50 \
+    --out "$shared/prev" >"$TMP/out" 2>"$TMP/err"
+  RC=$?
+  local rate left
+  rate=$(grep -o '"sample_rate_hz": [0-9.]*' "$shared/prev/summary.json")
+  left=$(ls -d "$shared"/prev.old-* 2>/dev/null)
+  rm -rf "$shared"
+  code 0 && says "warning: .*prev.old-[0-9]+: the replaced result could not be removed" || return 1
+  [[ $rate == '"sample_rate_hz": 50.0' && -n $left ]] || bad "new result $rate, leftover '$left'"
+}
+
 CASES=(
   "paths: optimize --out a result folder holding the config's robot and gait|config_inputs"
   "paths: library --out a folder holding its OCP's robot|library_config_inputs"
@@ -235,6 +256,7 @@ CASES=(
   "kill: a sweep killed while writing, then resumed|kill_and_resume"
   "concurrency: two runs on one folder|two_runs_at_once"
   "writers: library on a nearly full disk|library_on_a_nearly_full_disk"
+  "writers: a result holding another user's files is replaced with a warning|replacing_a_result_with_another_users_files"
 )
 passed=0 failed=0 skipped=0
 for row in "${CASES[@]}"; do
