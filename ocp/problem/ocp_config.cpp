@@ -24,6 +24,18 @@ std::string relativeTo(const std::string& file, const std::string& path) {
   return p.is_absolute() ? path : (std::filesystem::path(file).parent_path() / p).string();
 }
 
+/// The file `value` of `key` names, relative to the config's folder. @throws ConfigError naming
+/// the config and the key when there is no such file.
+std::string fileOfKey(const YamlReader& r, const std::string& key, const std::string& value,
+                      const std::string& config_path) {
+  std::string file = relativeTo(config_path, value);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec))
+    r.fail(key,
+           fmt::format("no file '{}' (read relative to the config's folder: {})", value, file));
+  return file;
+}
+
 PhaseConfig readPhase(const YamlReader& r) {
   r.allowOnly(
       {"name", "duration", "duration_min", "duration_max", "segments", "mesh", "first_segment"});
@@ -304,9 +316,9 @@ OcpConfig loadOcpConfig(const std::string& path, const std::vector<config::Overr
   OcpConfig c;
   c.name = root.string("name");
   root.stringOr("description", "");
-  c.robot_path = relativeTo(path, root.string("robot"));
+  c.robot_path = fileOfKey(root, "robot", root.string("robot"), path);
   const std::string guess = root.string("initial_guess");
-  if (guess != kStraightLegGuess) c.guess_gait_path = relativeTo(path, guess);
+  if (guess != kStraightLegGuess) c.guess_gait_path = fileOfKey(root, "initial_guess", guess, path);
   c.step_length = root.number("step_length", config::inRange(0.01, 5.0, "[m]"));
   c.slope = root.numberOr(
       "slope", 0.0, config::angleInRange(-dynamics::kMaxConfigSlope, dynamics::kMaxConfigSlope));

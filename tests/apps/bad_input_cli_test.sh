@@ -59,6 +59,12 @@ run optimize --config "$TMP/ocp_far.yaml" --out "$TMP/out_dir" --quiet --no-plot
 expect "out of reach (optimize)" 3 "ocp_far.yaml: key 'step_length': 1.9 m is out of reach: the legs of robot 'rabbit' \(0.8 m each\) span less than 1.6 m"
 [[ ! -e "$TMP/out_dir.failed" ]] || fail "out of reach (optimize): Ipopt was run"
 
+# A config copied away from configs/ocp/: its robot, named relative to its own folder, is not
+# there; the error names the config, the key and where it looked.
+cp "$OCP" "$TMP/copied.yaml"
+run optimize --config "$TMP/copied.yaml" --out "$TMP/out_dir" --quiet --no-plots
+expect "copied config" 2 "copied.yaml:[0-9]+: key 'robot': no file '../robots/rabbit.yaml' \(read relative to the config's folder: .*/robots/rabbit.yaml\)"
+
 # Friction coefficient 0.
 edit "$ROBOT" mu0.yaml 's/^friction: 0.6/friction: 0/'
 poly --robot "$TMP/mu0.yaml" --gait "$GAIT"
