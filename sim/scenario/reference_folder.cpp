@@ -20,7 +20,8 @@ std::string robotOfFolder(const std::string& dir) {
   const std::string summary = dir + "/summary.json";
   if (!std::filesystem::is_regular_file(summary))
     throw config::ConfigError(summary, "", 0,
-                              "cannot read it: is this a gait result folder? (or pass --robot)");
+                              "missing: a gait result folder holds trajectory.csv and "
+                              "summary.json (gaitopt poly and optimize write both)");
   const auto json = io::readStrictJson(summary);
   if (!json.is_object() || !json.contains("robot") || !json["robot"].is_string())
     throw config::ConfigError(summary, "robot", 0, "expected the robot's name (or pass --robot)");

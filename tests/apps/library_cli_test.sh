@@ -119,6 +119,12 @@ run interpolate --library "$L" --speed 0.9 --step-length 0.5 --out "$TMP/far" --
 grep -q "speed 0.9 is outside the library's range \[0.6, 0.8\]" "$TMP/err" || fail "(a') $(cat "$TMP/err")"
 run interpolate --library "$TMP" --speed 0.7 --step-length 0.5 --out "$TMP/none" --no-plots
 [[ $RC -eq 2 ]] || fail "(a') not a library exited $RC"
+# A solved point whose trajectory.csv is gone: a damaged library (exit 2 naming the file), not
+# a point without a gait (exit 3).
+cp -r "$L" "$TMP/damaged" && rm "$TMP/damaged/points/"*/trajectory.csv
+run interpolate --library "$TMP/damaged" --speed 0.65 --step-length 0.5 --out "$TMP/dmg" --no-plots
+[[ $RC -eq 2 ]] && grep -q "trajectory.csv: missing beside its summary.json" "$TMP/err" ||
+  fail "(a') damaged library exited $RC: $(cat "$TMP/err")"
 
 # (b) a rerun has nothing to do and leaves index.csv as it was.
 run library --config "$TMP/tiny.yaml" --out "$L" --jobs 2
