@@ -4,6 +4,7 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include "config/quantities.hpp"
 #include "dynamics/energy.hpp"
 #include "dynamics/kinematics.hpp"
 #include "dynamics/model_variation.hpp"
@@ -20,12 +21,24 @@ namespace {
 using dynamics::Model;
 using gaitopt::VecD;
 
-/// Angles and rates of the robot's size, or InputError (a numpy array of another length would
-/// otherwise index out of bounds).
-const VecD& sized(const Model& model, const VecD& v, const char* name) {
+/// A vector of finite numbers of the robot's size, or InputError (a numpy array of another length
+/// would otherwise index out of bounds).
+const VecD& sized(const Model& model, const VecD& v, std::string_view name) {
   if (v.size() != model.nLinks())
     throw std::invalid_argument(std::string(name) + ": expected " + std::to_string(model.nLinks()) +
                                 " values (one per link), got " + std::to_string(v.size()));
+  if (!v.allFinite())
+    throw std::invalid_argument(std::string(name) + ": expected finite numbers, got NaN or Inf");
+  return v;
+}
+
+/// Angles, rates or accelerations of the robot's size, each in the range `inspect --state`
+/// takes (config/quantities.hpp), or InputError: NaN, Inf or 1e200 rad/s would otherwise come
+/// back as NaN or Inf energies.
+const VecD& state(const Model& model, const VecD& v, const config::Quantity& q) {
+  sized(model, v, q.name);
+  for (int i = 0; i < v.size(); ++i)
+    config::requireInRange(q, v(i), std::string(q.name) + "[" + std::to_string(i) + "]");
   return v;
 }
 
@@ -62,56 +75,57 @@ void bindRobot(py::module_& m) {
       .def(
           "mass_matrix",
           [](const Model& r, const VecD& theta) {
-            return dynamics::massMatrix<double>(r, sized(r, theta, "theta"));
+            return dynamics::massMatrix<double>(r, state(r, theta, config::kLinkAngle));
           },
           py::arg("theta"), "D(theta), n x n (Mu 2.8a)")
       .def(
           "coriolis",
           [](const Model& r, const VecD& theta, const VecD& dtheta) {
-            return dynamics::coriolis<double>(r, sized(r, theta, "theta"),
-                                              sized(r, dtheta, "dtheta"));
+            return dynamics::coriolis<double>(r, state(r, theta, config::kLinkAngle),
+                                              state(r, dtheta, config::kLinkRate));
           },
           py::arg("theta"), py::arg("dtheta"), "H(theta, dtheta) (Mu 2.8b)")
       .def(
           "gravity_vector",
           [](const Model& r, const VecD& theta) {
-            return dynamics::gravityVector<double>(r, sized(r, theta, "theta"));
+            return dynamics::gravityVector<double>(r, state(r, theta, config::kLinkAngle));
           },
           py::arg("theta"), "G(theta) (Mu 2.8c, sign corrected: G_i = -g_i sin theta_i)")
       .def(
           "kinetic_energy",
           [](const Model& r, const VecD& theta, const VecD& dtheta) {
-            return dynamics::kineticEnergy<double>(r, sized(r, theta, "theta"),
-                                                   sized(r, dtheta, "dtheta"));
+            return dynamics::kineticEnergy<double>(r, state(r, theta, config::kLinkAngle),
+                                                   state(r, dtheta, config::kLinkRate));
           },
           py::arg("theta"), py::arg("dtheta"), "K with the stance tip pinned [J] (Mu 2.4)")
       .def(
           "potential_energy",
           [](const Model& r, const VecD& theta) {
-            return dynamics::potentialEnergy<double>(r, sized(r, theta, "theta"));
+            return dynamics::potentialEnergy<double>(r, state(r, theta, config::kLinkAngle));
           },
           py::arg("theta"), "P with the stance tip at the origin [J] (Mu 2.3)")
       .def(
           "forward_dynamics",
           [](const Model& r, const VecD& theta, const VecD& dtheta, const VecD& tau) {
-            return dynamics::sspForwardDynamics(r, sized(r, theta, "theta"),
-                                                sized(r, dtheta, "dtheta"), sized(r, tau, "tau"));
+            return dynamics::sspForwardDynamics(r, state(r, theta, config::kLinkAngle),
+                                                state(r, dtheta, config::kLinkRate),
+                                                sized(r, tau, "tau"));
           },
           py::arg("theta"), py::arg("dtheta"), py::arg("tau"),
           "ddtheta of single support under joint torques tau (q-space, tau0 the stance ankle)")
       .def(
           "inverse_dynamics",
           [](const Model& r, const VecD& theta, const VecD& dtheta, const VecD& ddtheta) {
-            return dynamics::sspInverseDynamics(r, sized(r, theta, "theta"),
-                                                sized(r, dtheta, "dtheta"),
-                                                sized(r, ddtheta, "ddtheta"));
+            return dynamics::sspInverseDynamics(r, state(r, theta, config::kLinkAngle),
+                                                state(r, dtheta, config::kLinkRate),
+                                                state(r, ddtheta, config::kLinkAcceleration));
           },
           py::arg("theta"), py::arg("dtheta"), py::arg("ddtheta"),
           "joint torques of single support (Mu 2.43)")
       .def(
           "swing_tip",
           [](const Model& r, const VecD& theta) {
-            return dynamics::swingTip<double>(r, sized(r, theta, "theta"));
+            return dynamics::swingTip<double>(r, state(r, theta, config::kLinkAngle));
           },
           py::arg("theta"), "swing tip E relative to the stance tip B [m] (Mu 2.1)");
 }

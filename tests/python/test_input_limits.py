@@ -93,3 +93,22 @@ def test_a_long_walk_stops_when_a_signal_handler_raises(walker, poly_gait):
         signal.alarm(0)
         signal.signal(signal.SIGALRM, previous)
     assert time.monotonic() - start < 4
+
+
+THETA = [0.1, 0.2, 0.0, 3.0, 3.1]
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda r: r.kinetic_energy(THETA, [1e200, 0, 0, 0, 0]),
+     r"^dtheta\[0\]: expected a number in \[-1000, 1000\] \[rad/s\], got 1e\+200"),
+    (lambda r: r.mass_matrix([float("nan")] * 5), r"^theta: expected finite numbers"),
+    (lambda r: r.potential_energy([0, 0, 0, 0, 1e308]),
+     r"^theta\[4\]: expected a number in \[-12.566.*, 12.566.*\] \[rad\], got 1e\+308"),
+    (lambda r: r.forward_dynamics(THETA, [0] * 5, [float("inf"), 0, 0, 0, 0]),
+     r"^tau: expected finite numbers"),
+], ids=["rate", "nan", "angle", "torque"])
+def test_dynamics_take_the_states_inspect_takes(robot, call, message):
+    # The CLI's `inspect --state` refuses these; the module returned inf or NaN energies.
+    with pytest.raises(gaitopt.InputError, match=message) as e:
+        call(robot)
+    assert e.value.exit_code == 2
