@@ -9,8 +9,7 @@ namespace gaitopt::apps {
 CLI::Validator orShippedFile() {
   return CLI::Validator(
       [](std::string& path) {
-        if (path.rfind("configs/", 0) == 0)
-          if (std::string found = io::localOrShipped(path); !found.empty()) path = found;
+        path = io::shippedIfMissing(path);
         return std::string();  // a missing file is the loader's error, which names it
       },
       "", "or shipped");

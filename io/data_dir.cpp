@@ -47,6 +47,12 @@ std::string dataFile(const std::string& relative) {
   return (fs::path(dataDir()) / relative).string();
 }
 
+std::string shippedIfMissing(const std::string& path) {
+  if (path.rfind("configs/", 0) != 0) return path;
+  std::string found = localOrShipped(path);
+  return found.empty() ? path : found;
+}
+
 std::string localOrShipped(const std::string& relative) {
   if (fs::exists(relative)) return relative;
   if (std::string shipped = dataFile(relative); fs::exists(shipped)) return shipped;

@@ -26,4 +26,9 @@ std::string dataFile(const std::string& relative);
 /// there, else empty.
 std::string localOrShipped(const std::string& relative);
 
+/// A file path as the docs spell it: one under configs/ that the working directory lacks is the
+/// shipped file (localOrShipped); any other path, or one found nowhere, is `path` itself (its
+/// loader then names it as missing).
+std::string shippedIfMissing(const std::string& path);
+
 }  // namespace gaitopt::io

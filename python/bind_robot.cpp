@@ -11,6 +11,7 @@
 #include "dynamics/robot_files/robot_config.hpp"
 #include "dynamics/robot_files/urdf_export.hpp"
 #include "dynamics/ssp_dynamics.hpp"
+#include "io/data_dir.hpp"
 #include "python/bindings.hpp"
 
 namespace py = pybind11;
@@ -46,7 +47,9 @@ const VecD& state(const Model& model, const VecD& v, const config::Quantity& q) 
 
 void bindRobot(py::module_& m) {
   py::class_<Model>(m, "Robot", "A planar biped loaded from a robot YAML (configs/robots/).")
-      .def(py::init([](const std::string& path) { return dynamics::loadRobot(path); }),
+      .def(py::init([](const std::string& path) {
+             return dynamics::loadRobot(io::shippedIfMissing(path));
+           }),
            py::arg("path"),
            "Loads and checks a robot file; InputError names the file and key of a bad value.")
       .def_property_readonly("name", &Model::name)

@@ -7,6 +7,7 @@
 #include "config/overrides.hpp"
 #include "config/quantities.hpp"
 #include "gaits/export/export_contract.hpp"
+#include "io/data_dir.hpp"
 #include "ocp/guess/initial_guess.hpp"
 #include "ocp/problem/gait_problem.hpp"
 #include "ocp/problem/ocp_config.hpp"
@@ -30,7 +31,8 @@ py::list breaches(const std::vector<gaits::ExportBreach>& list) {
 py::dict optimize(const std::string& config_path, double rate_hz,
                   const std::vector<std::string>& set) {
   config::requireInRange(config::kSampleRate, rate_hz, "rate_hz");
-  ocp::OcpConfig config = ocp::loadOcpConfig(config_path, config::parseOverrides(set));
+  ocp::OcpConfig config =
+      ocp::loadOcpConfig(io::shippedIfMissing(config_path), config::parseOverrides(set));
   const dynamics::Model model = ocp::problemModel(config);
   ocp::requireReachable(model, config, config_path);
   config.solver.progress = false;
@@ -66,7 +68,8 @@ void bindSolve(py::module_& m) {
         "Solves an OCP config with Ipopt as `gaitopt optimize` does; `set` lists KEY=VALUE "
         "overrides as its --set does. Returns a dict: status, "
         "iterations, cost, max_violation, wall_time_s, robot (on the config's slope), knots "
-        "(one per collocation point), trajectory (sampled at rate_hz, as trajectory.csv) and "
+        "(one per collocation point), trajectory (trajectory.csv's grid at rate_hz with the "
+        "touchdown's two states and the end state put in, as read_trajectory returns it) and "
         "breaches (the bounds the trajectory breaks between the points, as summary.json's "
         "between_nodes.breaches: a list of dicts check, value, bound, meaning). "
         "InputError for a bad config, InfeasibleError or NotConvergedError for a failed solve.");

@@ -15,6 +15,7 @@
 #include "gaits/polynomial/hip_plan_search.hpp"
 #include "gaits/polynomial/polynomial_gait.hpp"
 #include "gaits/trajectory/trajectory_csv.hpp"
+#include "io/data_dir.hpp"
 #include "io/output/output_folder.hpp"
 #include "python/bindings.hpp"
 #include "sim/scenario/reference_folder.hpp"
@@ -47,7 +48,7 @@ void addMatrix(py::class_<Trajectory>& c, const char* name, Field field, const c
 /// The polynomial gait of a gait YAML for `robot` on the gait's slope (as `gaitopt poly`).
 Trajectory designPoly(const dynamics::Model& robot, const std::string& gait_path, double rate_hz) {
   config::requireInRange(config::kSampleRate, rate_hz, "rate_hz");
-  const gaits::GaitParams params = gaits::loadGait(gait_path);
+  const gaits::GaitParams params = gaits::loadGait(io::shippedIfMissing(gait_path));
   const dynamics::Model model = dynamics::withSlope(robot, params.slope);
   const gaits::HipPlanSearch search = gaits::searchHipPlan(model, params);
   return gaits::buildTrajectory(gaits::PolynomialGait(model, params, search.plan), model, rate_hz);

@@ -143,3 +143,17 @@ def test_errors_carry_the_cli_exit_codes(robot, tmp_path):
     assert info.value.exit_code == 3
     assert issubclass(gaitopt.NotConvergedError, gaitopt.GaitoptError)
     assert gaitopt.NotConvergedError.exit_code == 4
+
+
+def test_shipped_files_are_found_by_their_configs_path_from_any_folder(tmp_path, monkeypatch):
+    # As the CLI's --config, --robot and --gait: the docs' snippet runs outside the checkout.
+    monkeypatch.chdir(tmp_path)
+    robot = gaitopt.Robot("configs/robots/rabbit.yaml")
+    assert robot.name == "rabbit"
+    assert gaitopt.optimize("configs/ocp/rabbit_kelly2017.yaml", rate_hz=200)["cost"] == \
+        pytest.approx(390.79, abs=0.01)
+    five = gaitopt.Robot("configs/robots/mu2004_five_link.yaml")
+    assert gaitopt.design_poly(five, "configs/gaits/mu2004.yaml", 100).duration == \
+        pytest.approx(0.7)
+    with pytest.raises(gaitopt.InputError, match="configs/robots/nobody.yaml"):
+        gaitopt.Robot("configs/robots/nobody.yaml")
