@@ -11,14 +11,16 @@ namespace gaitopt::apps {
 
 struct OutputOptions {
   std::string out_dir;
-  double rate_hz = 1000;  ///< sample rate of trajectory.csv [Hz]
+  double rate_hz = 1000;  ///< sample rate of the result's rows [Hz]
   bool plots = true;
 };
 
-/// Adds --out DIR (required), --rate HZ and --no-plots to `cmd`.
-inline void addOutputOptions(CLI::App* cmd, OutputOptions& o) {
+/// Adds --out DIR (required), --rate HZ and --no-plots to `cmd`; `rows` names the file --rate
+/// samples.
+inline void addOutputOptions(CLI::App* cmd, OutputOptions& o,
+                             const std::string& rows = "trajectory.csv") {
   cmd->add_option("--out", o.out_dir, "Result folder (created)")->required()->option_text("DIR");
-  cmd->add_option("--rate", o.rate_hz, "Sample rate of trajectory.csv [Hz]")
+  cmd->add_option("--rate", o.rate_hz, "Sample rate of " + rows + " [Hz]")
       ->check(CLI::Number)
       ->check(quantityRange(config::kSampleRate))
       ->default_val(1000);

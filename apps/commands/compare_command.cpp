@@ -47,7 +47,8 @@ void registerCompareCommand(CLI::App& app) {
                   "Result folders, A first (e.g. results/poly_mu2004 results/poly_zmp_mu2004 "
                   "results/opt_mu2004)")
       ->required()
-      ->expected(2, 4);
+      ->expected(2, 4)
+      ->option_text("A B [C [D]]");
   cmd->add_option("--out", options->out_dir, "Output folder (created)")
       ->required()
       ->option_text("DIR");

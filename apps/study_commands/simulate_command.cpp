@@ -89,7 +89,7 @@ void registerSimulateCommand(CLI::App& app) {
   CLI::App* cmd =
       app.add_subcommand("simulate", "Walk an exported gait in closed loop and measure it");
   addScenarioOptions(cmd, options->scenario);
-  addOutputOptions(cmd, options->output);
+  addOutputOptions(cmd, options->output, "walk.csv");
   cmd->add_flag("!--no-poincare", options->poincare, "Skip the Poincare map of the cycle");
   cmd->add_flag("--quiet", options->quiet, "Less output");
   cmd->footer(
