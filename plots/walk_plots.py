@@ -477,9 +477,9 @@ def pictures(w):
 
 def main(result_dir):
     w = Walk(result_dir)
-    if w.s["multipliers"] is None:
-        why = w.s.get("poincare_failure") or "no multipliers in summary.json"
-        print(f"poincare.png skipped: {why}", file=sys.stderr)
+    # Without multipliers and without a failure the map was not asked for (--no-poincare).
+    if w.s["multipliers"] is None and w.s.get("poincare_failure"):
+        print(f"poincare.png skipped: {w.s['poincare_failure']}", file=sys.stderr)
     for name, make in pictures(w):
         fig = make(w)
         path = os.path.join(result_dir, name)

@@ -82,7 +82,8 @@ json.dump({"robot": "five_link", "reference": "ref", "controller": "computed_tor
            "steps_completed": steps - fell, "fell": fell, "failure": rows[-1][-1],
            "max_tracking_error": 0.3 if fell else 0.02,
            "poincare_max_multiplier": None if fell else 0.5,
-           "poincare_multipliers": None if fell else [[0.5, 0], [0.1, 0.2], [0.1, -0.2]]},
+           "poincare_multipliers": None if fell else [[0.5, 0], [0.1, 0.2], [0.1, -0.2]],
+           **({"poincare_failure": "no periodic orbit found"} if fell else {})},
           open(f"{out}/summary.json", "w"))
 PY
 }
@@ -162,8 +163,21 @@ make_walk "$TMP/fell" 3 1
 plot walk_plots.py "$TMP/fell"
 [[ $RC -eq 0 ]] || fail "(b) walk_plots.py exited $RC: $(cat "$TMP/err")"
 [[ $(wc -l <"$TMP/out") -eq 5 ]] || fail "(b) expected 5 lines: $(cat "$TMP/out")"
-grep -q "poincare.png skipped" "$TMP/err" || fail "(b) no skip note: $(cat "$TMP/err")"
+grep -q "poincare.png skipped: no periodic orbit found" "$TMP/err" ||
+  fail "(b) no skip note: $(cat "$TMP/err")"
 [[ ! -e "$TMP/fell/poincare.png" ]] || fail "(b) poincare.png written"
+
+# (b') a walk without the map (--no-poincare): no multipliers and no failure, so no note.
+"$PY" - "$TMP/fell/summary.json" "$TMP/unasked/summary.json" <<'PY'
+import json, os, shutil, sys
+shutil.copytree(os.path.dirname(sys.argv[1]), os.path.dirname(sys.argv[2]))
+s = json.load(open(sys.argv[2]))
+s.pop("poincare_failure")
+json.dump(s, open(sys.argv[2], "w"))
+PY
+rm -f "$TMP/unasked/"*.png
+plot walk_plots.py "$TMP/unasked"
+[[ $RC -eq 0 ]] && ! grep -q "poincare.png skipped" "$TMP/err" || fail "(b') $RC $(cat "$TMP/err")"
 
 # (c) stability sweeps: one picture.
 make_stability "$TMP/stab"
