@@ -40,6 +40,7 @@ void registerInspectCommand(CLI::App& app) {
                   "JSON state file {\"theta\":[...],\"dtheta\":[...],\"ddtheta\":[...]}: "
                   "absolute link angles [rad] in chain order, one per link; dtheta, ddtheta "
                   "optional (zero). Default: standing upright at rest (swing leg theta = pi)")
+      ->transform(orShippedFile())
       ->option_text("FILE.json");
   cmd->callback([options] { runSubcommand([&] { runInspect(*options); }); });
 }

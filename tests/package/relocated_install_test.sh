@@ -47,6 +47,9 @@ check optimize "$G" optimize --config "$TMP/moved/share/gaitopt/configs/ocp/rabb
 check shipped "$G" optimize --config configs/ocp/rabbit_kelly2017.yaml --out opt_shipped --rate 200 \
   --quiet --no-plots
 [[ -f opt_shipped/trajectory.csv ]] || { echo "FAIL: optimize of the shipped config"; exit 1; }
+check state "$G" inspect --robot configs/robots/mu2004_five_link.yaml \
+  --state configs/states/mu2004_table41.json
+grep -q '"robot": "mu2004_five_link"' out.log || { echo "FAIL: inspect --state: $(cat out.log)"; exit 1; }
 check simulate "$G" simulate --reference opt --controller hzd --steps 3 --no-poincare --rate 100 \
   --out walk --quiet
 grep -q '"steps_completed": 3' walk/summary.json || { echo "FAIL: simulate: $(cat out.log)"; exit 1; }
