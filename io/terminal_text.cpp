@@ -17,4 +17,8 @@ std::string printable(std::string_view text) {
   return out;
 }
 
+std::string counted(std::size_t n, std::string_view noun) {
+  return std::to_string(n) + " " + std::string(noun) + (n == 1 ? "" : "s");
+}
+
 }  // namespace gaitopt::io

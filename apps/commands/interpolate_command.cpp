@@ -15,6 +15,7 @@
 #include "config/overrides.hpp"
 #include "gaits/export/gait_summary.hpp"
 #include "io/output/output_folder.hpp"
+#include "io/terminal_text.hpp"
 #include "library/interpolation.hpp"
 #include "library/library_folder.hpp"
 #include "library/point_problem.hpp"
@@ -81,9 +82,9 @@ void runInterpolate(InterpolateOptions o) {
                         report::gaitPictures(o.output.plots));
   });
   fmt::print(
-      "interpolate: {} corners; max dynamics residual {:.3g} N m, periodicity error "
+      "interpolate: {}; max dynamics residual {:.3g} N m, periodicity error "
       "{:.3g}; wrote {}/trajectory.csv\n",
-      corners.size(), summary["max_defect"].get<double>(),
+      io::counted(corners.size(), "corner"), summary["max_defect"].get<double>(),
       summary["periodicity_error"].get<double>(), out.path());
 }
 

@@ -6,6 +6,7 @@
 #include "apps/shipped_file.hpp"
 #include "config/config_error.hpp"
 #include "io/output/checked_write.hpp"
+#include "io/terminal_text.hpp"
 #include "report/plot_script.hpp"
 #include "report/report_folder.hpp"
 
@@ -18,7 +19,8 @@ void runReport(const ReportOptions& o) {
   const report::ReportContent content = report::collectReport(o.dir, o.robot_path);
   const std::string out = o.out.empty() ? o.dir + "/report.html" : o.out;
   io::writeFileAtomically(out, report::renderReportPage(content));
-  fmt::print("report: wrote {} ({} result, {} charts)\n", out, content.kind, content.charts.size());
+  fmt::print("report: wrote {} ({} result, {})\n", out, content.kind,
+             io::counted(content.charts.size(), "chart"));
   if (o.gif && content.kind == "walk" &&
       report::runPlotScript("walk_gif.py", {o.dir}, io::Output::kErrors))
     fmt::print("report: wrote {}/walk.gif\n", o.dir);

@@ -8,6 +8,7 @@
 #include "apps/command_runner.hpp"
 #include "gaits/export/gait_summary.hpp"
 #include "io/output/output_folder.hpp"
+#include "io/terminal_text.hpp"
 #include "report/plot_script.hpp"
 #include "sim/scenario/reference_folder.hpp"
 #include "sim/scenario/walk_summary.hpp"
@@ -63,8 +64,8 @@ void runSimulate(const SimulateOptions& o) {
   scenario.poincare = o.poincare && !scenario.push;  // a pushed walk has no periodic cycle
   const dynamics::Model plant = sim::scenarioPlant(ref.model, scenario);
   if (!o.quiet)
-    fmt::print("simulate: {} steps of {} with {} on {} ground\n", scenario.steps, ref.dir,
-               scenario.controller, sim::groundName(scenario.ground));
+    fmt::print("simulate: {} of {} with {} on {} ground\n", io::counted(scenario.steps, "step"),
+               ref.dir, scenario.controller, sim::groundName(scenario.ground));
   const sim::Reference reference(ref.step, ref.model);
   checkControllerFitsReference(ref, reference, scenario);
   sim::WalkRecorder recorder(plant, o.output.rate_hz);

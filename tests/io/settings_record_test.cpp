@@ -53,5 +53,11 @@ TEST(TerminalText, ControlBytesAreEscapedPrintableTextKept) {
   EXPECT_EQ(printable("\x7f"), "\\x7f");
 }
 
+TEST(TerminalText, ACountTakesItsNounInTheSingularOnlyForOne) {
+  EXPECT_EQ(counted(1, "corner"), "1 corner");
+  EXPECT_EQ(counted(0, "chart"), "0 charts");
+  EXPECT_EQ(counted(20, "step"), "20 steps");
+}
+
 }  // namespace
 }  // namespace gaitopt::io::test
