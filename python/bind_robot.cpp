@@ -3,6 +3,7 @@
 /// (Mu 2.6-2.8) and the energies (Mu 2.3, 2.4) of a robot YAML, with numpy arrays.
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "config/quantities.hpp"
 #include "dynamics/energy.hpp"
@@ -47,28 +48,32 @@ const VecD& state(const Model& model, const VecD& v, const config::Quantity& q) 
 
 void bindRobot(py::module_& m) {
   py::class_<Model>(m, "Robot", "A planar biped loaded from a robot YAML (configs/robots/).")
-      .def(py::init([](const std::string& path) {
-             return dynamics::loadRobot(io::shippedIfMissing(path));
+      .def(py::init([](const std::filesystem::path& path) {
+             return dynamics::loadRobot(io::shippedIfMissing(path.string()));
            }),
            py::arg("path"),
            "Loads and checks a robot file; InputError names the file and key of a bad value.")
-      .def_property_readonly("name", &Model::name)
-      .def_property_readonly("n_links", &Model::nLinks)
+      .def_property_readonly("name", &Model::name, "the robot file's name")
+      .def_property_readonly("n_links", &Model::nLinks, "links in chain order, stance tip first")
       .def_property_readonly("total_mass", &Model::totalMass, "[kg]")
       .def_property_readonly("gravity", &Model::gravity, "|g| [m/s^2]")
       .def_property_readonly("slope", &Model::slope, "ground inclination [rad], > 0 uphill")
-      .def_property_readonly("link_names",
-                             [](const Model& r) {
-                               std::vector<std::string> names;
-                               for (const auto& l : r.links()) names.push_back(l.name);
-                               return names;
-                             })
-      .def_property_readonly("link_lengths",
-                             [](const Model& r) {
-                               VecD l(r.nLinks());
-                               for (int i = 0; i < r.nLinks(); ++i) l(i) = r.link(i).length;
-                               return l;
-                             })
+      .def_property_readonly(
+          "link_names",
+          [](const Model& r) {
+            std::vector<std::string> names;
+            for (const auto& l : r.links()) names.push_back(l.name);
+            return names;
+          },
+          "link names in chain order")
+      .def_property_readonly(
+          "link_lengths",
+          [](const Model& r) {
+            VecD l(r.nLinks());
+            for (int i = 0; i < r.nLinks(); ++i) l(i) = r.link(i).length;
+            return l;
+          },
+          "link lengths in chain order [m]")
       .def(
           "urdf", [](const Model& r) { return dynamics::urdfText(r, dynamics::kExportFoot); },
           "The robot as URDF text, as `gaitopt export-urdf` writes it "

@@ -3,6 +3,7 @@
 /// config's polynomial gait; the solution as a dict with the trajectory.
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "config/overrides.hpp"
 #include "config/quantities.hpp"
@@ -28,8 +29,9 @@ py::list breaches(const std::vector<gaits::ExportBreach>& list) {
   return out;
 }
 
-py::dict optimize(const std::string& config_path, double rate_hz,
+py::dict optimize(const std::filesystem::path& config_file, double rate_hz,
                   const std::vector<std::string>& set) {
+  const std::string config_path = config_file.string();
   config::requireInRange(config::kSampleRate, rate_hz, "rate_hz");
   ocp::OcpConfig config =
       ocp::loadOcpConfig(io::shippedIfMissing(config_path), config::parseOverrides(set));

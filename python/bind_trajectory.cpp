@@ -6,6 +6,7 @@
 
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "config/quantities.hpp"
 #include "dynamics/model_variation.hpp"
@@ -46,9 +47,10 @@ void addMatrix(py::class_<Trajectory>& c, const char* name, Field field, const c
 }
 
 /// The polynomial gait of a gait YAML for `robot` on the gait's slope (as `gaitopt poly`).
-Trajectory designPoly(const dynamics::Model& robot, const std::string& gait_path, double rate_hz) {
+Trajectory designPoly(const dynamics::Model& robot, const std::filesystem::path& gait_path,
+                      double rate_hz) {
   config::requireInRange(config::kSampleRate, rate_hz, "rate_hz");
-  const gaits::GaitParams params = gaits::loadGait(io::shippedIfMissing(gait_path));
+  const gaits::GaitParams params = gaits::loadGait(io::shippedIfMissing(gait_path.string()));
   const dynamics::Model model = dynamics::withSlope(robot, params.slope);
   const gaits::HipPlanSearch search = gaits::searchHipPlan(model, params);
   return gaits::buildTrajectory(gaits::PolynomialGait(model, params, search.plan), model, rate_hz);
@@ -57,11 +59,11 @@ Trajectory designPoly(const dynamics::Model& robot, const std::string& gait_path
 /// A gait folder of `traj` (trajectory files and summary.json) at `dir`, by the CLI's --out rules
 /// (io/output/output_folder.hpp): created, or replaced whole when gaitopt wrote it; a folder of
 /// the user's own files is refused.
-size_t writeFolder(const Trajectory& traj, const dynamics::Model& robot, const std::string& dir,
-                   double rate_hz) {
+size_t writeFolder(const Trajectory& traj, const dynamics::Model& robot,
+                   const std::filesystem::path& dir, double rate_hz) {
   config::requireInRange(config::kSampleRate, rate_hz, "rate_hz");
   size_t samples = 0;
-  io::OutputFolder(dir, {}, "dir").write([&](const std::string& staging) {
+  io::OutputFolder(dir.string(), {}, "dir").write([&](const std::string& staging) {
     samples = gaits::writeGaitExport(staging, traj, robot, rate_hz,
                                      gaits::gaitSummary(traj, robot, {"", "exported"}));
   });
@@ -71,10 +73,10 @@ size_t writeFolder(const Trajectory& traj, const dynamics::Model& robot, const s
 /// The trajectory.csv at `path`, refused (InputError) when the summary.json beside it says it is
 /// a failed solve or a gait of another robot, as simulate refuses such a reference: the file
 /// alone checks only the number of links.
-Trajectory readFolderTrajectory(const std::string& path, const dynamics::Model& robot) {
-  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+Trajectory readFolderTrajectory(const std::filesystem::path& path, const dynamics::Model& robot) {
+  const std::filesystem::path dir = path.parent_path();
   sim::requireGaitOf(dir.empty() ? "." : dir.string(), robot);
-  return gaits::readTrajectoryCsv(path, robot);
+  return gaits::readTrajectoryCsv(path.string(), robot);
 }
 
 }  // namespace
@@ -83,36 +85,44 @@ void bindTrajectory(py::module_& m) {
   py::class_<Trajectory> c(m, "Trajectory",
                            "One step sampled on a time grid; a phase switch is two knots at "
                            "the same time (the last SSP knot, the first DSP knot).");
-  c.def_property_readonly("robot", &Trajectory::robot)
+  c.def_property_readonly("robot", &Trajectory::robot, "the name of the robot it is a gait of")
       .def_property_readonly("step_length", &Trajectory::stepLength, "[m]")
       .def_property_readonly("duration", &Trajectory::duration, "[s]")
-      .def_property_readonly("n_links", &Trajectory::nLinks)
-      .def_property_readonly("phase_durations",
-                             [](const Trajectory& t) {
-                               std::vector<std::pair<std::string, double>> out;
-                               for (const auto& [phase, d] : t.phaseDurations())
-                                 out.emplace_back(gaits::toString(phase), d);
-                               return out;
-                             })
-      .def_property_readonly("t",
-                             [](const Trajectory& t) {
-                               Eigen::VectorXd out(static_cast<Eigen::Index>(t.knots().size()));
-                               for (std::size_t k = 0; k < t.knots().size(); ++k)
-                                 out(static_cast<Eigen::Index>(k)) = t.knots()[k].t;
-                               return out;
-                             })
-      .def_property_readonly("phase",
-                             [](const Trajectory& t) {
-                               std::vector<std::string> out;
-                               for (const Knot& k : t.knots()) out.emplace_back(toString(k.phase));
-                               return out;
-                             })
+      .def_property_readonly("n_links", &Trajectory::nLinks, "angles per knot")
+      .def_property_readonly(
+          "phase_durations",
+          [](const Trajectory& t) {
+            std::vector<std::pair<std::string, double>> out;
+            for (const auto& [phase, d] : t.phaseDurations())
+              out.emplace_back(gaits::toString(phase), d);
+            return out;
+          },
+          "(phase, duration [s]) in order: SSP, then DSP when there is one")
+      .def_property_readonly(
+          "t",
+          [](const Trajectory& t) {
+            Eigen::VectorXd out(static_cast<Eigen::Index>(t.knots().size()));
+            for (std::size_t k = 0; k < t.knots().size(); ++k)
+              out(static_cast<Eigen::Index>(k)) = t.knots()[k].t;
+            return out;
+          },
+          "knot times [s], non-decreasing (a switch's two knots share one)")
+      .def_property_readonly(
+          "phase",
+          [](const Trajectory& t) {
+            std::vector<std::string> out;
+            for (const Knot& k : t.knots()) out.emplace_back(toString(k.phase));
+            return out;
+          },
+          "each knot's phase, 'SSP' or 'DSP'")
       .def(
           "resample",
           [](const Trajectory& t, double rate_hz) {
             return t.resample(config::requireInRange(config::kSampleRate, rate_hz, "rate_hz"));
           },
-          py::arg("rate_hz"))
+          py::arg("rate_hz"),
+          "The step on the grid t_i = i / rate_hz with its switch and end states, as "
+          "write_trajectory then read_trajectory would give it back.")
       .def("__len__", [](const Trajectory& t) { return t.knots().size(); });
   addMatrix(
       c, "theta", [](const Knot& k) { return k.theta; }, "absolute angles [rad], N x n");

@@ -157,3 +157,13 @@ def test_shipped_files_are_found_by_their_configs_path_from_any_folder(tmp_path,
         pytest.approx(0.7)
     with pytest.raises(gaitopt.InputError, match="configs/robots/nobody.yaml"):
         gaitopt.Robot("configs/robots/nobody.yaml")
+
+
+def test_paths_may_be_pathlib_paths(robot, poly_gait, tmp_path):
+    five = gaitopt.Robot(ROOT / "configs/robots/mu2004_five_link.yaml")
+    gait = gaitopt.design_poly(five, ROOT / "configs/gaits/mu2004.yaml", 100)
+    assert gaitopt.write_trajectory(gait, five, tmp_path / "g", rate_hz=100) == 71
+    back = gaitopt.read_trajectory(tmp_path / "g" / "trajectory.csv", five)
+    np.testing.assert_array_equal(back.theta, gait.resample(100).theta)
+    assert gaitopt.optimize(ROOT / "configs/ocp/rabbit_kelly2017.yaml", rate_hz=200)["cost"] == \
+        pytest.approx(390.79, abs=0.01)
