@@ -137,7 +137,7 @@ void registerLibraryCommand(CLI::App& app) {
   cmd->add_option("--out", o->out_dir, "Library folder (created; a rerun resumes it)")
       ->required()
       ->option_text("DIR");
-  cmd->add_option("--jobs", o->jobs, "Worker threads (per MPI rank); 0: all cores (1 under MPI)")
+  cmd->add_option("--jobs", o->jobs, "Worker processes (per MPI rank); 0: all cores (1 under MPI)")
       ->check(CLI::Range(0, 1024))
       ->default_val(0);
   cmd->add_flag("--retry-failed", o->retry_failed, "Solve again the points that failed before");
