@@ -8,6 +8,7 @@
 
 #include "apps/option_checks.hpp"
 #include "apps/shipped_file.hpp"
+#include "io/exit_code.hpp"
 #include "sim/walk/ground_registry.hpp"
 
 namespace gaitopt::apps {
@@ -95,6 +96,17 @@ void addScenarioOptions(CLI::App* cmd, sim::ScenarioSettings& o) {
                   "in summary.json)")
       ->option_text("robot.KEY=VALUE|ground.KEY=VALUE");
   addContactOptions(cmd, o.rules);
+}
+
+void checkControllerFitsReference(const sim::ReferenceFolder& ref, const sim::Reference& reference,
+                                  const sim::Scenario& scenario) {
+  try {
+    sim::makeController(sim::scenarioControllerModel(ref.model, scenario), reference, scenario);
+  } catch (const std::invalid_argument& e) {
+    throw io::CommandError(
+        io::kExitInputError,
+        fmt::format("--controller {}: {}: {}", scenario.controller, ref.dir, e.what()));
+  }
 }
 
 }  // namespace gaitopt::apps

@@ -20,19 +20,6 @@ namespace {
 
 constexpr double kStickFrameInterval = 0.05;  // [s]
 
-/// The gait a controller needs (HZD's: no DSP, every joint but the ankle actuated, a growing
-/// phase variable) is an input requirement: exit 2 naming the option and the folder.
-void checkControllerFitsReference(const sim::ReferenceFolder& ref, const sim::Reference& reference,
-                                  const sim::Scenario& scenario) {
-  try {
-    sim::makeController(sim::scenarioControllerModel(ref.model, scenario), reference, scenario);
-  } catch (const std::invalid_argument& e) {
-    throw io::CommandError(
-        io::kExitInputError,
-        fmt::format("--controller {}: {}: {}", scenario.controller, ref.dir, e.what()));
-  }
-}
-
 void printOutcome(const sim::ScenarioResult& r, int steps) {
   fmt::print("simulate: {} of {} steps{}, max tracking error {:.3g} rad, {:.2f} s\n",
              r.walk.steps_completed, steps,

@@ -195,6 +195,7 @@ void runStability(const StabilityOptions& o) {
   const sim::Reference reference(ref.step, ref.model);
   sim::Scenario base = sim::makeScenario(o.scenario);
   base.poincare = o.poincare;
+  checkControllerFitsReference(ref, reference, base);
   Grids grids = parseGrids(o, base, ref.model);
   const io::ResumableFolder folder(o.out_dir, sim::scenarioInputs(o.scenario, ref), kSettingsFile);
   const std::string& out_dir = folder.path();

@@ -113,4 +113,11 @@ run stability "${ARGS[@]}" --map "push=-1:1:3" --out "$TMP/g"
 grep -q "expected two parameters" "$TMP/err" || fail "(g) one: $(cat "$TMP/err")"
 run stability "${ARGS[@]}" --out "$TMP/g"
 [[ $RC -eq 2 ]] && grep -q "give --sweep or --map" "$TMP/err" || fail "(g) none: $(cat "$TMP/err")"
+# (i) a controller the gait does not fit (HZD needs an instantaneous double support): exit 2
+# before anything is walked or written, as simulate refuses it, so a corrected rerun may use the
+# same folder.
+run stability "${ARGS[@]}" --controller hzd --sweep push=-1:1:3 --out "$TMP/hzd"
+[[ $RC -eq 2 ]] && grep -q "^error: --controller hzd: .*needs a gait with an instantaneous double" \
+  "$TMP/err" || fail "(i) exited $RC: $(cat "$TMP/err")"
+[[ ! -e "$TMP/hzd" ]] || fail "(i) a folder was made for a refused controller"
 echo "stability CLI: all checks passed"
