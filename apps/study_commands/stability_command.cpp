@@ -67,17 +67,17 @@ std::pair<const sim::SweepParameter*, std::vector<double>> parseAxis(const std::
   }
 }
 
-/// NAME or NAME=a:b:n (its row file is opened by openFiles).
-Sweep parseSweep(const std::string& text, const sim::Scenario& base) {
-  auto [p, values] = parseAxis(text, "--sweep", base);
-  return {p, std::move(values), nullptr};
-}
-
 /// The parameter's value at the nominal point (the robot's friction when the scenario keeps it).
 double nominalValue(const sim::Scenario& base, const std::string& name,
                     const dynamics::Model& model) {
   const double v = sim::sweepValue(base, name);
   return name == "friction" && !std::isfinite(v) ? model.friction() : v;
+}
+
+/// NAME or NAME=a:b:n and the nominal value (its row file is opened by openFiles).
+Sweep parseSweep(const std::string& text, const sim::Scenario& base, const dynamics::Model& model) {
+  auto [p, values] = parseAxis(text, "--sweep", base);
+  return {p, sim::withNominal(std::move(values), nominalValue(base, p->name(), model)), nullptr};
 }
 
 /// A[=a:b:n],B[=c:d:m]: two different parameters, each with at least 2 increasing values.
@@ -92,7 +92,8 @@ Map parseMap(const std::string& text, const sim::Scenario& base, const dynamics:
     if (values.size() < 2 || values.front() >= values.back())
       throw config::ConfigError("--map", p->name(), 0,
                                 "a map axis needs at least 2 values, increasing (a < b, n >= 2)");
-    *axis = {p, std::move(values), nominalValue(base, p->name(), model)};
+    const double nominal = nominalValue(base, p->name(), model);
+    *axis = {p, sim::withNominal(std::move(values), nominal), nominal};
   }
   if (m.a.parameter == m.b.parameter)
     throw config::ConfigError("--map", m.a.parameter->name(), 0,
@@ -127,7 +128,7 @@ Grids parseGrids(const StabilityOptions& o, const sim::Scenario& base,
   Grids g;
   double points = 0;
   for (const auto& text : o.sweeps) {
-    g.sweeps.push_back(parseSweep(text, base));
+    g.sweeps.push_back(parseSweep(text, base, model));
     points += static_cast<double>(g.sweeps.back().values.size());
     requireGridFits(points, kBytesPerPoint, "--sweep " + text);
   }

@@ -42,6 +42,15 @@ SweepRow walkSweepPoint(const dynamics::Model& model, const Reference& reference
   return row;
 }
 
+std::vector<double> withNominal(std::vector<double> values, double nominal) {
+  if (!std::isfinite(nominal) || values.empty()) return values;
+  const double tolerance = 1e-9 * std::max(1.0, std::abs(values.back() - values.front()));
+  for (const double v : values)
+    if (std::abs(v - nominal) <= tolerance) return values;
+  values.insert(std::upper_bound(values.begin(), values.end(), nominal), nominal);
+  return values;
+}
+
 nlohmann::ordered_json walkingInterval(const SweepParameter& parameter,
                                        const std::map<std::string, SweepRow>& by_key,
                                        double nominal) {

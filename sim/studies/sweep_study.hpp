@@ -26,6 +26,11 @@ namespace gaitopt::sim {
 ///         (config/quantities.hpp) or a geometric range whose ends are not both positive.
 std::vector<double> sweepValues(const SweepParameter& parameter, const gaits::GridAxis& axis);
 
+/// `values` (increasing) with `nominal` put in its place unless a value lies within 1e-9 of the
+/// span from it (or it is NaN): an interval around the nominal grows from a walked point, not
+/// from the grid's nearest one.
+std::vector<double> withNominal(std::vector<double> values, double nominal);
+
 /// Walks `scenario` with the parameter `name` set to `value` (model: the reference's robot).
 SweepRow walkSweepPoint(const dynamics::Model& model, const Reference& reference, Scenario scenario,
                         const std::string& name, double value);

@@ -19,14 +19,15 @@ ARGS=(--robot "$LONG_HEEL" --reference "$TMP/poly" --steps 2 --no-plots --quiet)
 # a little (less than --max-slip, 1 cm) and the walk goes on, at 0.2 it slides further and fails.
 run stability "${ARGS[@]}" --sweep friction=0.2:0.5:4 --jobs 2 --out "$TMP/a"
 [[ $RC -eq 0 ]] || fail "(a) stability exited $RC: $(cat "$TMP/err")"
-[[ $(wc -l <"$TMP/a/sweep_friction.csv") -eq 5 ]] || fail "(a) rows: $(cat "$TMP/a/sweep_friction.csv")"
+# The nominal, the robot's 0.6, is walked too: the interval grows from it, not from 0.5.
+[[ $(wc -l <"$TMP/a/sweep_friction.csv") -eq 6 ]] || fail "(a) rows: $(cat "$TMP/a/sweep_friction.csv")"
 check_json "(a) summary" "$TMP/a/summary.json" <<'PY'
 s = d["sweeps"]["friction"]
-assert s["nominal"] == 0.6 and s["values"] == 4, s
-assert s["walks_from"] == 0.3 and s["walks_to"] == 0.5, s
+assert s["nominal"] == 0.6 and s["values"] == 5, s
+assert s["walks_from"] == 0.3 and s["walks_to"] == 0.6, s
 assert s["fails_below"]["value"] == 0.2 and "slip" in s["fails_below"]["failure"], s
 PY
-grep -q "friction: walks from 0.3 to 0.5" "$TMP/out" || fail "(a) stdout: $(cat "$TMP/out")"
+grep -q "friction: walks from 0.3 to 0.6" "$TMP/out" || fail "(a) stdout: $(cat "$TMP/out")"
 grep -qx "stability: wrote $TMP/a/summary.json, sweep_friction.csv" "$TMP/out" ||
   fail "(a) the last line does not list the files written: $(tail -n 1 "$TMP/out")"
 
@@ -45,13 +46,13 @@ mkdir -p "$TMP/c" && mv "$TMP/c.csv" "$TMP/c/sweep_friction.csv"
 cp "$TMP/a/.gaitopt-result" "$TMP/a/settings.json" "$TMP/c/"  # a killed run leaves them too
 run stability "${ARGS[@]}" --sweep friction=0.2:0.5:4 --out "$TMP/c"
 [[ $RC -eq 0 ]] || fail "(c) stability exited $RC: $(cat "$TMP/err")"
-grep -q "2 points to walk (2 done before)" "$TMP/out" || fail "(c) no resume: $(cat "$TMP/out")"
+grep -q "3 points to walk (2 done before)" "$TMP/out" || fail "(c) no resume: $(cat "$TMP/out")"
 check_json "(c) summary" "$TMP/c/summary.json" <<'PY'
-assert d["sweeps"]["friction"]["values"] == 4 and d["sweeps"]["friction"]["walks_from"] == 0.3, d
+assert d["sweeps"]["friction"]["values"] == 5 and d["sweeps"]["friction"]["walks_from"] == 0.3, d
 PY
 # A second rerun has nothing left to do.
 run stability "${ARGS[@]}" --sweep friction=0.2:0.5:4 --out "$TMP/c"
-grep -q "0 points to walk (4 done before)" "$TMP/out" || fail "(c) rerun: $(cat "$TMP/out")"
+grep -q "0 points to walk (5 done before)" "$TMP/out" || fail "(c) rerun: $(cat "$TMP/out")"
 
 # (d) a run killed mid-sweep keeps its finished rows and a rerun completes the sweep.
 timeout -s KILL 2 "$GAITOPT" stability "${ARGS[@]}" --sweep gain_scale=0.5:2:8 --jobs 1 \
@@ -59,7 +60,7 @@ timeout -s KILL 2 "$GAITOPT" stability "${ARGS[@]}" --sweep gain_scale=0.5:2:8 -
 run stability "${ARGS[@]}" --sweep gain_scale=0.5:2:8 --out "$TMP/d"
 [[ $RC -eq 0 ]] || fail "(d) rerun exited $RC: $(cat "$TMP/err")"
 check_json "(d) summary" "$TMP/d/summary.json" <<'PY'
-assert d["sweeps"]["gain_scale"]["values"] == 8, d
+assert d["sweeps"]["gain_scale"]["values"] == 9, d  # 8 and the nominal 1, between them
 PY
 
 # (d2) --set replaces a value of the robot file: the sweep's nominal is the friction set.
@@ -77,26 +78,26 @@ run stability "${ARGS[@]}" --sweep friction=0.1:x:3 --out "$TMP/e"
 [[ $RC -eq 2 ]] && grep -q "not a finite number" "$TMP/err" || fail "(e) range: $(cat "$TMP/err")"
 run stability "${ARGS[@]}" --sweep stiffness=1e5:1e6:2 --out "$TMP/e"
 [[ $RC -eq 2 ]] && grep -q "impedance ground only" "$TMP/err" || fail "(e) stiffness: $(cat "$TMP/err")"
-# (f) a 2-D map: 2 x 3 points in map_push_friction.csv keyed by both values, the walking region
+# (f) a 2-D map: 3 x 3 points in map_push_friction.csv keyed by both values, the walking region
 # in summary.json (friction 0.2 slips, as in (a)); a rerun walks nothing; the picture is drawn.
-run stability "${ARGS[@]}" --map push=-0.5:0.5:2,friction=0.2:0.6:3 --out "$TMP/f"
+run stability "${ARGS[@]}" --map push=-0.5:0.5:3,friction=0.2:0.6:3 --out "$TMP/f"
 [[ $RC -eq 0 ]] || fail "(f) stability exited $RC: $(cat "$TMP/err")"
-[[ $(wc -l <"$TMP/f/map_push_friction.csv") -eq 7 ]] || fail "(f) rows: $(cat "$TMP/f/map_push_friction.csv")"
+[[ $(wc -l <"$TMP/f/map_push_friction.csv") -eq 10 ]] || fail "(f) rows: $(cat "$TMP/f/map_push_friction.csv")"
 head -n 1 "$TMP/f/map_push_friction.csv" | grep -q '^push,friction,steps_completed,' ||
   fail "(f) header: $(head -n 1 "$TMP/f/map_push_friction.csv")"
 check_json "(f) summary" "$TMP/f/summary.json" <<'PY'
 m = d["maps"]["push_friction"]
-assert m["points"] == 6 and m["a"]["name"] == "push" and m["b"]["nominal"] == 0.6, m
-assert [r["push"] for r in m["per_row"]] == [-0.5, 0.5], m
+assert m["points"] == 9 and m["a"]["name"] == "push" and m["b"]["nominal"] == 0.6, m
+assert [r["push"] for r in m["per_row"]] == [-0.5, 0, 0.5], m
 for r in m["per_row"]:
     assert r["walks_to"] in (None, 0.6) and r["walks_from"] != 0.2, r
-assert 0 <= m["points_walked"] <= 4, m
+assert 0 <= m["points_walked"] <= 6, m
 PY
-grep -q "map push_friction: .* of 6 points walk" "$TMP/out" || fail "(f) stdout: $(cat "$TMP/out")"
-run stability "${ARGS[@]}" --map push=-0.5:0.5:2,friction=0.2:0.6:3 --out "$TMP/f"
-grep -q "0 points to walk (6 done before)" "$TMP/out" || fail "(f) rerun: $(cat "$TMP/out")"
+grep -q "map push_friction: .* of 9 points walk" "$TMP/out" || fail "(f) stdout: $(cat "$TMP/out")"
+run stability "${ARGS[@]}" --map push=-0.5:0.5:3,friction=0.2:0.6:3 --out "$TMP/f"
+grep -q "0 points to walk (9 done before)" "$TMP/out" || fail "(f) rerun: $(cat "$TMP/out")"
 run stability --robot "$LONG_HEEL" --reference "$TMP/poly" --steps 2 --quiet \
-  --map push=-0.5:0.5:2,friction=0.2:0.6:3 --out "$TMP/f"
+  --map push=-0.5:0.5:3,friction=0.2:0.6:3 --out "$TMP/f"
 [[ $RC -eq 0 && -s "$TMP/f/map_push_friction.png" ]] || fail "(f) picture: $(cat "$TMP/err")"
 
 # (g) bad maps: one parameter, the same one twice, fewer than 2 values, an unknown name, nothing.

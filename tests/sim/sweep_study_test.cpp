@@ -90,5 +90,15 @@ TEST(WalkingInterval, NoneWithoutANominalValue) {
   EXPECT_TRUE(j.at("walks_from").is_null());
 }
 
+// A grid that misses the nominal value gets it, in order, so the interval around it grows from a
+// point that was walked; one that holds it (up to rounding) is kept as it is.
+TEST(WithNominal, TheNominalValueIsOnTheGrid) {
+  EXPECT_EQ(withNominal({-1.5, -0.5, 0.5, 1.5}, 0), (std::vector<double>{-1.5, -0.5, 0, 0.5, 1.5}));
+  EXPECT_EQ(withNominal({0.2, 0.3, 0.4, 0.5}, 0.6), (std::vector<double>{0.2, 0.3, 0.4, 0.5, 0.6}));
+  const std::vector<double> holds{0.1, 0.15000000000000002, 0.6000000000000001};
+  EXPECT_EQ(withNominal(holds, 0.6), holds);
+  EXPECT_EQ(withNominal(holds, std::nan("")), holds);
+}
+
 }  // namespace
 }  // namespace gaitopt::sim
