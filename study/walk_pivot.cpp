@@ -9,11 +9,13 @@ namespace {
 
 using Row = std::vector<std::string>;
 
-/// "20 of 20", or "3 of 20 (step 4: foot rotation)": the failure up to its detail.
+/// "20 of 20", or "3 of 20 (step 4: foot rotation)": the failure up to its detail; a walk that was
+/// refused (no steps: its input did not fit) is the exit it ended with, "simulate exited 2".
 std::string cell(const Table& t, const Row& r) {
   const std::string steps = r[columnOf(t, "steps")], asked = r[columnOf(t, "steps_requested")];
-  if (steps == asked) return steps + " of " + asked;
   const std::string failure = r[columnOf(t, "failure")];
+  if (steps.empty()) return failure.substr(0, failure.find(':'));
+  if (steps == asked) return steps + " of " + asked;
   const std::size_t detail = failure.find(':', failure.find(':') + 1);
   return fmt::format("{} of {} ({})", steps, asked, failure.substr(0, detail));
 }

@@ -222,20 +222,24 @@ TEST(AxisSummary, CountsMediansMumpsShareAndTheSpreadWithinOneGait) {
             (std::vector<std::string>{"solver", "ldl", "2 of 2", "30", "4", "5.7 %", "0.00 %"}));
 }
 
-TEST(WalkPivot, AColumnPerPlantEachCellTheStepsAndWhereItFell) {
+TEST(WalkPivot, AColumnPerPlantEachCellTheStepsAndWhereItFellOrWhyItWasRefused) {
   const Table walks{
       {"gait", "walk", "controller", "plant_option", "plant", "steps", "steps_requested",
        "failure"},
       {{"g", "rigid", "ct", "mass-error", "-0.1", "3", "20", "step 4: foot rotation: the CoP"},
        {"g", "rigid", "ct", "mass-error", "0", "20", "20", ""},
-       {"g", "rigid", "smc", "mass-error", "0", "20", "20", ""}}};
+       {"g", "rigid", "smc", "mass-error", "0", "20", "20", ""},
+       {"g", "rigid", "hzd", "mass-error", "0", "", "",
+        "simulate exited 2: error: --controller hzd: HZD control needs ..."}}};
   const Table p = walkPivot(walks, 1);
   EXPECT_EQ(p.header, (std::vector<std::string>{"gait", "walk", "controller", "mass-error -0.1",
                                                 "mass-error 0"}));
-  ASSERT_EQ(p.rows.size(), 2u);
+  ASSERT_EQ(p.rows.size(), 3u);
   EXPECT_EQ(p.rows[0], (std::vector<std::string>{"g", "rigid", "ct",
                                                  "3 of 20 (step 4: foot rotation)", "20 of 20"}));
   EXPECT_EQ(p.rows[1], (std::vector<std::string>{"g", "rigid", "smc", "", "20 of 20"}));
+  // A refused walk says so, not " of ".
+  EXPECT_EQ(p.rows[2], (std::vector<std::string>{"g", "rigid", "hzd", "", "simulate exited 2"}));
 }
 
 }  // namespace
