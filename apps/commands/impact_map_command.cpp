@@ -52,8 +52,11 @@ void printResult(const nlohmann::ordered_json& summary) {
              c["single"].get<long>(), c["double"].get<long>(), c["either"].get<long>(),
              c["neither"].get<long>(), summary["points"].get<long>());
   const auto& ref = summary["reference"];
-  fmt::print("impact-map: through {} ({}):\n", ref["through"].dump(),
-             ref["type"].get<std::string>());
+  bool changes_any = false;
+  for (const auto& [axis, changes] : ref["changes"].items()) changes_any |= !changes.empty();
+  fmt::print("impact-map: through {} ({}){}\n", ref["through"].dump(),
+             ref["type"].get<std::string>(),
+             changes_any ? ":" : ": the type does not change along the axes");
   for (const auto& [axis, changes] : ref["changes"].items())
     for (const auto& ch : changes)
       fmt::print("  along {}: {} -> {} at {:.4g}\n", axis, ch["from"].get<std::string>(),

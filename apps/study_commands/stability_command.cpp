@@ -164,8 +164,9 @@ void printInterval(const std::string& name, const nlohmann::ordered_json& j) {
     fmt::print("stability: {}: no walking interval around the nominal value\n", name);
     return;
   }
-  fmt::print("stability: {}: walks from {:.4g} to {:.4g} {}\n", name, j["walks_from"].get<double>(),
-             j["walks_to"].get<double>(), j["unit"].get<std::string>());
+  const std::string unit = j["unit"].get<std::string>();
+  fmt::print("stability: {}: walks from {:.4g} to {:.4g}{}\n", name, j["walks_from"].get<double>(),
+             j["walks_to"].get<double>(), unit.empty() ? "" : " " + unit);
   for (const char* side : {"fails_below", "fails_above"})
     if (j.contains(side))
       fmt::print("  at {:.4g}: {}\n", j[side]["value"].get<double>(),
