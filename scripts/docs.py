@@ -62,7 +62,14 @@ class Sources:
             return cell
 
     def markdown(self, name):
-        return self._read(name, lambda p: p.read_text()).rstrip("\n")
+        """The file's text, its headings two levels down: an included table's own title sits
+        under the section that includes it, not beside the page's title."""
+        text = self._read(name, lambda p: p.read_text()).rstrip("\n")
+        lines, fenced = [], False
+        for line in text.split("\n"):
+            fenced ^= line.startswith("```")
+            lines.append(re.sub(r"^(#+) ", r"##\1 ", line) if not fenced else line)
+        return "\n".join(lines)
 
     def namespace(self):
         return {"j": self.json_value, "c": self.csv_value, "md": self.markdown,
