@@ -59,6 +59,17 @@ def nearest(values, target):
     return int(np.argmin(np.abs(values - target)))
 
 
+def slices(values, targets):
+    """The grid indices nearest the targets, each once: on a coarse grid two targets can land on
+    one value, whose panel would only repeat."""
+    out = []
+    for target in targets:
+        k = nearest(values, target)
+        if k not in out:
+            out.append(k)
+    return out
+
+
 def type_panel(ax, x, y, types, xlabel, title):
     cmap = ListedColormap(TYPE_COLOURS)
     ax.pcolormesh(x, y, types.T, cmap=cmap, vmin=-0.5, vmax=3.5, shading="nearest")
@@ -67,6 +78,9 @@ def type_panel(ax, x, y, types, xlabel, title):
 
 def ratio_panel(ax, x, y, fields, title):
     """Contours of |ratio| where its impact type holds; fields = [(label, ratio, mask, colour)]."""
+    if not any(mask.any() for _, _, mask, _ in fields):
+        ax.text(0.5, 0.5, "no such impacts on this slice", transform=ax.transAxes,
+                ha="center", va="center", fontsize=9, color="0.4")
     for label, ratio, mask, colour in fields:
         z = np.where(mask, np.abs(ratio), np.nan)
         ax.contourf(x, y, mask.T.astype(float), levels=[0.5, 1.5], colors=[colour], alpha=0.25)
@@ -85,13 +99,11 @@ def draw(axes, cube):
     for ax in grid.flat:
         ax.set_visible(False)
     if have[0] and have[2]:
-        for ax, target in zip(grid[0], SIGMA_SLICES):
-            k = nearest(sigma, target)
+        for ax, k in zip(grid[0], slices(sigma, SIGMA_SLICES)):
             ax.set_visible(True)
             type_panel(ax, sl, alpha, cube["type"][:, k, :], "S_L [m]",
                        f"sigma = {sigma[k]:g} deg")
-        for ax, target in zip(grid[2] if lcp else [], SIGMA_SLICES):
-            k = nearest(sigma, target)
+        for ax, k in zip(grid[2] if lcp else [], slices(sigma, SIGMA_SLICES)):
             ax.set_visible(True)
             type_panel(ax, sl, alpha, cube["lcp_type"][:, k, :], "S_L [m]",
                        f"complementarity law, sigma = {sigma[k]:g} deg")
@@ -108,8 +120,7 @@ def draw(axes, cube):
                      ("mu_R", cube["mu_R"][:, k, :], double, "tab:purple")],
                     f"|mu_L|, |mu_R| (double), sigma = {sigma[k]:g} deg")
     if have[1] and have[2]:
-        for ax, target in zip(grid[1, :2], SL_SLICES):
-            i = nearest(sl, target)
+        for ax, i in zip(grid[1, :2], slices(sl, SL_SLICES)):
             ax.set_visible(True)
             type_panel(ax, sigma, alpha, cube["type"][i, :, :], "sigma [deg]",
                        f"S_L = {sl[i]:g} m")

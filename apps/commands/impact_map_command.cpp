@@ -56,7 +56,7 @@ void printResult(const nlohmann::ordered_json& summary) {
   for (const auto& [axis, changes] : ref["changes"].items()) changes_any |= !changes.empty();
   fmt::print("impact-map: through {} ({}){}\n", ref["through"].dump(),
              ref["type"].get<std::string>(),
-             changes_any ? ":" : ": the type does not change along the axes");
+             changes_any ? ":" : ": the type does not change along the axes through it");
   for (const auto& [axis, changes] : ref["changes"].items())
     for (const auto& ch : changes)
       fmt::print("  along {}: {} -> {} at {:.4g}\n", axis, ch["from"].get<std::string>(),
