@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "config/yaml_reader.hpp"
+#include "io/data_dir.hpp"
 #include "ocp/problem/ocp_config.hpp"
 #include "sim/controllers/controller_registry.hpp"
 
@@ -127,7 +128,10 @@ std::vector<StudyGait> readGaits(const YamlReader& root,
       g.name = entry->stringOr("name", "");
       if (entry->has("set")) readEntrySets(*entry, g.sets);
     }
-    g.path = relativeTo(root.file(), g.path);
+    // Relative to the study file; a configs/... path it does not hold follows the CLI's rule.
+    const std::string beside = relativeTo(root.file(), g.path);
+    g.path = fs::exists(beside) ? beside : io::shippedIfMissing(g.path);
+    if (!fs::exists(g.path)) g.path = beside;  // the loader then names the file it looked for
     if (g.name.empty()) g.name = fs::path(g.path).stem().string();
     if (!plainLabel(g.name)) root.fail("gaits", fmt::format("'{}' cannot name a folder", g.name));
     try {

@@ -110,6 +110,16 @@ gaits:
   EXPECT_NE(message.find("scheme"), std::string::npos) << message;
 }
 
+// A study written elsewhere may name a shipped problem as the docs spell it (configs/...), as
+// the CLI's --config does; a file beside the study of that name would come first.
+TEST(StudyConfig, AGaitNamedByItsShippedPathIsFoundFromAnyFolder) {
+  const StudyConfig c = loadStudyConfig(
+      writeTempFile("shipped.yaml", "name: s\ngaits: [configs/ocp/rabbit_kelly2017.yaml]\n"));
+  ASSERT_EQ(c.gaits.size(), 1u);
+  EXPECT_TRUE(std::filesystem::is_regular_file(c.gaits[0].path)) << c.gaits[0].path;
+  EXPECT_EQ(c.gaits[0].name, "rabbit_kelly2017");
+}
+
 TEST(StudyConfig, RefusedWithTheKeyAndWhy) {
   const std::string gait = "gaits: [" + kOcp + "mu2004_walk.yaml]\n";
   for (const auto& [yaml, why] : std::vector<std::pair<std::string, std::string>>{
