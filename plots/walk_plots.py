@@ -294,7 +294,8 @@ def draw_walk_stick(ax, w, colorbar=True):
                     bbox={"fc": "w", "ec": "tab:red", "alpha": 0.9},
                     arrowprops={"arrowstyle": "->", "color": "tab:red"})
     ax.plot([], [], "k-", label="SSP")
-    ax.plot([], [], "k--", label="DSP")
+    if w.dsp.any():  # a walk without a double support draws no dashed frames
+        ax.plot([], [], "k--", label="DSP")
     ax.plot([], [], "k^", ls="none", label="stance tip: step (impact before)")
     if w.foot is not None:
         ax.plot([], [], "k-", lw=2.5, label=f"foot: heel {w.foot[0]:g} m, toe {w.foot[1]:g} m")
@@ -305,8 +306,20 @@ def draw_walk_stick(ax, w, colorbar=True):
                            shrink=0.8, pad=0.01)
     finish(ax, "x (world) [m]", "y [m]",
            f"Stick diagram, {len(frames)} of {len(w.frames)} frames (≤ {frames_per_phase(w)[0]} "
-           f"per SSP, {frames_per_phase(w)[1]} per DSP)", loc="upper center",
-           bbox_to_anchor=(0.5, -0.12), ncol=4)
+           f"per SSP" + (f", {frames_per_phase(w)[1]} per DSP)" if w.dsp.any() else ")"),
+           loc="upper center",
+           bbox_to_anchor=(0.5, -LEGEND_DROP_IN / axes_height_in(ax)), ncol=4)
+
+
+# How far below the stick diagram its legend starts [in]: clear of the ticks, the step labels
+# and the x label whatever the diagram's height (a long walk drawn to scale is a thin strip).
+LEGEND_DROP_IN = 0.5
+
+
+def axes_height_in(ax):
+    """The drawn height of `ax` [in], after its aspect ratio is applied."""
+    ax.apply_aspect()
+    return ax.get_position().height * ax.figure.get_figheight()
 
 
 def draw_tracking(ax, w, legend=True):
@@ -318,7 +331,7 @@ def draw_tracking(ax, w, legend=True):
     ax.axhline(0, color="0.5", lw=0.8)
     finish(ax, "time [s]", "θ − θ_ref [deg]",
            f"Tracking error: max {w.s['max_tracking_error']:.3g} rad "
-           f"({math.degrees(w.s['max_tracking_error']):.2f}°, summary); "
+           f"({math.degrees(w.s['max_tracking_error']):.3g}°, summary); "
            f"{worst:.3g} rad in walk.csv", legend=legend, ncol=3, loc="best")
 
 
