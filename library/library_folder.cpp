@@ -40,17 +40,19 @@ nlohmann::ordered_json lastRun(const std::string& path, const RunStats& s) {
 GaitLookup FolderGaits::lookup() {
   return [this](int p) -> const gaits::Trajectory* {
     auto& slot = cache_[p];
+    if (slot) return slot.get();
     const std::string point = dir_ + "/points/" + grid_->point(p).name;
     const std::string csv = point + "/trajectory.csv";
-    if (slot || !std::filesystem::exists(point)) return slot.get();  // not solved
+    if (std::filesystem::exists(csv)) {
+      slot = std::make_unique<gaits::Trajectory>(gaits::readTrajectoryCsv(csv, *model_));
+      return slot.get();
+    }
     // A solved point's folder without its gait is a damaged library, not an unsolved point.
-    if (!std::filesystem::exists(csv) && std::filesystem::exists(point + "/summary.json"))
+    if (std::filesystem::exists(point + "/summary.json"))
       throw config::ConfigError(csv, "", 0,
                                 "missing beside its summary.json: the library folder was edited "
                                 "or damaged; rerun gaitopt library on it to solve the point again");
-    if (std::filesystem::exists(csv))
-      slot = std::make_unique<gaits::Trajectory>(gaits::readTrajectoryCsv(csv, *model_));
-    return slot.get();
+    return nullptr;  // not solved
   };
 }
 

@@ -182,9 +182,9 @@ def read_trajectory(path, need=()):
     phase = col.pop("phase")
     check_phases(path, phase)
     check_increasing(path, "t", col["t"])
-    extra = switch_rows(path, names)
+    extra, rate = switch_rows(path, names)
     if extra:
-        check_grid(path, col["t"], extra[-1]["t"])
+        check_grid(path, col["t"], extra[-1]["t"], rate)
     col, phase = with_switch_rows(col, phase, extra)
     return Trajectory(path, header, col, phase, len(thetas),
                       len(numbered_names(header, "tau", 0)))
@@ -192,14 +192,15 @@ def read_trajectory(path, need=()):
 
 def switch_rows(path, names):
     """The rows a fixed-rate export keeps in the summary.json beside `path` (gaits/
-    switch_states.hpp): each phase switch's 'before' and 'after' rows, then 'step_end'; empty
-    for a folder without them (its CSV repeats the switch time and ends at the period)."""
+    switch_states.hpp): each phase switch's 'before' and 'after' rows, then 'step_end', and the
+    rate of the grid they were taken from (sample_rate_hz); no rows for a folder without them
+    (its CSV repeats the switch time and ends at the period)."""
     summary = os.path.join(os.path.dirname(path), "summary.json")
     if not os.path.isfile(summary):
-        return []
+        return [], None
     s = read_json(summary)
     if "phase_switches" not in s:
-        return []
+        return [], None
     require_type(summary, s, "phase_switches", list, "a list")
     require_keys(summary, s, ["step_end"])
     keyed = [(f"phase_switches[{i}].{side}", sw.get(side) if isinstance(sw, dict) else None)
@@ -210,15 +211,14 @@ def switch_rows(path, names):
             raise InputError(f"{summary}: key '{key}': expected a trajectory.csv row object")
         require_numbers(summary, row, [n for n in names if n != "phase"], prefix=key + ".")
         check_values(summary, key + ".phase", [row.get("phase")], ("SSP", "DSP"))
-    return [row for _, row in keyed]
+    return [row for _, row in keyed], s.get("sample_rate_hz")
 
 
-def check_grid(path, t, end):
+def check_grid(path, t, end, rate):
     """Rows with switch states must be the whole grid t_i = i / rate up to the step's end, as the
     C++ reader requires (gaits/trajectory/trajectory_csv.cpp): a file cut short would otherwise
     be read as a step that jumps from its last row to the stored end state."""
     summary = os.path.join(os.path.dirname(path), "summary.json")
-    rate = read_json(summary).get("sample_rate_hz")
     if not is_number(rate) or not rate > 0:
         raise InputError(f"{summary}: key 'sample_rate_hz': expected a rate > 0 [Hz], got {rate}")
     n = int(np.floor(end * rate))  # the largest i with i / rate <= end, as grid_export.cpp

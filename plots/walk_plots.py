@@ -304,10 +304,10 @@ def draw_walk_stick(ax, w, colorbar=True):
     if colorbar:
         ax.figure.colorbar(matplotlib.cm.ScalarMappable(norm, cmap), ax=ax, label="time [s]",
                            shrink=0.8, pad=0.01)
+    ssp, dsp = frames_per_phase(w)
     finish(ax, "x (world) [m]", "y [m]",
-           f"Stick diagram, {len(frames)} of {len(w.frames)} frames (≤ {frames_per_phase(w)[0]} "
-           f"per SSP" + (f", {frames_per_phase(w)[1]} per DSP)" if w.dsp.any() else ")"),
-           loc="upper center",
+           f"Stick diagram, {len(frames)} of {len(w.frames)} frames (≤ {ssp} per SSP"
+           + (f", {dsp} per DSP)" if w.dsp.any() else ")"), loc="upper center",
            bbox_to_anchor=(0.5, -LEGEND_DROP_IN / axes_height_in(ax)), ncol=4)
 
 

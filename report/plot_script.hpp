@@ -32,6 +32,12 @@ bool runPlotScript(const std::string& script, const std::vector<std::string>& ar
 /// command's last line says where the folder is.
 std::function<void(const std::string& dir)> gaitPictures(bool plots);
 
+/// What of a plot script's output reaches the user: under --quiet its errors only, else also
+/// its list of the pictures it drew.
+inline io::Output scriptOutput(bool quiet) {
+  return quiet ? io::Output::kErrors : io::Output::kAll;
+}
+
 /// Whether `dir` holds a picture (a .png), so a command names pictures only when a script drew
 /// them.
 bool holdsPictures(const std::string& dir);

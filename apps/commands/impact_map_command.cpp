@@ -88,8 +88,7 @@ void runImpactMap(const ImpactMapOptions& options) {
   });
   printResult(summary);
   if (options.plots)
-    report::runPlotScript("impact_map.py", {out.path()},
-                          options.quiet ? io::Output::kErrors : io::Output::kAll);
+    report::runPlotScript("impact_map.py", {out.path()}, report::scriptOutput(options.quiet));
   fmt::print("impact-map: wrote {}/impact_map.csv and summary.json in {:.2f} s\n", out.path(),
              elapsed);
 }

@@ -62,8 +62,7 @@ void runScheduler(const LibraryOptions& o, const library::LibrarySetup& setup,
   const library::RunStats stats = solveAll(o, setup, index, *executor);
   executor.reset();  // stops the MPI ranks
   library::writeIndexJson(setup, index, stats);
-  report::runPlotScript("library_plots.py", {setup.out_dir},
-                        (o.quiet ? io::Output::kErrors : io::Output::kAll));
+  report::runPlotScript("library_plots.py", {setup.out_dir}, report::scriptOutput(o.quiet));
   fmt::print(
       "library: {} points solved, {} failed in {:.1f} s ({:.3f} points/s on {} workers); "
       "index in {}/index.csv\n",

@@ -67,8 +67,7 @@ void runSimulate(const SimulateOptions& o) {
                          dir + "/summary.json");
   });
   if (o.output.plots)
-    report::runPlotScript("walk_plots.py", {out.path()},
-                          (o.quiet ? io::Output::kErrors : io::Output::kAll));
+    report::runPlotScript("walk_plots.py", {out.path()}, report::scriptOutput(o.quiet));
   fmt::print("simulate: wrote {}/walk.csv, steps.csv, stick.csv, summary.json\n", out.path());
 }
 

@@ -254,8 +254,7 @@ void runStability(const StabilityOptions& o) {
   }
   gaits::writeJsonFile(summary, out_dir + "/summary.json");
   if (o.plots)
-    report::runPlotScript("stability_plots.py", {out_dir},
-                          (o.quiet ? io::Output::kErrors : io::Output::kAll));
+    report::runPlotScript("stability_plots.py", {out_dir}, report::scriptOutput(o.quiet));
   std::vector<std::string> files{"summary.json"};
   for (const auto& s : grids.sweeps) files.push_back(fileOf(s));
   for (const auto& m : grids.maps) files.push_back(fileOf(m));
