@@ -59,6 +59,7 @@ py::dict optimize(const std::filesystem::path& config_file, double rate_hz,
   out["trajectory"] = dense;
   out["breaches"] = breaches(
       gaits::exportBreaches(gaits::exportFigures(dense, model), model.friction(), rate_hz));
+  out["unjudged"] = gaits::unjudgedChecks(rate_hz);
   return out;
 }
 
@@ -73,7 +74,8 @@ void bindSolve(py::module_& m) {
         "(one per collocation point), trajectory (trajectory.csv's grid at rate_hz with the "
         "touchdown's two states and the end state put in, as read_trajectory returns it) and "
         "breaches (the bounds the trajectory breaks between the points, as summary.json's "
-        "between_nodes.breaches: a list of dicts check, value, bound, meaning). "
+        "between_nodes.breaches: a list of dicts check, value, bound, meaning) and unjudged "
+        "(the checks not made at this rate, as between_nodes.unjudged.checks). "
         "InputError for a bad config, InfeasibleError or NotConvergedError for a failed solve.");
 }
 

@@ -97,6 +97,12 @@ void runOptimize(const OptimizeOptions& o) {
   fmt::print("optimize: wrote {}/trajectory.csv, summary.json{}\n", out.path(),
              report::holdsPictures(out.path()) ? " and pictures" : "");
   warnOfBreaches(summary["between_nodes"]);
+  if (summary["between_nodes"].contains("unjudged"))
+    fmt::print(
+        "optimize: not judged on this export: {} ({})\n",
+        fmt::join(summary["between_nodes"]["unjudged"]["checks"].get<std::vector<std::string>>(),
+                  ", "),
+        summary["between_nodes"]["unjudged"]["why"].get<std::string>());
 }
 
 void registerOptimizeCommand(CLI::App& app) {

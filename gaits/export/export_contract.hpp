@@ -54,4 +54,9 @@ ExportFigures exportFigures(const Trajectory& dense, const dynamics::Model& mode
 std::vector<ExportBreach> exportBreaches(const ExportFigures& figures, double friction,
                                          double rate_hz);
 
+/// The checks exportBreaches leaves unjudged on an export sampled at `rate_hz`: the derivative
+/// checks below kDerivativeCheckRateHz, whose differences would err by more than their bounds.
+/// summary.json names them, so that no breach listed does not read as "checked and kept".
+std::vector<std::string> unjudgedChecks(double rate_hz);
+
 }  // namespace gaitopt::gaits

@@ -228,20 +228,28 @@ nlohmann::ordered_json betweenNodeMetrics(const gaits::Trajectory& dense,
   const double peak = gaits::peakTorque(dense).maxCoeff();
   const gaits::ExportFigures f = gaits::exportFigures(dense, model);
   using Json = nlohmann::ordered_json;
-  return {{"max_dynamics_defect", defect},
-          // undefined for a passive gait (no torque to compare with)
-          {"dynamics_defect_per_peak_torque", peak > kPassiveTorque ? Json(defect / peak) : Json()},
-          {"max_tip_acceleration", gaits::maxTipAcceleration(dense, model)},
-          {"min_normal_force", f.min_normal_force},
-          {"max_friction_ratio", frictionRatioJson(f)},
-          {"min_zmp_margin", gaits::minZmpMargin(dense, model)},
-          {"min_foot_cop_margin", f.min_foot_cop_margin},
-          {"min_swing_clearance", f.min_swing_clearance},
-          {"max_dsp_tip_drift", f.max_dsp_tip_drift},
-          {"max_rate_mismatch", f.max_rate_mismatch},
-          {"max_acceleration_mismatch", f.max_acceleration_mismatch},
-          {"rate_hz", rate_hz},
-          {"breaches", breachesJson(gaits::exportBreaches(f, model.friction(), rate_hz))}};
+  Json metrics = {
+      {"max_dynamics_defect", defect},
+      // undefined for a passive gait (no torque to compare with)
+      {"dynamics_defect_per_peak_torque", peak > kPassiveTorque ? Json(defect / peak) : Json()},
+      {"max_tip_acceleration", gaits::maxTipAcceleration(dense, model)},
+      {"min_normal_force", f.min_normal_force},
+      {"max_friction_ratio", frictionRatioJson(f)},
+      {"min_zmp_margin", gaits::minZmpMargin(dense, model)},
+      {"min_foot_cop_margin", f.min_foot_cop_margin},
+      {"min_swing_clearance", f.min_swing_clearance},
+      {"max_dsp_tip_drift", f.max_dsp_tip_drift},
+      {"max_rate_mismatch", f.max_rate_mismatch},
+      {"max_acceleration_mismatch", f.max_acceleration_mismatch},
+      {"rate_hz", rate_hz},
+      {"breaches", breachesJson(gaits::exportBreaches(f, model.friction(), rate_hz))}};
+  if (const std::vector<std::string> unjudged = gaits::unjudgedChecks(rate_hz); !unjudged.empty())
+    metrics["unjudged"] = {
+        {"checks", unjudged},
+        {"why", fmt::format("judged on exports at {:g} Hz or finer: at {:g} Hz the three-point "
+                            "differences they compare with err by more than their bounds",
+                            gaits::kDerivativeCheckRateHz, rate_hz)}};
+  return metrics;
 }
 
 nlohmann::ordered_json solutionSummary(const GaitResultOptions& o, const dynamics::Model& model,

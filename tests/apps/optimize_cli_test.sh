@@ -22,8 +22,15 @@ assert d["impact_energy_loss_J"] > 0, d["impact_energy_loss_J"]
 assert max(abs(t) for t in d["peak_torque"][1:]) <= 100 + 1e-6 and d["peak_torque"][0] == 0
 # RABBIT's point feet stay loaded inside mu between the points, and its swing tip above ground
 assert d["between_nodes"]["breaches"] == [], d["between_nodes"]["breaches"]
+# At 200 Hz the derivative checks are not judged, and the summary says so rather than let an
+# empty breach list stand for them.
+u = d["between_nodes"]["unjudged"]
+assert u["checks"] == ["max_rate_mismatch", "max_acceleration_mismatch"], u
+assert "1000 Hz" in u["why"] and "200 Hz" in u["why"], u
 PY
 ! grep -q "warning" "$TMP/err" || fail "(a) a warning for an export that keeps its bounds: $(cat "$TMP/err")"
+grep -q "not judged on this export: max_rate_mismatch, max_acceleration_mismatch" "$TMP/out" ||
+  fail "(a) the unjudged checks not named: $(cat "$TMP/out")"
 
 # (b) a config with a typo: exit 2, file and key named, no output folder.
 sed 's/step_length:/step_lenght:/' "$CONFIG" >"$TMP/typo.yaml"
@@ -107,6 +114,7 @@ assert d["cost_type"] == "cost_of_transport"
 # optimum of quarter-point splits read with the points' quadratic rate hid 29 % of it).
 b = d["between_nodes"]
 assert b["rate_hz"] == 1000 and b["max_dsp_tip_drift"] <= 1e-6, b
+assert "unjudged" not in b, b  # every check is judged at 1 kHz
 assert b["max_rate_mismatch"] <= 0.002 and b["max_acceleration_mismatch"] <= 0.01, b
 counted = sum(v for k, v in d["cost_terms"]["terms"].items() if "abs_work" in k)
 assert abs(counted - d["cost_of_transport"]) <= 0.05 * d["cost_of_transport"], (counted, d["cost_of_transport"])

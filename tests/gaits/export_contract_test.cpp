@@ -81,6 +81,9 @@ TEST(ExportContract, DerivativesAreJudgedOnlyOnExportsFineEnoughForTheirDifferen
   const Trajectory moving("test", 0.35, knots);
   EXPECT_EQ(checks(moving, 1000), std::vector<std::string>{"max_rate_mismatch"});
   EXPECT_TRUE(checks(moving, 200).empty());  // below kDerivativeCheckRateHz: not judged
+  EXPECT_EQ(gaits::unjudgedChecks(200),
+            (std::vector<std::string>{"max_rate_mismatch", "max_acceleration_mismatch"}));
+  EXPECT_TRUE(gaits::unjudgedChecks(gaits::kDerivativeCheckRateHz).empty());
 }
 
 }  // namespace

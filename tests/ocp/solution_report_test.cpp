@@ -104,6 +104,11 @@ TEST(BetweenNodeMetrics, FrictionRatioIsTheWorstTangentialOverNormalForce) {
   EXPECT_DOUBLE_EQ(j.at("max_friction_ratio").get<double>(), 0.3);  // 30 / 100
   EXPECT_DOUBLE_EQ(j.at("min_normal_force").get<double>(), 100);
   EXPECT_DOUBLE_EQ(j.at("rate_hz").get<double>(), 50);
+  // At 50 Hz the derivative checks are not judged, and the metrics name them.
+  EXPECT_EQ(j.at("unjudged").at("checks"),
+            nlohmann::ordered_json({"max_rate_mismatch", "max_acceleration_mismatch"}));
+  EXPECT_FALSE(betweenNodeMetrics(standing(model, {{30, 100}, {-60, 400}, {10, 250}}), model, 1000)
+                   .contains("unjudged"));
 }
 
 TEST(BetweenNodeMetrics, APullingTipHasNoFrictionRatio) {

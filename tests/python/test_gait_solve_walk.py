@@ -96,6 +96,9 @@ def test_optimize_cost_equals_the_cli(cli, tmp_path):
     assert traj.duration == pytest.approx(summary["duration"])
     assert traj.step_length == pytest.approx(summary["step_length"])
     assert py["breaches"] == summary["between_nodes"]["breaches"] == []
+    assert py["unjudged"] == [] and "unjudged" not in summary["between_nodes"]  # 1 kHz: all judged
+    coarse = gaitopt.optimize(RABBIT_OCP, rate_hz=200)
+    assert coarse["unjudged"] == ["max_rate_mismatch", "max_acceleration_mismatch"]
 
 
 def test_optimize_lists_the_breaches_of_the_export_contract():
