@@ -73,9 +73,22 @@ class Sources:
 
     def namespace(self):
         return {"j": self.json_value, "c": self.csv_value, "md": self.markdown,
+                "interval": lambda a, b: signed_interval(a, b, 0),
+                "interval1": lambda a, b: signed_interval(a, b, 1),
                 "abs": abs, "min": min, "max": max, "round": round, "len": len,
                 "format": format, "str": str, "sum": sum, "zip": zip, "sorted": sorted,
                 "__builtins__": {}}
+
+
+def signed(x, digits):
+    """x with its sign, as '%+.Nf' writes it, but 0 bare (not '+0' or '-0')."""
+    text = f"{x:+.{digits}f}"
+    return text[1:] if float(text) == 0 else text
+
+
+def signed_interval(a, b, digits):
+    """A range of errors or pushes around the nominal: '-10 .. +5', '-10 .. 0'."""
+    return f"{signed(a, digits)} .. {signed(b, digits)}"
 
 
 def render_text(template, sources, where):

@@ -42,4 +42,16 @@ if $docs check --root "$tmp" 2>"$tmp/err"; then
 fi
 grep -q "links results/opt_mu2004/overview.png, which is not there" "$tmp/err" ||
   { cat "$tmp/err"; echo "FAIL: missing picture not named"; exit 1; }
+# A range around the nominal writes its ends signed, and a zero end bare (never "+0" or "-0").
+/usr/bin/python3 - "$src/scripts" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[1])
+from docs import signed_interval
+cases = {(-10, 0, 0): "-10 .. 0", (-0.2, 5, 0): "0 .. +5", (-2.5, 7.5, 1): "-2.5 .. +7.5",
+         (0, 0, 0): "0 .. 0", (-0.04, 0.04, 1): "0.0 .. 0.0"}
+for (a, b, digits), want in cases.items():
+    got = signed_interval(a, b, digits)
+    assert got == want, f"signed_interval({a}, {b}, {digits}) = {got!r}, want {want!r}"
+PY
+
 echo "docs: check passes on the tree and fails on a hand edit, a stale result and a missing picture"
