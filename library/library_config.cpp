@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "config/config_error.hpp"
+#include "config/config_path.hpp"
 #include "config/yaml_reader.hpp"
 
 namespace gaitopt::library {
@@ -137,7 +138,7 @@ LibraryConfig loadLibraryConfig(const std::string& path,
   c.name = root.string("name");
   root.stringOr("description", "");
   c.path = path;
-  c.ocp_path = (std::filesystem::path(path).parent_path() / root.string("ocp")).string();
+  c.ocp_path = config::besideConfig(path, root.string("ocp"));
   c.base = ocp::loadOcpConfig(c.ocp_path);
   const std::array<double, kWalkAxes> base = basePoint(c.base);
   const auto grid = root.map("grid");

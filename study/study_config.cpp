@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "config/config_path.hpp"
 #include "config/yaml_reader.hpp"
 #include "io/data_dir.hpp"
 #include "ocp/problem/ocp_config.hpp"
@@ -21,10 +22,6 @@ namespace fs = std::filesystem;
 const std::vector<std::string> kScenarioOptions = {
     "ground",     "cop-limit",    "steps",    "robot",      "uncertainty-on", "uncertainty-case",
     "mass-error", "length-error", "friction", "gain-scale", "max-slip",       "restitution"};
-
-std::string relativeTo(const std::string& file, const std::string& path) {
-  return (fs::path(file).parent_path() / path).lexically_normal().string();
-}
 
 /// A label is a folder-name part: letters, digits and . _ + - only.
 bool plainLabel(const std::string& text) {
@@ -115,7 +112,7 @@ void readEntrySets(const YamlReader& entry, std::vector<config::Override>& sets)
 
 /// `gaits`: each a path, or `{config: PATH, name: NAME, set: {...} or [{...}, ...]}`; each loads
 /// with its sets.
-std::vector<StudyGait> readGaits(const YamlReader& root,
+std::vector<StudyGait> readGaits(const YamlReader& root, const std::string& file,
                                  const std::vector<config::Override>& sets) {
   std::vector<StudyGait> gaits;
   const std::vector<std::string> texts = root.yamlTexts("gaits");
@@ -129,7 +126,7 @@ std::vector<StudyGait> readGaits(const YamlReader& root,
       if (entry->has("set")) readEntrySets(*entry, g.sets);
     }
     // Relative to the study file; a configs/... path it does not hold follows the CLI's rule.
-    const std::string beside = relativeTo(root.file(), g.path);
+    const std::string beside = config::besideConfig(file, g.path);
     g.path = fs::exists(beside) ? beside : io::shippedIfMissing(g.path);
     if (!fs::exists(g.path)) g.path = beside;  // the loader then names the file it looked for
     if (g.name.empty()) g.name = fs::path(g.path).stem().string();
@@ -144,6 +141,8 @@ std::vector<StudyGait> readGaits(const YamlReader& root,
   return gaits;
 }
 
+/// A walk's or sweep's `options`, a robot read beside `file`: the config's path, not the reader's
+/// label, which also names the --set overrides (a "/" in one moved the folder).
 std::vector<ToolOption> readOptions(const YamlReader& r, const std::string& file) {
   std::vector<ToolOption> options;
   if (!r.has("options")) return options;
@@ -151,7 +150,7 @@ std::vector<ToolOption> readOptions(const YamlReader& r, const std::string& file
   map.allowOnly(kScenarioOptions);
   for (const std::string& name : map.keys()) {
     std::string value = map.string(name);
-    if (name == "robot") value = relativeTo(file, value);
+    if (name == "robot") value = config::besideConfig(file, value);
     options.push_back({name, value});
   }
   return options;
@@ -161,9 +160,9 @@ std::vector<std::string> controllers(const YamlReader& r) {
   return r.choices("controllers", sim::controllerNames());
 }
 
-WalkBlock readWalk(const YamlReader& r) {
+WalkBlock readWalk(const YamlReader& r, const std::string& file) {
   r.allowOnly({"name", "options", "controllers", "plant"});
-  WalkBlock w{r.string("name"), readOptions(r, r.file()), controllers(r), "", {}};
+  WalkBlock w{r.string("name"), readOptions(r, file), controllers(r), "", {}};
   if (!plainLabel(w.name)) r.fail("name", "expected letters, digits and . _ + -");
   const YamlReader plant = r.map("plant");
   plant.allowOnly({"option", "values"});
@@ -174,15 +173,15 @@ WalkBlock readWalk(const YamlReader& r) {
 }
 
 /// The `walks` list of a study or of a battery file.
-std::vector<WalkBlock> readWalks(const YamlReader& r) {
+std::vector<WalkBlock> readWalks(const YamlReader& r, const std::string& file) {
   std::vector<WalkBlock> walks;
-  for (const YamlReader& walk : r.list("walks")) walks.push_back(readWalk(walk));
+  for (const YamlReader& walk : r.list("walks")) walks.push_back(readWalk(walk, file));
   return walks;
 }
 
-StabilityBlock readStability(const YamlReader& r) {
+StabilityBlock readStability(const YamlReader& r, const std::string& file) {
   r.allowOnly({"options", "controllers", "sweeps"});
-  return {readOptions(r, r.file()), controllers(r), r.yamlTexts("sweeps")};
+  return {readOptions(r, file), controllers(r), r.yamlTexts("sweeps")};
 }
 
 }  // namespace
@@ -199,11 +198,11 @@ StudyConfig loadStudyConfig(const std::string& path,
   if (root.has("polynomial_gaits"))
     for (const YamlReader& poly : root.list("polynomial_gaits")) {
       poly.allowOnly({"gait", "robot"});
-      c.polynomial_gaits.push_back(
-          {relativeTo(path, poly.string("gait")), relativeTo(path, poly.string("robot"))});
+      c.polynomial_gaits.push_back({config::besideConfig(path, poly.string("gait")),
+                                    config::besideConfig(path, poly.string("robot"))});
     }
   if (root.has("set")) readSets(root.map("set"), "", c.sets);
-  if (root.has("gaits") || c.polynomial_gaits.empty()) c.gaits = readGaits(root, c.sets);
+  if (root.has("gaits") || c.polynomial_gaits.empty()) c.gaits = readGaits(root, path, c.sets);
   if (root.has("axes"))
     for (const YamlReader& axis : root.list("axes")) c.axes.push_back(readAxis(axis, c.gaits));
   if (root.has("warm_start")) {
@@ -214,15 +213,16 @@ StudyConfig loadStudyConfig(const std::string& path,
   }
   if (root.has("walks_from")) {
     if (root.has("walks")) root.fail("walks_from", "give either walks or walks_from, not both");
-    c.walks_file = relativeTo(path, root.string("walks_from"));
+    c.walks_file = config::besideConfig(path, root.string("walks_from"));
     const auto battery = YamlReader::fromFile(c.walks_file);
     battery.allowOnly({"walks"});
-    c.walks = readWalks(battery);
+    c.walks = readWalks(battery, c.walks_file);
   } else if (root.has("walks")) {
-    c.walks = readWalks(root);
+    c.walks = readWalks(root, path);
   }
   if (root.has("stability"))
-    for (const YamlReader& s : root.list("stability")) c.stability.push_back(readStability(s));
+    for (const YamlReader& s : root.list("stability"))
+      c.stability.push_back(readStability(s, path));
   return c;
 }
 

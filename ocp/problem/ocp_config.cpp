@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "config/config_path.hpp"
 #include "config/yaml_reader.hpp"
 #include "dynamics/model_variation.hpp"
 #include "dynamics/robot_files/robot_config.hpp"
@@ -19,16 +20,11 @@ namespace {
 
 using config::YamlReader;
 
-std::string relativeTo(const std::string& file, const std::string& path) {
-  const std::filesystem::path p(path);
-  return p.is_absolute() ? path : (std::filesystem::path(file).parent_path() / p).string();
-}
-
 /// The file `value` of `key` names, relative to the config's folder. @throws ConfigError naming
 /// the config and the key when there is no such file.
 std::string fileOfKey(const YamlReader& r, const std::string& key, const std::string& value,
                       const std::string& config_path) {
-  std::string file = relativeTo(config_path, value);
+  std::string file = config::besideConfig(config_path, value);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec))
     r.fail(key,

@@ -120,6 +120,32 @@ TEST(StudyConfig, AGaitNamedByItsShippedPathIsFoundFromAnyFolder) {
   EXPECT_EQ(c.gaits[0].name, "rabbit_kelly2017");
 }
 
+// Paths in a study are read beside the study file also when a --set is given: the reader's
+// label then names the overrides, and a "/" in one ("description=a/b") once moved the folder the
+// gaits and a walk's robot were looked for in.
+TEST(StudyConfig, PathsAreReadBesideTheFileWhateverTheOverridesSay) {
+  namespace fs = std::filesystem;
+  const fs::path folder = fs::path(::testing::TempDir()) / "beside";
+  fs::create_directories(folder);
+  const auto from = [&](const std::string& file) {
+    return fs::relative(std::string(GAITOPT_SOURCE_DIR) + "/configs/" + file, folder).string();
+  };
+  const std::string path = (folder / "s.yaml").string();
+  std::ofstream(path) << "name: s\ngaits: [" << from("ocp/rabbit_kelly2017.yaml")
+                      << "]\nwalks:\n  - name: w\n    options: {robot: "
+                      << from("robots/rabbit.yaml")
+                      << "}\n    controllers: [computed_torque]\n"
+                         "    plant: {option: mass-error, values: [0]}\n";
+  const StudyConfig c = loadStudyConfig(path, {{"description", "a/b"}});
+  ASSERT_EQ(c.gaits.size(), 1u);
+  EXPECT_TRUE(fs::equivalent(c.gaits[0].path, kOcp + "rabbit_kelly2017.yaml")) << c.gaits[0].path;
+  ASSERT_EQ(c.walks.size(), 1u);
+  ASSERT_EQ(c.walks[0].options.size(), 1u);
+  EXPECT_TRUE(fs::equivalent(c.walks[0].options[0].value,
+                             std::string(GAITOPT_SOURCE_DIR) + "/configs/robots/rabbit.yaml"))
+      << c.walks[0].options[0].value;
+}
+
 TEST(StudyConfig, RefusedWithTheKeyAndWhy) {
   const std::string gait = "gaits: [" + kOcp + "mu2004_walk.yaml]\n";
   for (const auto& [yaml, why] : std::vector<std::pair<std::string, std::string>>{
