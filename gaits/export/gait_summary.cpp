@@ -37,6 +37,13 @@ ordered_json footJson(const dynamics::Foot& foot) {
   return {{"heel", foot.heel}, {"toe", foot.toe}};
 }
 
+ordered_json postureJson(const Trajectory& traj, const dynamics::Model& model) {
+  const Posture upright = posture(traj, model);
+  return {{"max_torso_lean", upright.torso_lean / kDeg},
+          {"max_stance_knee_flexion", upright.stance_knee / kDeg},
+          {"max_swing_knee_flexion", upright.swing_knee / kDeg}};
+}
+
 ordered_json gaitSummary(const Trajectory& traj, const dynamics::Model& model,
                          const SummaryContext& context) {
   const double work = absoluteWork(traj);
@@ -74,10 +81,7 @@ ordered_json gaitSummary(const Trajectory& traj, const dynamics::Model& model,
       {"slope_rad", model.slope()},  // ground inclination, > 0 uphill (dynamics/model.hpp)
       {"total_mass", model.totalMass()},
   };
-  const Posture upright = posture(traj, model);
-  s["posture_deg"] = {{"max_torso_lean", upright.torso_lean / kDeg},
-                      {"max_stance_knee_flexion", upright.stance_knee / kDeg},
-                      {"max_swing_knee_flexion", upright.swing_knee / kDeg}};
+  s["posture_deg"] = postureJson(traj, model);
   s.update(robotJson(model));
   return s;
 }

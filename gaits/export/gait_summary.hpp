@@ -26,6 +26,10 @@ struct SummaryContext {
 nlohmann::ordered_json gaitSummary(const Trajectory& traj, const dynamics::Model& model,
                                    const SummaryContext& context);
 
+/// The key `posture_deg` of a summary: posture() of `traj` in degrees (max_torso_lean,
+/// max_stance_knee_flexion, max_swing_knee_flexion).
+nlohmann::ordered_json postureJson(const Trajectory& traj, const dynamics::Model& model);
+
 /// {"heel", "toe"} of a foot [m] (0 and 0: point tips): the key `foot` of a gait's and of a walk's
 /// summary, from which the pictures draw the soles.
 nlohmann::ordered_json footJson(const dynamics::Foot& foot);

@@ -240,6 +240,17 @@ OutputFolder::OutputFolder(const std::string& out, const std::vector<std::string
     : path_(checkedPath(out, inputs, option)), lock_(path_) {
   cleanLeftovers(path_);
   requireOurs(path_, option);
+  // A library, study or stability folder holds a run's rows and whatever was written into it
+  // in place (its marker says so); replaced whole by another command's result, all of it went.
+  std::error_code ec;
+  if (const fs::path marker = fs::path(path_) / kMarker;
+      fs::is_regular_file(marker, ec) && markedResumable(marker))
+    throw config::ConfigError(
+        option, "", 0,
+        fmt::format("'{}' holds a resumable run's results (a library, study or stability "
+                    "folder), which this command would replace whole: choose another {} or "
+                    "remove it yourself",
+                    path_, option));
 }
 
 void OutputFolder::write(const std::function<void(const std::string&)>& fill) const {

@@ -225,7 +225,8 @@ size_t writeGaitFiles(const std::string& dir, const gaits::Trajectory& traj,
 nlohmann::ordered_json betweenNodeMetrics(const gaits::Trajectory& dense,
                                           const dynamics::Model& model, double rate_hz) {
   const double defect = gaits::maxDynamicsResidual(dense, model);
-  const double peak = gaits::peakTorque(dense).maxCoeff();
+  const Eigen::VectorXd peak_torque = gaits::peakTorque(dense);
+  const double peak = peak_torque.maxCoeff();
   const gaits::ExportFigures f = gaits::exportFigures(dense, model);
   using Json = nlohmann::ordered_json;
   Json metrics = {
@@ -241,6 +242,10 @@ nlohmann::ordered_json betweenNodeMetrics(const gaits::Trajectory& dense,
       {"max_dsp_tip_drift", f.max_dsp_tip_drift},
       {"max_rate_mismatch", f.max_rate_mismatch},
       {"max_acceleration_mismatch", f.max_acceleration_mismatch},
+      // the summary's peak torques and posture at the solver's points, here the export's
+      {"peak_torque",
+       std::vector<double>(peak_torque.data(), peak_torque.data() + peak_torque.size())},
+      {"posture_deg", gaits::postureJson(dense, model)},
       {"rate_hz", rate_hz},
       {"breaches", breachesJson(gaits::exportBreaches(f, model.friction(), rate_hz))}};
   if (const std::vector<std::string> unjudged = gaits::unjudgedChecks(rate_hz); !unjudged.empty())

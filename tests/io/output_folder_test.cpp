@@ -163,6 +163,20 @@ TEST_F(OutputFolderTest, ResumableFolderKeepsItsFilesAndRefusesForeignOnes) {
   EXPECT_THROW(ResumableFolder(path("home"), {}, "claim.json"), config::ConfigError);
 }
 
+// A stability sweep (resumable) with a walk written inside it: a walk's --out on the sweep
+// replaced it whole, rows and nested walk with it.
+TEST_F(OutputFolderTest, AResumableRunsFolderIsNotReplacedByAnotherResult) {
+  {
+    const ResumableFolder sweep(path("sweep"), {}, "claim.json");
+    put(path("sweep/claim.json"), "{}");
+    put(path("sweep/rows.csv"), "a\n");
+  }
+  OutputFolder(path("sweep/point"), {}).write([](const std::string& d) { fillWith(d, "p"); });
+  EXPECT_THROW(OutputFolder(path("sweep"), {}), config::ConfigError);
+  EXPECT_EQ(slurp(path("sweep/rows.csv")), "a\n");
+  EXPECT_EQ(slurp(path("sweep/point/result.txt")), "p");
+}
+
 TEST_F(OutputFolderTest, ResumableRunRefusesAnotherCommandsResultAndLeavesItWhole) {
   OutputFolder(path("gait"), {}).write([](const std::string& d) { fillWith(d, "gait"); });
   EXPECT_THROW(ResumableFolder(path("gait"), {}, "claim.json"), config::ConfigError);

@@ -3,6 +3,7 @@
 // trajectory with known forces, and the folder of a failed solve.
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -109,6 +110,27 @@ TEST(BetweenNodeMetrics, FrictionRatioIsTheWorstTangentialOverNormalForce) {
             nlohmann::ordered_json({"max_rate_mismatch", "max_acceleration_mismatch"}));
   EXPECT_FALSE(betweenNodeMetrics(standing(model, {{30, 100}, {-60, 400}, {10, 250}}), model, 1000)
                    .contains("unjudged"));
+}
+
+// The summary's top-level peak torques and posture are read at the solver's points; these are
+// the export's, so a peak or a bent knee between the points shows here.
+TEST(BetweenNodeMetrics, PeakTorqueAndPostureAreTheExportsOwn) {
+  const auto model =
+      dynamics::loadRobot(std::string(GAITOPT_SOURCE_DIR) + "/configs/robots/rabbit.yaml");
+  gaits::Trajectory traj = standing(model, {{30, 100}, {10, 400}, {10, 250}});
+  std::vector<gaits::Knot> knots = traj.knots();
+  knots[1].tau(2) = -42;                  // a torque peak on the third joint at the middle sample
+  knots[1].theta(1) = 0.2;                // the stance knee bent by 0.2 rad (thigh against shank)
+  knots[1].theta(*model.torso()) = -0.1;  // the torso leaning 0.1 rad
+  const auto j = betweenNodeMetrics({model.name(), 0.5, knots}, model, 50);
+  const auto peak = j.at("peak_torque").get<std::vector<double>>();
+  ASSERT_EQ(peak.size(), static_cast<std::size_t>(model.nLinks()));
+  EXPECT_DOUBLE_EQ(peak[2], 42);
+  EXPECT_DOUBLE_EQ(peak[0], 0);
+  const double deg = 180 / std::numbers::pi;
+  EXPECT_NEAR(j.at("posture_deg").at("max_stance_knee_flexion").get<double>(), 0.2 * deg, 1e-12);
+  EXPECT_NEAR(j.at("posture_deg").at("max_torso_lean").get<double>(), 0.1 * deg, 1e-12);
+  EXPECT_DOUBLE_EQ(j.at("posture_deg").at("max_swing_knee_flexion").get<double>(), 0);
 }
 
 TEST(BetweenNodeMetrics, APullingTipHasNoFrictionRatio) {
