@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -60,6 +61,13 @@ StudyAxis setsAxis(const YamlReader& r) {
   return axis;
 }
 
+/// The first of `names` given twice, if any.
+std::optional<std::string> givenTwice(const std::vector<std::string>& names) {
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (std::find(names.begin() + i + 1, names.end(), names[i]) != names.end()) return names[i];
+  return std::nullopt;
+}
+
 /// Every value loads with every gait (with its sets) as `--set` would load it.
 void checkValues(const YamlReader& r, const StudyAxis& axis, const std::vector<StudyGait>& gaits) {
   for (std::size_t i = 0; i < axis.values.size(); ++i) {
@@ -85,6 +93,10 @@ StudyAxis readAxis(const YamlReader& r, const std::vector<StudyGait>& gaits) {
   if (r.has("labels")) axis.labels = r.yamlTexts("labels");
   if (axis.labels.size() != axis.values.size())
     r.fail("labels", fmt::format("expected one label per value ({})", axis.values.size()));
+  if (const auto twice = givenTwice(axis.labels))
+    r.fail(r.has("labels") ? "labels" : "values",
+           fmt::format("'{}' is given twice: its points would share one folder and one result",
+                       *twice));
   checkValues(r, axis, gaits);
   return axis;
 }
@@ -184,7 +196,24 @@ StabilityBlock readStability(const YamlReader& r, const std::string& file) {
   return {readOptions(r, file), controllers(r), r.yamlTexts("sweeps")};
 }
 
+/// Each gait's points are written under its name: two gaits of one name (a file listed twice,
+/// two entries of one file without `name`, a polynomial gait and a problem of one stem) would
+/// share their folders, and the second would read the first's result as its own.
+void refuseSharedFolders(const YamlReader& root, const StudyConfig& c) {
+  std::vector<std::string> names;
+  for (const PolynomialGait& poly : c.polynomial_gaits) names.push_back(gaitName(poly));
+  for (const StudyGait& g : c.gaits) names.push_back(g.name);
+  if (const auto twice = givenTwice(names))
+    root.fail("gaits", fmt::format("two gaits are named '{}': their points would share one "
+                                   "folder and one result; give each entry its own `name`",
+                                   *twice));
+}
+
 }  // namespace
+
+std::string gaitName(const PolynomialGait& poly) {
+  return fs::path(poly.gait).stem().string();
+}
 
 StudyConfig loadStudyConfig(const std::string& path,
                             const std::vector<config::Override>& overrides) {
@@ -203,6 +232,7 @@ StudyConfig loadStudyConfig(const std::string& path,
     }
   if (root.has("set")) readSets(root.map("set"), "", c.sets);
   if (root.has("gaits") || c.polynomial_gaits.empty()) c.gaits = readGaits(root, path, c.sets);
+  refuseSharedFolders(root, c);
   if (root.has("axes"))
     for (const YamlReader& axis : root.list("axes")) c.axes.push_back(readAxis(axis, c.gaits));
   if (root.has("warm_start")) {

@@ -48,6 +48,9 @@ struct PolynomialGait {
   std::string robot;  ///< configs/robots/*.yaml
 };
 
+/// The name a polynomial gait's point is written under: its file's stem.
+std::string gaitName(const PolynomialGait& poly);
+
 /// An OCP config of the study, under a name of its own with values of its own set (a variant of
 /// a shipped problem without a file of its own: the ensemble with the cost of transport).
 struct StudyGait {

@@ -1,7 +1,5 @@
 #include "study/study_points.hpp"
 
-#include <filesystem>
-
 namespace gaitopt::study {
 namespace {
 
@@ -34,7 +32,7 @@ bool advance(const StudyConfig& c, std::vector<std::size_t>& index) {
 std::vector<StudyPoint> studyPoints(const StudyConfig& c) {
   std::vector<StudyPoint> points;
   for (const PolynomialGait& poly : c.polynomial_gaits) {
-    const std::string name = std::filesystem::path(poly.gait).stem().string();
+    const std::string name = gaitName(poly);
     // Axis columns stay empty: the axes set OCP config values.
     points.push_back(
         {name, poly.gait, poly.robot, std::vector<std::string>(c.axes.size()), {}, name, {}});

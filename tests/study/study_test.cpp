@@ -155,6 +155,10 @@ TEST(StudyConfig, RefusedWithTheKeyAndWhy) {
            {"axes: [{key: constraints.zmp_margin, values: [banana]}]", "refuses 'banana'"},
            {"axes: [{key: constraints.no_such_key, values: [1]}]", "no_such_key"},
            {"warm_start: always", "expected one of none, previous"},
+           {"axes: [{key: constraints.zmp_margin, values: [0.01, 0.01]}]", "'0.01' is given twice"},
+           {"axes: [{name: s, values: [{solver.tolerance: 1e-4}, {solver.tolerance: 1e-5}], "
+            "labels: [a, a]}]",
+            "'a' is given twice"},
            {"stability: [{controllers: [computed_torque]}]", "sweeps"},
            {"walks: [{name: a b, controllers: [computed_torque], plant: {option: mass-error, "
             "values: [0]}}]",
@@ -166,6 +170,31 @@ TEST(StudyConfig, RefusedWithTheKeyAndWhy) {
         [&] { loadStudyConfig(writeTempFile("bad.yaml", "name: b\n" + gait + yaml + "\n")); });
     EXPECT_NE(message.find(why), std::string::npos) << yaml << ": " << message;
   }
+}
+
+// Points are written under their gait's name: two gaits of one name would share folders, and
+// the second read the first's result as its own ("2 of 2 solves converged", one solved).
+TEST(StudyConfig, TwoGaitsOfOneNameAreRefused) {
+  const std::string ocp = kOcp + "rabbit_kelly2017.yaml";
+  const std::string gaits =
+      std::string(GAITOPT_SOURCE_DIR) + "/configs/gaits/rabbit_kelly2017.yaml";
+  const std::string robot = std::string(GAITOPT_SOURCE_DIR) + "/configs/robots/rabbit.yaml";
+  for (const std::string& yaml :
+       {"gaits: [" + ocp + ", " + ocp + "]\n",
+        "gaits: [{config: " + ocp + ", set: {constraints.rate_limit: 6}}, {config: " + ocp +
+            ", set: {constraints.rate_limit: 10}}]\n",
+        "polynomial_gaits: [{gait: " + gaits + ", robot: " + robot + "}]\ngaits: [" + ocp +
+            "]\n"}) {
+    const std::string message =
+        configErrorOf([&] { loadStudyConfig(writeTempFile("twice.yaml", "name: t\n" + yaml)); });
+    EXPECT_NE(message.find("two gaits are named 'rabbit_kelly2017'"), std::string::npos)
+        << yaml << ": " << message;
+  }
+  // Named apart, the two entries of one file are two gaits.
+  const StudyConfig c = loadStudyConfig(writeTempFile(
+      "apart.yaml",
+      "name: t\ngaits: [{config: " + ocp + ", name: a}, {config: " + ocp + ", name: b}]\n"));
+  EXPECT_EQ(c.gaits.size(), 2u);
 }
 
 // `walks_from` reads the walks of a battery file beside the study, which then counts among the
