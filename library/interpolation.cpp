@@ -24,7 +24,11 @@ Bracket bracket(const std::vector<double>& axis, double v, const std::string& na
   if (v < axis.front() - tol || v > axis.back() + tol)
     throw std::domain_error(fmt::format("{} {:g} is outside the library's range [{:g}, {:g}]", name,
                                         v, axis.front(), axis.back()));
-  if (axis.size() == 1) return {0, 0, 0.0};
+  // A query at a grid value within the tolerance is that value: a range's values (0.3 + 0.6 =
+  // 0.8999999999999999) and the ones a user types (0.9) differ in the last bit, which would
+  // blend in a neighbour at weight 1e-16 and refuse the point if that neighbour failed.
+  for (std::size_t i = 0; i < axis.size(); ++i)
+    if (std::abs(v - axis[i]) <= tol) return {static_cast<int>(i), static_cast<int>(i), 0.0};
   const auto it = std::upper_bound(axis.begin(), axis.end(), v);
   const int hi =
       std::clamp(static_cast<int>(it - axis.begin()), 1, static_cast<int>(axis.size()) - 1);

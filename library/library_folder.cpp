@@ -1,7 +1,10 @@
 #include "library/library_folder.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+
+#include <fmt/format.h>
 
 #include "config/config_error.hpp"
 #include "gaits/export/gait_summary.hpp"
@@ -35,6 +38,54 @@ nlohmann::ordered_json lastRun(const std::string& path, const RunStats& s) {
           {"points_per_second", s.wall_time_s > 0 ? s.points / s.wall_time_s : 0.0}};
 }
 
+/// A point's gait is what the grid says it is: its summary.json present, converged, of this
+/// robot and slope, its trajectory of the point's step length and step time. A folder copied
+/// over another point's, another robot's point or a lost summary otherwise blended in unseen.
+void checkPointGait(const std::string& point_dir, const gaits::Trajectory& traj,
+                    const GridPoint& point, const dynamics::Model& model) {
+  const std::string summary = point_dir + "/summary.json";
+  const auto refuse = [&](const std::string& file, const std::string& why) {
+    throw config::ConfigError(file, "", 0,
+                              why +
+                                  ": the library folder was edited or damaged; rerun gaitopt "
+                                  "library on it to solve the point again");
+  };
+  if (!std::filesystem::is_regular_file(summary))
+    refuse(summary, "missing beside its trajectory.csv");
+  const auto json = io::readStrictJson(summary);
+  if (!json.is_object() || json.value("converged", true) != true ||
+      json.value("robot", model.name()) != model.name())
+    refuse(summary, fmt::format("not a converged gait of robot '{}'", model.name()));
+  const auto [speed, length, slope] = point.walk();
+  const double step_time = length / speed;
+  if (std::abs(traj.stepLength() - length) > 1e-9 * length ||
+      std::abs(traj.duration() - step_time) > 1e-6 * step_time ||
+      std::abs(json.value("slope_rad", 0.0) - slope) > 1e-9)
+    refuse(point_dir + "/trajectory.csv",
+           fmt::format("a step of {:g} m in {:g} s on slope {:g}, not the point's {:g} m in {:g} "
+                       "s on {:g}",
+                       traj.stepLength(), traj.duration(), json.value("slope_rad", 0.0), length,
+                       step_time, slope));
+}
+
+/// The files the points were solved from, as they are now against the fingerprints the library
+/// recorded (libraryClaim): a gait blended for a robot edited since is another robot's motion
+/// with this one's torques. A library made before a key was recorded is not judged on it.
+void refuseChangedInputs(const std::string& library_file, const nlohmann::ordered_json& claim,
+                         const std::string& ocp_path, const ocp::OcpConfig& base) {
+  const std::vector<std::pair<const char*, std::string>> inputs = {
+      {"ocp_config_fnv1a", ocp_path},
+      {"robot_file_fnv1a", base.robot_path},
+      {"guess_gait_fnv1a", base.guess_gait_path}};
+  for (const auto& [key, file] : inputs)
+    if (claim.contains(key) && !file.empty() && claim[key] != io::fileFingerprint(file))
+      throw config::ConfigError(library_file, key, 0,
+                                fmt::format("{} has changed since the library was solved: its "
+                                            "gaits are of the file as it was; rerun gaitopt "
+                                            "library into a new folder",
+                                            file));
+}
+
 }  // namespace
 
 GaitLookup FolderGaits::lookup() {
@@ -44,7 +95,9 @@ GaitLookup FolderGaits::lookup() {
     const std::string point = dir_ + "/points/" + grid_->point(p).name;
     const std::string csv = point + "/trajectory.csv";
     if (std::filesystem::exists(csv)) {
-      slot = std::make_unique<gaits::Trajectory>(gaits::readTrajectoryCsv(csv, *model_));
+      auto gait = std::make_unique<gaits::Trajectory>(gaits::readTrajectoryCsv(csv, *model_));
+      checkPointGait(point, *gait, grid_->point(p), *model_);
+      slot = std::move(gait);
       return slot.get();
     }
     // A solved point's folder without its gait is a damaged library, not an unsolved point.
@@ -71,7 +124,9 @@ LibraryFolder readLibraryFolder(const std::string& dir) {
     config.push_back({key, axes.at(key).get<std::vector<double>>()});
   // The OCP path is relative to the library folder (claimLibraryFolder).
   const auto ocp_path = std::filesystem::path(dir) / j.at("ocp").get<std::string>();
-  return {Grid(walk, std::move(config)), ocp::loadOcpConfig(ocp_path.string())};
+  LibraryFolder folder{Grid(walk, std::move(config)), ocp::loadOcpConfig(ocp_path.string())};
+  refuseChangedInputs(path, j, ocp_path.string(), folder.base);
+  return folder;
 }
 
 nlohmann::ordered_json libraryClaim(const LibrarySetup& s) {

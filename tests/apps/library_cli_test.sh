@@ -126,6 +126,25 @@ run interpolate --library "$TMP/damaged" --speed 0.65 --step-length 0.5 --out "$
 [[ $RC -eq 2 ]] && grep -q "trajectory.csv: missing beside its summary.json" "$TMP/err" ||
   fail "(a') damaged library exited $RC: $(cat "$TMP/err")"
 
+# A point's gait is the point's: a folder copied over another point's, or a gait without its
+# summary, is a damaged library (exit 2), not a gait to blend; and a file the points were solved
+# from, edited since (here the OCP config beside a copy of the library), is refused by name.
+cp -r "$L" "$TMP/copied" && rm -r "$TMP/copied/points/v0.700_L0.500_s+0.000" &&
+  cp -r "$TMP/copied/points/v0.600_L0.500_s+0.000" "$TMP/copied/points/v0.700_L0.500_s+0.000"
+run interpolate --library "$TMP/copied" --speed 0.65 --step-length 0.5 --out "$TMP/cp" --no-plots
+[[ $RC -eq 2 ]] && grep -q "v0.700_L0.500_s+0.000/trajectory.csv: a step of 0.5 m in 0.833333 s" \
+  "$TMP/err" || fail "(a') a copied point exited $RC: $(cat "$TMP/err")"
+cp -r "$L" "$TMP/nosummary" && rm "$TMP/nosummary/points/v0.600_L0.500_s+0.000/summary.json"
+run interpolate --library "$TMP/nosummary" --speed 0.65 --step-length 0.5 --out "$TMP/ns" --no-plots
+[[ $RC -eq 2 ]] && grep -q "summary.json: missing beside its trajectory.csv" "$TMP/err" ||
+  fail "(a') a point without its summary exited $RC: $(cat "$TMP/err")"
+mkdir -p "$TMP/moved" && cp -r "$L" "$TMP/moved/" && cp "$TMP/rabbit8.yaml" "$TMP/moved/" &&
+  echo "# edited" >>"$TMP/moved/rabbit8.yaml"
+run interpolate --library "$TMP/moved/$(basename "$L")" --speed 0.65 --step-length 0.5 \
+  --out "$TMP/mv" --no-plots
+[[ $RC -eq 2 ]] && grep -q "rabbit8.yaml has changed since the library was solved" "$TMP/err" ||
+  fail "(a') an edited OCP config exited $RC: $(cat "$TMP/err")"
+
 # (b) a rerun has nothing to do and leaves index.csv as it was.
 run library --config "$TMP/tiny.yaml" --out "$L" --jobs 2
 [[ $RC -eq 0 ]] || fail "(b) exited $RC: $(cat "$TMP/err")"

@@ -24,6 +24,15 @@ TEST(Interpolation, CellWeightsBlendTheBracketingPoints) {
   EXPECT_NEAR(w[1].second, 0.25, 1e-12);
   EXPECT_EQ(cellWeights(grid, {0.45, 0.35, 0.0}).size(), 4u);
   EXPECT_THROW(cellWeights(grid, {0.8, 0.35, 0.0}), std::domain_error);
+  // A query at a grid value, to the last bit or not, is that point alone: a range's value
+  // 0.3 + 0.6 and a typed 0.9 differ by 1e-16, which blended in a neighbour (a failed one
+  // refused the point).
+  const Grid range({std::vector<double>{0.3, 0.3 + 0.6, 1.5}, {0.2}, {0.0}});
+  ASSERT_NE(range.axes()[0][1], 0.9);
+  const auto at = cellWeights(range, {0.9, 0.2, 0.0});
+  ASSERT_EQ(at.size(), 1u);
+  EXPECT_EQ(at[0].first, 1);
+  EXPECT_EQ(at[0].second, 1.0);
 }
 
 #ifdef NDEBUG  // five OCP solves: Release only
