@@ -36,7 +36,8 @@ void addContactOptions(CLI::App* cmd, sim::ContactRules& rules) {
       ->transform(CLI::CheckedTransformer(limits))
       ->default_str("saturate");
   cmd->add_option("--restitution", rules.restitution,
-                  "Newton restitution e_n of rigid-ground impacts (0: plastic)")
+                  "Newton restitution e_n of rigid-ground impacts (0: plastic; rigid ground "
+                  "only). A landing tip that rebounds ends the walk: a rebound is not modelled")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
 }

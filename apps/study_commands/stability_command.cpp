@@ -197,6 +197,11 @@ void runStability(const StabilityOptions& o) {
   const sim::Reference reference(ref.step, ref.model);
   sim::Scenario base = sim::makeScenario(o.scenario);
   base.poincare = o.poincare;
+  if (base.poincare && base.ground.getIf<sim::RigidGround>() == nullptr)
+    throw config::ConfigError("--poincare", "", 0,
+                              fmt::format("the Poincare map is computed on the rigid ground only, "
+                                          "not on the {} ground",
+                                          sim::groundName(base.ground)));
   checkControllerFitsReference(ref, reference, base);
   Grids grids = parseGrids(o, base, ref.model);
   const io::ResumableFolder folder(o.out_dir, sim::scenarioInputs(o.scenario, ref), kSettingsFile);

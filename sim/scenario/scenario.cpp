@@ -84,7 +84,7 @@ std::unique_ptr<Controller> makeController(const dynamics::Model& model, const R
                                   ref,
                                   scaledGains(s.gains, s.gain_scale),
                                   scaledGains(s.mu_gains, s.gain_scale),
-                                  s.uncertainty_bound,
+                                  uncertaintyBound(s),
                                   muBoundSide(s)};
   return controllerEntry(s.controller).build(setting);
 }
@@ -133,6 +133,16 @@ double sweepValue(const Scenario& s, const std::string& name) {
   if (name == "friction") return s.friction.value_or(std::numeric_limits<double>::quiet_NaN());
   const auto* compliant = s.ground.getIf<CompliantGround>();
   return compliant ? compliant->contact.stiffness : std::numeric_limits<double>::quiet_NaN();
+}
+
+dynamics::ParameterErrors uncertaintyBound(const Scenario& s) {
+  if (!s.errors_on_controller) return kPlantErrorBound;
+  // The model's parameter is (1 + e) the plant's; the box [p / (1 + b), p (1 + b)] about the
+  // model's p holds the plant's p / (1 + e) for b = e when e >= 0, and b = -e / (1 + e) when
+  // the model underestimates (mu_sliding_mode.cpp's corners need b >= 0).
+  const auto bound = [](double e) { return e >= 0 ? e : -e / (1 + e); };
+  const dynamics::ParameterErrors& e = s.parameter_errors;
+  return {bound(e.mass), bound(e.inertia), bound(e.length), bound(e.com)};
 }
 
 void setSweepValue(Scenario& s, const std::string& name, double value) {

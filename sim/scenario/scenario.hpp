@@ -22,11 +22,7 @@ struct Scenario {
   std::string controller = kDefaultController;  ///< a name of controllers()
   TrackingGains gains;
   MuSlidingModeGains mu_gains;  ///< Table 4.2 of the scenario's uncertainty case
-  /// What mu_sliding_mode knows of its model's error: the true parameters are within a factor
-  /// (1 + b) of its model's. Default: the plant-error interval the controller is meant to
-  /// cover (masses and inertias 20 %, lengths and CoM offsets 5 %).
-  dynamics::ParameterErrors uncertainty_bound{0.2, 0.2, 0.05, 0.05};
-  double gain_scale = 1;  ///< bandwidth factor s: kp, K by s^2; kd, lambda by s
+  double gain_scale = 1;        ///< bandwidth factor s: kp, K by s^2; kd, lambda by s
   dynamics::ParameterErrors parameter_errors;  ///< the plant's parameters are (1 + E) the nominal
   /// Mu's setting instead (sec. 4.3): the plant is nominal and the controller's model is
   /// (1 + E) the nominal, so the reference gait still fits the plant's geometry.
@@ -38,6 +34,15 @@ struct Scenario {
   int steps = 20;
   bool poincare = false;  ///< also the Poincare map (rigid ground only)
 };
+
+/// The plant-error interval mu_sliding_mode is meant to cover when its model is nominal: masses
+/// and inertias 20 %, lengths and CoM offsets 5 %.
+inline constexpr dynamics::ParameterErrors kPlantErrorBound{0.2, 0.2, 0.05, 0.05};
+
+/// What mu_sliding_mode knows of its model's error (the true parameters within a factor (1 + b)
+/// of its model's): in Mu's setting (errors on the controller, sec. 4.3) the bound of the errors
+/// its model has, a case's or a --mass-error's or a sweep point's; else kPlantErrorBound.
+dynamics::ParameterErrors uncertaintyBound(const Scenario& s);
 
 /// The box mu_sliding_mode's bound describes: Mu's premise (its model overestimates the robot,
 /// phi^ = (1 + E) phi, sec. 4.2) in Mu's setting, errors on the controller and none negative;

@@ -52,8 +52,6 @@ Scenario makeScenario(const ScenarioSettings& o) {
   s.parameter_errors = dynamics::muUncertaintyCase(o.uncertainty_case);
   s.errors_on_controller = o.uncertainty_on == "controller";
   s.mu_gains = muTable42(o.uncertainty_case);
-  // Mu's setting: the controller knows how far its model may be off (sec. 4.3).
-  if (s.errors_on_controller) s.uncertainty_bound = s.parameter_errors;
   if (o.friction >= 0) s.friction = o.friction;
   if (o.push != 0) {
     try {
@@ -66,6 +64,14 @@ Scenario makeScenario(const ScenarioSettings& o) {
   if (o.length_error) setSweepValue(s, "length_error", *o.length_error);
   s.gain_scale = o.gain_scale;
   s.rules = o.rules;
+  // The compliant, LCP and DART grounds have their own contact laws; a restitution there was
+  // recorded in summary.json and walked without.
+  if (s.rules.restitution > 0 && s.ground.getIf<RigidGround>() == nullptr)
+    throw config::ConfigError(
+        "--restitution", "", 0,
+        fmt::format("the {} ground has its own contact law: restitution applies to the rigid "
+                    "ground's impacts only",
+                    groundName(s.ground)));
   return s;
 }
 
@@ -83,6 +89,14 @@ void requireControllerFits(const ScenarioSettings& o, const dynamics::Model& mod
                   o.controller, model.nLinks(), model.name(), passiveAnkleOptions()));
 }
 
+namespace {
+
+nlohmann::ordered_json errorsJson(const dynamics::ParameterErrors& e) {
+  return {{"mass", e.mass}, {"inertia", e.inertia}, {"length", e.length}, {"com", e.com}};
+}
+
+}  // namespace
+
 nlohmann::ordered_json scenarioJson(const ScenarioSettings& o, const Scenario& s) {
   nlohmann::ordered_json j{{"reference", o.reference_dir},
                            {"controller", s.controller},
@@ -91,11 +105,7 @@ nlohmann::ordered_json scenarioJson(const ScenarioSettings& o, const Scenario& s
                            {"ground_file", groundRecord(o.ground)},
                            {"uncertainty_case", o.uncertainty_case},
                            {"uncertainty_on", o.uncertainty_on},
-                           {"parameter_errors",
-                            {{"mass", s.parameter_errors.mass},
-                             {"inertia", s.parameter_errors.inertia},
-                             {"length", s.parameter_errors.length},
-                             {"com", s.parameter_errors.com}}},
+                           {"parameter_errors", errorsJson(s.parameter_errors)},
                            {"push_impulse_Ns", o.push},
                            {"mu_sliding_mode",
                             {{"gains_table_4_2",
@@ -105,11 +115,7 @@ nlohmann::ordered_json scenarioJson(const ScenarioSettings& o, const Scenario& s
                                {"dsp_lambda", s.mu_gains.dsp_lambda},
                                {"dsp_alpha", s.mu_gains.dsp_alpha},
                                {"dsp_sigma", s.mu_gains.dsp_sigma}}},
-                             {"uncertainty_bound",
-                              {{"mass", s.uncertainty_bound.mass},
-                               {"inertia", s.uncertainty_bound.inertia},
-                               {"length", s.uncertainty_bound.length},
-                               {"com", s.uncertainty_bound.com}}},
+                             {"uncertainty_bound", errorsJson(uncertaintyBound(s))},
                              {"uncertainty_side", muBoundSide(s) == BoundSide::kOverestimated
                                                       ? "model overestimates (Mu sec. 4.2)"
                                                       : "either way"}}},

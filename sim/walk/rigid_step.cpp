@@ -5,6 +5,8 @@
 #include <functional>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "dynamics/impact/frictional_impact.hpp"
 #include "dynamics/impact/relabel.hpp"
 #include "dynamics/kinematics.hpp"
@@ -23,6 +25,9 @@ constexpr double kContactDistance = 1e-6;
 /// the rigid impulse analysis ignores the finite ground force that still loads the trailing
 /// tip, which then decides lift-off in the double support [m/s].
 constexpr double kGentleLiftoff = 0.01;
+/// A landing tip that leaves the ground after the impact (restitution e > 0) faster than this
+/// ends the walk: the phases after an impact pin it [m/s].
+constexpr double kRebound = 0.01;
 /// More contact-mode switches than this in one phase is a chatter the model does not resolve.
 constexpr int kMaxSwitches = 64;
 
@@ -282,6 +287,12 @@ ImpactChoice chooseImpact(const StepContext& c, const VecD& theta, const VecD& d
     out.failure = "no admissible impact (neither 2.31a nor 2.37a holds)";
   else if (!out.map.consistent && !gentle)
     out.failure = "no consistent frictional impact (no stick/slide mode satisfies Coulomb)";
+  else if (const double rebound = out.map.leading.velocity(1); rebound > kRebound)
+    // The phase after the impact pins the landing tip (the double support, or the next single
+    // support from it); one that leaves the ground at e v_n would be walked while pinned.
+    out.failure = fmt::format(
+        "the landing tip rebounds at {:.3g} m/s (restitution {:g}): a rebound is not modelled",
+        rebound, e);
   return out;
 }
 

@@ -140,6 +140,13 @@ expect "push after the walk's end" 2 "--push: the push comes in step 2 \(from mi
 run stability --reference "$TMP/ref" --out "$TMP/out_dir" --steps 1 --sweep push=-1:1:3 --no-plots --quiet
 expect "swept push after the walk's end" 2 "--sweep: key 'push': the push comes in step 2"
 
+# Options of the rigid ground's impacts on a ground with its own contact law: once recorded in
+# summary.json and walked without.
+run simulate --reference "$TMP/ref" --out "$TMP/out_dir" --ground lcp --restitution 0.3 --no-plots --quiet
+expect "restitution off the rigid ground" 2 "--restitution: the lcp ground has its own contact law"
+run stability --reference "$TMP/ref" --out "$TMP/out_dir" --ground impedance --poincare --sweep push=-1:1:3 --no-plots --quiet
+expect "Poincare map off the rigid ground" 2 "--poincare: the Poincare map is computed on the rigid ground only, not on the impedance ground"
+
 # A state whose rates would overflow the energies to inf (printed as null), and angles of 1e308.
 echo '{"theta": [0, 0, 0, 3, 3], "dtheta": [1e308, 0, 0, 0, 0]}' >"$TMP/fast.json"
 run inspect --robot "$ROBOT" --state "$TMP/fast.json"

@@ -181,6 +181,23 @@ TEST_F(RabbitHzd, WalksTwentyStepsThroughTheScenario) {
   EXPECT_NEAR(r.hzd_measured->multiplier, r.hzd_map->multiplier, 1e-3);
 }
 
+// Kelly's gait strikes at speed: with restitution the landing tip leaves the ground, which the
+// pinned phases after the impact cannot walk (a walk of 20 steps, 2.09 s each, was reported with
+// e = 0.5). The walk ends at the first touchdown and says why.
+TEST_F(RabbitHzd, AReboundOfTheLandingTipEndsTheWalk) {
+  Scenario scenario;
+  scenario.controller = "hzd";
+  scenario.steps = 3;
+  scenario.rules.restitution = 0.5;
+  const ScenarioResult r = runScenario(*model_, *ref_, scenario);
+  EXPECT_EQ(r.walk.steps_completed, 0);
+  EXPECT_TRUE(r.walk.fell);
+  EXPECT_NE(r.walk.failure.find("the landing tip rebounds at"), std::string::npos)
+      << r.walk.failure;
+  scenario.rules.restitution = 0;
+  EXPECT_EQ(runScenario(*model_, *ref_, scenario).walk.steps_completed, 3);
+}
+
 // The multipliers of a return map do not depend on the section (poincare.hpp): at the step's
 // start and at mid single support, Kelly's gait under HZD (a transversal heel strike, so both
 // maps are differentiable) has the same largest multiplier (0.5510 and 0.5509 measured; the

@@ -55,5 +55,25 @@ TEST(Scenario, UncertaintyGoesToThePlantOrToTheControllersModel) {
   EXPECT_NEAR(scenarioControllerModel(nominal, s).totalMass(), 1.4 * nominal.totalMass(), 1e-12);
 }
 
+// Mu's sliding-mode law sizes its switching term by the model error it is told of: in Mu's
+// setting the error its model has, whether a case's, a --mass-error's or a sweep point's (the
+// bound once stayed the case's, 0 in case 1, and a 30 % mass error walked with no switching).
+TEST(Scenario, MusLawIsToldTheErrorItsModelHas) {
+  Scenario s;
+  EXPECT_EQ(uncertaintyBound(s).mass, kPlantErrorBound.mass);  // errors on the plant
+  EXPECT_EQ(uncertaintyBound(s).length, kPlantErrorBound.length);
+  s.errors_on_controller = true;
+  s.parameter_errors = dynamics::muUncertaintyCase(1);
+  setSweepValue(s, "mass_error", 0.3);
+  EXPECT_EQ(uncertaintyBound(s).mass, 0.3);
+  EXPECT_EQ(uncertaintyBound(s).inertia, 0.3);
+  EXPECT_EQ(uncertaintyBound(s).length, 0.0);
+  // A model 20 % short of the plant's lengths: the plant's are 1 / 0.8 = 1.25 times its own,
+  // inside the box of b = 0.25, and the law's corners need b >= 0.
+  setSweepValue(s, "length_error", -0.2);
+  EXPECT_NEAR(uncertaintyBound(s).length, 0.25, 1e-15);
+  EXPECT_NEAR(uncertaintyBound(s).com, 0.25, 1e-15);
+}
+
 }  // namespace
 }  // namespace gaitopt::sim
