@@ -92,6 +92,10 @@ void readConfigAxes(const YamlReader& grid, const std::string& prefix, LibraryCo
       readConfigAxes(grid.map(key), path, c);
       continue;
     }
+    // `constraints.x: [...]` beside `constraints: {x: [...]}` name one key twice.
+    if (std::any_of(c.config_axes.begin(), c.config_axes.end(),
+                    [&](const GridAxis& a) { return a.key == path; }))
+      grid.fail(key, fmt::format("the key {} is given twice (once dotted, once nested)", path));
     GridAxis axis{path, readValues(grid, key, [](double) { return std::string(); })};
     checkConfigAxis(grid, key, axis, c.ocp_path);
     c.config_axes.push_back(std::move(axis));

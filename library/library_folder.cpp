@@ -1,8 +1,10 @@
 #include "library/library_folder.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
 #include <fmt/format.h>
 
@@ -117,12 +119,32 @@ LibraryFolder readLibraryFolder(const std::string& dir) {
   if (!j.is_object() || !j.contains("axes") || !j.contains("ocp"))
     throw config::ConfigError(path, "", 0, "not a library.json written by gaitopt library");
   const auto& axes = j.at("axes");
+  // Each axis a non-empty increasing list of numbers, as libraryClaim writes it; an edited
+  // file is refused by name rather than read as another grid.
+  const auto axis = [&](const std::string& key) {
+    std::vector<double> values;
+    if (axes.is_object() && axes.contains(key) && axes[key].is_array())
+      for (const auto& v : axes[key])
+        if (v.is_number()) values.push_back(v.get<double>());
+    if (values.empty() || values.size() != axes[key].size() ||
+        std::adjacent_find(values.begin(), values.end(), std::greater_equal<>()) != values.end())
+      throw config::ConfigError(path, "axes." + key, 0,
+                                "expected an increasing list of numbers: the library folder was "
+                                "edited or damaged");
+    return values;
+  };
   std::array<std::vector<double>, kWalkAxes> walk;
-  for (int a = 0; a < kWalkAxes; ++a) walk[a] = axes.at(kAxisNames[a]).get<std::vector<double>>();
+  for (int a = 0; a < kWalkAxes; ++a) walk[a] = axis(kAxisNames[a]);
   std::vector<GridAxis> config;
-  for (const auto& key : j.value("config_axes", std::vector<std::string>{}))
-    config.push_back({key, axes.at(key).get<std::vector<double>>()});
+  const auto keys = j.value("config_axes", nlohmann::ordered_json::array());
+  for (const auto& key : keys) {
+    if (!key.is_string())
+      throw config::ConfigError(path, "config_axes", 0, "expected a list of config keys");
+    config.push_back({key.get<std::string>(), axis(key.get<std::string>())});
+  }
   // The OCP path is relative to the library folder (claimLibraryFolder).
+  if (!j.at("ocp").is_string())
+    throw config::ConfigError(path, "ocp", 0, "expected the base OCP file's path");
   const auto ocp_path = std::filesystem::path(dir) / j.at("ocp").get<std::string>();
   LibraryFolder folder{Grid(walk, std::move(config)), ocp::loadOcpConfig(ocp_path.string())};
   refuseChangedInputs(path, j, ocp_path.string(), folder.base);

@@ -17,8 +17,9 @@ namespace gaitopt::library {
 struct RunStats {
   int points = 0, failed = 0, solves = 0, workers = 0;
   double wall_time_s = 0;
-  /// Rows of status "error": a point that could not be set up or written, or whose worker died
-  /// (a failure of the run, not a solver outcome), and the first one's message.
+  /// Points whose last row is of status "error": a point that could not be set up or written,
+  /// or whose worker died and whose second chance did not solve it (a failure of the run, not a
+  /// solver outcome), and the first one's message.
   int errors = 0;
   std::string first_error;
 };

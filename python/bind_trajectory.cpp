@@ -75,7 +75,7 @@ size_t writeFolder(const Trajectory& traj, const dynamics::Model& robot,
 /// alone checks only the number of links.
 Trajectory readFolderTrajectory(const std::filesystem::path& path, const dynamics::Model& robot) {
   const std::filesystem::path dir = path.parent_path();
-  sim::requireGaitOf(dir.empty() ? "." : dir.string(), robot);
+  sim::requireDesignedFor(dir.empty() ? "." : dir.string(), robot);
   return gaits::readTrajectoryCsv(path.string(), robot);
 }
 

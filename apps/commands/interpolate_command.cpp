@@ -64,7 +64,10 @@ void runInterpolate(InterpolateOptions o) {
   std::vector<std::string> inputs = ocp::ocpInputs(lib.base);
   inputs.push_back(o.library_dir);
   const io::OutputFolder out(o.output.out_dir, inputs);
-  if (!o.has_slope) o.walk[library::kSlope] = library::basePoint(lib.base)[library::kSlope];
+  // As a config axis of one value may be left out (configValues), so may a slope of one.
+  if (const auto& slopes = lib.grid.axes()[library::kSlope]; !o.has_slope)
+    o.walk[library::kSlope] =
+        slopes.size() == 1 ? slopes.front() : library::basePoint(lib.base)[library::kSlope];
   std::vector<double> values(o.walk.begin(), o.walk.end());
   const std::vector<double> keyed = configValues(lib.grid, o.at);
   values.insert(values.end(), keyed.begin(), keyed.end());
@@ -104,8 +107,10 @@ void registerInterpolateCommand(CLI::App& app) {
       ->required()
       ->check(CLI::Range(1e-3, 10.0));
   CLI::Option* slope =
-      cmd->add_option("--slope", o->walk[library::kSlope],
-                      "Ground slope [rad], > 0 uphill (default: the library's base slope)")
+      cmd->add_option(
+             "--slope", o->walk[library::kSlope],
+             "Ground slope [rad], > 0 uphill (default: the library's one slope, or its base "
+             "problem's)")
           ->check(CLI::Range(-0.35, 0.35));
   cmd->add_option("--at", o->at,
                   "The query's value of a config key the library sweeps, e.g. --at "

@@ -72,15 +72,34 @@ void requireGaitOf(const std::string& dir, const dynamics::Model& model) {
                     io::printable(json["robot"].get<std::string>()), model.name()));
 }
 
+void requireDesignedFor(const std::string& dir, const dynamics::Model& model) {
+  requireGaitOf(dir, model);
+  const std::string summary = dir + "/summary.json";
+  if (!std::filesystem::is_regular_file(summary)) return;
+  const auto json = io::readStrictJson(summary);
+  // A robot file of the same name with other masses (a copy edited and solved on) is another
+  // robot: its gait walked the shipped one, which it does not fit, without a word.
+  if (json.contains("total_mass") && json["total_mass"].is_number() &&
+      std::abs(json["total_mass"].get<double>() - model.totalMass()) > 1e-9 * model.totalMass())
+    throw config::ConfigError(
+        summary, "total_mass", 0,
+        fmt::format("the gait was designed for a robot '{}' of {:g} kg; the robot file used here "
+                    "weighs {:g} kg: give the file it was designed on (--robot), or walk a mass "
+                    "error (--mass-error)",
+                    model.name(), json["total_mass"].get<double>(), model.totalMass()));
+}
+
 ReferenceFolder loadReferenceFolder(const std::string& dir, const std::string& robot_path,
                                     const std::vector<config::Override>& robot_overrides) {
   if (!std::filesystem::is_directory(dir))
     throw config::ConfigError(dir, "", 0, "not a folder (expected a gait result folder)");
   const std::string robot = robot_path.empty() ? robotOfFolder(dir) : robot_path;
   // The plant and the controller's model walk on the slope the reference was designed for.
-  dynamics::Model model =
-      dynamics::withSlope(dynamics::loadRobot(robot, robot_overrides), slopeOfFolder(dir));
-  requireGaitOf(dir, model);
+  const double slope = slopeOfFolder(dir);
+  // The gait is checked against the robot file as it is; --set robot.KEY=V then changes the
+  // robot it walks on, on purpose.
+  requireDesignedFor(dir, dynamics::withSlope(dynamics::loadRobot(robot), slope));
+  dynamics::Model model = dynamics::withSlope(dynamics::loadRobot(robot, robot_overrides), slope);
   gaits::Trajectory step = gaits::readTrajectoryCsv(dir + "/trajectory.csv", model);
   if (step.knots().size() < 2)
     throw config::ConfigError(

@@ -163,7 +163,6 @@ struct Walker {
     const gaits::Knot k = ref.at(run.phase, run.clock, run.start);
     r.max_tracking_error =
         std::max(r.max_tracking_error, (theta - VecD(k.theta)).cwiseAbs().maxCoeff());
-    r.slip = std::max(r.slip, slip(run));
     const double weight = plant.totalMass() * plant.gravity();
     r.max_friction_ratio = std::max({r.max_friction_ratio, loadedFrictionRatio(run.force.b, weight),
                                      loadedFrictionRatio(run.force.e, weight)});
@@ -205,6 +204,8 @@ struct Walker {
     if (run.phase == Phase::kDsp && run.force.e(1) <= 0)
       run.e_x0 = dynamics::floatingSwingTip(plant, run.s.q)(0);
     run.e_unloaded = run.phase == Phase::kDsp && run.force.e(1) <= 0 ? run.e_unloaded + h : 0;
+    // Before the failure test: a walk ended by a slip reports the slip that ended it.
+    r.slip = std::max(r.slip, slip(run));
     r.failure = failure(run);
     if (!r.failure.empty()) return false;
     // The time step that lands E ends the SSP: its state is the DSP's first, so the torque judged

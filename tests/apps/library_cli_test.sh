@@ -145,6 +145,16 @@ run interpolate --library "$TMP/moved/$(basename "$L")" --speed 0.65 --step-leng
 [[ $RC -eq 2 ]] && grep -q "rabbit8.yaml has changed since the library was solved" "$TMP/err" ||
   fail "(a') an edited OCP config exited $RC: $(cat "$TMP/err")"
 
+# An edited library.json (an axis gone, or not increasing) is refused by name, not read as
+# another grid or reported as a JSON library's exception.
+cp -r "$L" "$TMP/edited" && "$PY" - "$TMP/edited/library.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1])); d["axes"]["speed"] = [0.8, 0.6]; json.dump(d, open(sys.argv[1], "w"))
+PY
+run interpolate --library "$TMP/edited" --speed 0.65 --step-length 0.5 --out "$TMP/ed" --no-plots
+[[ $RC -eq 2 ]] && grep -q "library.json: key 'axes.speed': expected an increasing list" "$TMP/err" ||
+  fail "(a') an edited library.json exited $RC: $(cat "$TMP/err")"
+
 # (b) a rerun has nothing to do and leaves index.csv as it was.
 run library --config "$TMP/tiny.yaml" --out "$L" --jobs 2
 [[ $RC -eq 0 ]] || fail "(b) exited $RC: $(cat "$TMP/err")"
@@ -230,7 +240,23 @@ run library --config "$TMP/bad.yaml" --out "$TMP/bad"
 [[ $RC -eq 2 ]] && grep -q "key 'grid.speed.count'" "$TMP/err" || fail "(g) count: $(cat "$TMP/err")"
 run library --config "$TMP/missing.yaml" --out "$TMP/bad"
 [[ $RC -eq 2 ]] && grep -q "missing.yaml" "$TMP/err" || fail "(g) missing: $(cat "$TMP/err")"
+# One key dotted and nested: solved twice under the second's values, plotted and read wrongly.
+printf 'name: bad\nocp: rabbit8.yaml\ngrid:\n  speed: [0.7]\n  constraints.rate_limit: [8, 10]\n  constraints: {rate_limit: [6, 12]}\n' >"$TMP/bad.yaml"
+run library --config "$TMP/bad.yaml" --out "$TMP/bad"
+[[ $RC -eq 2 ]] && grep -q "the key constraints.rate_limit is given twice" "$TMP/err" ||
+  fail "(g) key twice: $(cat "$TMP/err")"
 [[ ! -e "$TMP/bad" ]] || fail "(g) a bad config created its folder"
+
+# A library of one slope is queried on it by default, as a config key of one value is (it was
+# queried at the base problem's slope 0 and refused).
+printf 'name: sl\nocp: rabbit8.yaml\ngrid:\n  speed: [0.6, 0.7]\n  step_length: [0.5]\n  slope: [0.05]\n' >"$TMP/sl.yaml"
+run library --config "$TMP/sl.yaml" --out "$TMP/sl" --jobs 1 --quiet
+[[ $RC -eq 0 ]] || fail "(g') a slope library exited $RC: $(cat "$TMP/err")"
+run interpolate --library "$TMP/sl" --speed 0.65 --step-length 0.5 --out "$TMP/sl_mid" --no-plots
+[[ $RC -eq 0 ]] || fail "(g') interpolate on its one slope exited $RC: $(cat "$TMP/err")"
+check_json "(g') one slope" "$TMP/sl_mid/summary.json" <<'PY'
+assert abs(d["slope_rad"] - 0.05) < 1e-12, d["slope_rad"]
+PY
 
 # (h) --set replaces a value of the library config, checked as the file is and recorded in each
 # point's summary.json; a bad value exits 2 naming --set and creates nothing.

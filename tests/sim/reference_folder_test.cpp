@@ -8,12 +8,14 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "config/config_error.hpp"
 #include "five_link_gait.hpp"
 #include "gaits/export/gait_export.hpp"
 #include "gaits/export/gait_summary.hpp"
@@ -101,6 +103,32 @@ TEST_F(ReferenceFolderTest, AwayFromTheSwitchTheReferenceIsTheStepsOwn) {
     ++compared;
   }
   EXPECT_GT(compared, 180);
+}
+
+// A robot file of the gait's name but other masses is another robot: walked by default, the gait
+// fell on the shipped robot it does not fit. A --set robot.KEY=V changes the robot walked on
+// purpose and stays allowed.
+TEST_F(ReferenceFolderTest, AGaitOfAnotherRobotOfTheSameNameIsRefused) {
+  const std::string robot =
+      std::string(GAITOPT_SOURCE_DIR) + "/configs/robots/mu2004_five_link.yaml";
+  std::ifstream in(robot);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string heavy = (dir_ / "heavy.yaml").string();
+  std::string edited = text.str();
+  const auto at = edited.find("mass: 14.79");  // the torso
+  ASSERT_NE(at, std::string::npos);
+  edited.replace(at, 11, "mass: 26.79");
+  std::ofstream(heavy) << edited;
+  try {
+    loadReferenceFolder(dir_.string(), heavy);
+    FAIL() << "a gait of a 29.81 kg robot walked on a 41.81 kg one";
+  } catch (const config::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("designed for a robot 'mu2004_five_link' of 29.81 kg"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_NO_THROW(loadReferenceFolder(dir_.string(), robot, {{"links[2].mass", "26.79"}}));
 }
 
 }  // namespace
