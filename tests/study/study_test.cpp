@@ -127,13 +127,14 @@ TEST(StudyConfig, PathsAreReadBesideTheFileWhateverTheOverridesSay) {
   namespace fs = std::filesystem;
   const fs::path folder = fs::path(::testing::TempDir()) / "beside";
   fs::create_directories(folder);
-  const auto from = [&](const std::string& file) {
-    return fs::relative(std::string(GAITOPT_SOURCE_DIR) + "/configs/" + file, folder).string();
+  const auto from = [&](const std::string& kind, const std::string& file) {
+    return fs::relative(std::string(GAITOPT_SOURCE_DIR) + "/configs/" + kind + "/" + file, folder)
+        .string();
   };
   const std::string path = (folder / "s.yaml").string();
-  std::ofstream(path) << "name: s\ngaits: [" << from("ocp/rabbit_kelly2017.yaml")
+  std::ofstream(path) << "name: s\ngaits: [" << from("ocp", "rabbit_kelly2017.yaml")
                       << "]\nwalks:\n  - name: w\n    options: {robot: "
-                      << from("robots/rabbit.yaml")
+                      << from("robots", "rabbit.yaml")
                       << "}\n    controllers: [computed_torque]\n"
                          "    plant: {option: mass-error, values: [0]}\n";
   const StudyConfig c = loadStudyConfig(path, {{"description", "a/b"}});
