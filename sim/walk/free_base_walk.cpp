@@ -308,7 +308,7 @@ WalkResult walkFreeBase(const dynamics::Model& plant, const Controller& controll
   double t = 0;
   for (int k = 0; k < plan.steps; ++k) {
     const StepResult r = walker.step(s, t, k, plan.push);
-    if (!appendStep(w, r)) break;
+    if (!appendStep(w, r, ref.stepLength())) break;
     t += r.ssp_duration + r.dsp_duration;
   }
   return w;

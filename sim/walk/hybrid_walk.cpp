@@ -6,7 +6,14 @@
 
 namespace gaitopt::sim {
 
-bool appendStep(WalkResult& walk, const StepResult& step) {
+bool appendStep(WalkResult& walk, StepResult step, double planned_step) {
+  if (step.ok && step.advance < kMinStepFraction * planned_step) {
+    step.ok = false;
+    step.failure = fmt::format(
+        "the swing tip struck the ground {:.3g} m ahead of the stance tip, {:.0f} % of the "
+        "planned {:.3g} m step: a scuff at mid-swing, not a step",
+        step.advance, 100 * step.advance / planned_step, planned_step);
+  }
   walk.max_tracking_error = std::max(walk.max_tracking_error, step.max_tracking_error);
   walk.max_slip = std::max(walk.max_slip, step.slip);
   walk.min_cop_margin = std::min(walk.min_cop_margin, step.min_cop_margin);
@@ -44,7 +51,7 @@ WalkResult simulateWalk(const dynamics::Model& plant, const Controller& controll
     const StepResult s =
         simulateStep(plant, controller, ref, theta, dtheta, options.integrator, log, t, k, stance_x,
                      options.push, options.rules, stance_velocity);
-    if (!appendStep(w, s)) break;
+    if (!appendStep(w, s, ref.stepLength())) break;
     t += s.ssp_duration + s.dsp_duration;
     stance_x += s.advance;
     stance_velocity = s.stance_velocity;

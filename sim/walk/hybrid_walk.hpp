@@ -131,9 +131,15 @@ struct WalkResult {
   std::vector<StepResult> steps;
 };
 
+/// A touchdown this short of the planned step is the swing tip striking the ground at mid-swing,
+/// not a step (a scuff each time step, a robot standing with its legs together, was counted as
+/// 20 steps walked); pushes and model errors shorten steps by far less.
+inline constexpr double kMinStepFraction = 0.25;
+
 /// Adds a step to the walk (its error, and the failure as "step k: ..."); false when the step
-/// failed, which ends the walk. Every ground's walk keeps its record through this.
-bool appendStep(WalkResult& walk, const StepResult& step);
+/// failed, which ends the walk, also when it advanced less than kMinStepFraction of
+/// `planned_step` [m]. Every ground's walk keeps its record through this.
+bool appendStep(WalkResult& walk, StepResult step, double planned_step);
 
 /// Distance advanced [m] and time taken [s] over the completed steps.
 struct WalkTotals {
