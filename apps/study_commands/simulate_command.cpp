@@ -76,7 +76,9 @@ void registerSimulateCommand(CLI::App& app) {
   CLI::App* cmd =
       app.add_subcommand("simulate", "Walk an exported gait in closed loop and measure it");
   addScenarioOptions(cmd, options->scenario);
-  addOutputOptions(cmd, options->output, "walk.csv");
+  // walk.csv keeps the simulator's own states, thinned to the rate: no finer than the ground's
+  // time step (the rigid ground's output step, the others' integration step).
+  addOutputOptions(cmd, options->output, "walk.csv, at most one row per time step of the ground");
   cmd->add_flag("!--no-poincare", options->poincare, "Skip the Poincare map of the cycle");
   cmd->add_flag("--quiet", options->quiet, "Less output");
   cmd->footer(
