@@ -15,6 +15,7 @@
 #include "config/config_error.hpp"
 #include "config/overrides.hpp"
 #include "gaits/export/gait_summary.hpp"
+#include "gaits/trajectory/grid_export.hpp"
 #include "io/exit_code.hpp"
 #include "io/output/output_folder.hpp"
 #include "io/settings_record.hpp"
@@ -97,6 +98,11 @@ void runLibrary(const LibraryOptions& o) {
   library::LibraryConfig config =
       library::loadLibraryConfig(o.config_path, config::parseOverrides(o.sets));
   library::Grid grid = makeGrid(config, o.config_path);
+  // Every point would be solved and then refused at its export, and the folder claimed at a rate
+  // a rerun must repeat: the shortest step is checked first.
+  const auto& axes = grid.axes();
+  gaits::requireExportRate(axes[library::kStepLength].front() / axes[library::kSpeed].back(),
+                           o.rate_hz);
   const library::LibrarySetup setup{
       std::move(config),
       std::move(grid),

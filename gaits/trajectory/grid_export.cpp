@@ -27,6 +27,17 @@ size_t gridSize(double end, double rate_hz) {
   return static_cast<size_t>(n) + 1;
 }
 
+void requireExportRate(double duration, double rate_hz) {
+  const size_t n = gridSize(duration, rate_hz);
+  if (n < kMinExportSamples)
+    throw config::ConfigError(
+        "export rate", "", 0,
+        fmt::format("{:g} Hz samples the {:.4g} s step {} time(s), fewer than the {} an export "
+                    "needs: use {:.4g} Hz or more",
+                    rate_hz, duration, n, kMinExportSamples,
+                    std::ceil(static_cast<double>(kMinExportSamples - 1) / duration)));
+}
+
 GridExport exportGrid(const Trajectory& traj, double rate_hz) {
   if (!(std::isfinite(rate_hz) && rate_hz > 0))
     throw std::invalid_argument(fmt::format("export rate is {} Hz, expected > 0", rate_hz));
@@ -35,14 +46,8 @@ GridExport exportGrid(const Trajectory& traj, double rate_hz) {
         fmt::format("an exported step starts at t = 0, this one at {}", traj.startTime()));
   GridExport out{traj.robot(), traj.stepLength(),        rate_hz,
                  {},           switchesOf(traj.knots()), traj.knots().back()};
+  requireExportRate(traj.endTime(), rate_hz);
   const size_t n = gridSize(traj.endTime(), rate_hz);
-  if (n < kMinExportSamples)
-    throw config::ConfigError(
-        "export rate", "", 0,
-        fmt::format("{:g} Hz samples the {:.4g} s step {} time(s), fewer than the {} an export "
-                    "needs: use {:.4g} Hz or more",
-                    rate_hz, traj.endTime(), n, kMinExportSamples,
-                    std::ceil(static_cast<double>(kMinExportSamples - 1) / traj.endTime())));
   out.samples.reserve(n);
   for (size_t i = 0; i < n; ++i) out.samples.push_back(traj.at(static_cast<double>(i) / rate_hz));
   return out;

@@ -42,6 +42,10 @@ size_t gridSize(double end, double rate_hz);
 /// stand on them alone.
 inline constexpr size_t kMinExportSamples = 10;
 
+/// @throws config::ConfigError when `rate_hz` samples a step of `duration` [s] fewer than
+/// kMinExportSamples times: exportGrid's check, for a command to make before its solves.
+void requireExportRate(double duration, double rate_hz);
+
 /// `traj` sampled at t_i = i / rate_hz (Trajectory::at) from 0 to its end time, with its switch
 /// pairs and final knot. @throws std::invalid_argument for a rate that is not > 0 or a
 /// trajectory that does not start at t = 0; config::ConfigError for a rate that gives fewer than

@@ -240,6 +240,11 @@ run library --config "$TMP/bad.yaml" --out "$TMP/bad"
 [[ $RC -eq 2 ]] && grep -q "key 'grid.speed.count'" "$TMP/err" || fail "(g) count: $(cat "$TMP/err")"
 run library --config "$TMP/missing.yaml" --out "$TMP/bad"
 [[ $RC -eq 2 ]] && grep -q "missing.yaml" "$TMP/err" || fail "(g) missing: $(cat "$TMP/err")"
+# A rate too low for the shortest step is refused before any solve, and no folder is claimed at
+# it (every point was solved, then refused at its export, and a rerun at a good rate refused).
+run library --config "$TMP/tiny.yaml" --out "$TMP/bad" --rate 5
+[[ $RC -eq 2 ]] && grep -q "5 Hz samples the 0.625 s step 4 time(s), fewer than the 10" "$TMP/err" ||
+  fail "(g) rate: $(cat "$TMP/err")"
 # One key dotted and nested: solved twice under the second's values, plotted and read wrongly.
 printf 'name: bad\nocp: rabbit8.yaml\ngrid:\n  speed: [0.7]\n  constraints.rate_limit: [8, 10]\n  constraints: {rate_limit: [6, 12]}\n' >"$TMP/bad.yaml"
 run library --config "$TMP/bad.yaml" --out "$TMP/bad"
