@@ -48,6 +48,29 @@ struct Grids {
   std::vector<Map> maps;
 };
 
+/// The file's rows on this grid: a row its CSV holds for another value (an edited file) is no
+/// point of this sweep or map and counts in no summary.
+std::map<std::string, sim::SweepRow> onGrid(const sim::SweepFile& file,
+                                            const std::vector<std::string>& keys) {
+  std::map<std::string, sim::SweepRow> rows;
+  for (const std::string& key : keys)
+    if (const auto it = file.rows().find(key); it != file.rows().end()) rows.insert(*it);
+  return rows;
+}
+
+std::map<std::string, sim::SweepRow> onGrid(const Sweep& s) {
+  std::vector<std::string> keys;
+  for (double v : s.values) keys.push_back(sim::SweepFile::key(v));
+  return onGrid(*s.file, keys);
+}
+
+std::map<std::string, sim::SweepRow> onGrid(const Map& m) {
+  std::vector<std::string> keys;
+  for (double a : m.a.values)
+    for (double b : m.b.values) keys.push_back(sim::SweepFile::key(a, b));
+  return onGrid(*m.file, keys);
+}
+
 /// The parameter `name` and its range ("" or "=a:b:n"), checked against the scenario
 /// (stiffness needs the impedance ground); `option` names the flag in errors.
 std::pair<const sim::SweepParameter*, std::vector<double>> parseAxis(const std::string& text,
@@ -249,12 +272,12 @@ void runStability(const StabilityOptions& o) {
   for (const auto& s : grids.sweeps) {
     const std::string name = s.parameter->name();
     summary["sweeps"][name] =
-        sim::walkingInterval(*s.parameter, s.file->rows(), nominalValue(base, name, ref.model));
+        sim::walkingInterval(*s.parameter, onGrid(s), nominalValue(base, name, ref.model));
     printInterval(name, summary["sweeps"][name]);
   }
   for (const auto& m : grids.maps) {
     const std::string name = m.a.parameter->name() + "_" + m.b.parameter->name();
-    summary["maps"][name] = sim::walkingRegion(m.a, m.b, m.file->rows());
+    summary["maps"][name] = sim::walkingRegion(m.a, m.b, onGrid(m));
     printRegion(name, summary["maps"][name]);
   }
   gaits::writeJsonFile(summary, out_dir + "/summary.json");

@@ -1,5 +1,6 @@
 #include "sim/studies/sweep_file.hpp"
 
+#include <cmath>
 #include <optional>
 
 #include <fmt/format.h>
@@ -32,6 +33,15 @@ std::optional<SweepRow> parseRow(const io::Row& f, std::size_t m) {
                std::stod(f[m + 6]),
                std::stod(f[m + 7])};
     if (m == 2) r.value_b = std::stod(f[1]);
+    // A row edited or damaged by hand is walked again rather than believed: finite figures, a
+    // count within the walk, and "fell" saying what the count says.
+    const bool finite = std::isfinite(r.value) && std::isfinite(r.value_b) &&
+                        std::isfinite(r.max_tracking_error) && std::isfinite(r.mean_advance) &&
+                        std::isfinite(r.wall_time_s) && std::isfinite(r.max_multiplier);
+    const bool counted =
+        r.steps_requested > 0 && r.steps_completed >= 0 && r.steps_completed <= r.steps_requested &&
+        (f[m + 2] == "0" || f[m + 2] == "1") && r.fell == (r.steps_completed < r.steps_requested);
+    if (!finite || !counted) return std::nullopt;
     return r;
   } catch (const std::exception&) {
     return std::nullopt;

@@ -54,6 +54,26 @@ PY
 run stability "${ARGS[@]}" --sweep friction=0.2:0.5:4 --out "$TMP/c"
 grep -q "0 points to walk (5 done before)" "$TMP/out" || fail "(c) rerun: $(cat "$TMP/out")"
 
+# (c2) rows edited by hand are walked again, not believed: a NaN error, a "fell" that its count
+# contradicts; and a row for a value off the grid counts in no summary.
+mkdir -p "$TMP/c2" && cp "$TMP/c/.gaitopt-result" "$TMP/c/settings.json" "$TMP/c2/"
+"$PY" - "$TMP/c/sweep_friction.csv" "$TMP/c2/sweep_friction.csv" <<'PY'
+import csv, sys
+rows = list(csv.reader(open(sys.argv[1])))
+h = rows[0]
+walked = [r for r in rows[1:] if r[h.index("fell")] == "0"]
+walked[0][h.index("max_tracking_error")] = "nan"
+walked[1][h.index("fell")] = "1"
+extra = list(walked[2]); extra[0] = "0.9"
+csv.writer(open(sys.argv[2], "w", newline=""), lineterminator="\n").writerows(rows + [extra])
+PY
+run stability "${ARGS[@]}" --sweep friction=0.2:0.5:4 --out "$TMP/c2"
+[[ $RC -eq 0 ]] || fail "(c2) stability exited $RC: $(cat "$TMP/err")"
+grep -q "2 points to walk (3 done before)" "$TMP/out" || fail "(c2) edited rows kept: $(cat "$TMP/out")"
+check_json "(c2) summary" "$TMP/c2/summary.json" <<'PY'
+assert d["sweeps"]["friction"]["values"] == 5 and d["sweeps"]["friction"]["walks_from"] == 0.3, d
+PY
+
 # (d) a run killed mid-sweep keeps its finished rows and a rerun completes the sweep.
 timeout -s KILL 2 "$GAITOPT" stability "${ARGS[@]}" --sweep gain_scale=0.5:2:8 --jobs 1 \
   --out "$TMP/d" >/dev/null 2>&1
