@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "dynamics/centre_of_pressure.hpp"
+#include "dynamics/joint_coordinates.hpp"
 #include "dynamics/kinematics.hpp"
 
 namespace gaitopt::gaits {
@@ -40,6 +41,35 @@ double minSwingClearance(const Trajectory& traj, const dynamics::Model& model) {
     if (k.phase == Phase::kSsp)
       lowest = std::min(lowest, dynamics::swingTip(model, VecD(k.theta)).y());
   return lowest;
+}
+
+namespace {
+
+/// max over the knots and the joints with a limit (> 0) of |value_j| / limit_j.
+template <class Value, class Limit>
+double largestUse(const Trajectory& traj, const dynamics::Model& model, Value value, Limit limit) {
+  double largest = 0;
+  for (const Knot& k : traj.knots()) {
+    const Eigen::VectorXd v = value(k);
+    for (int j = 0; j < model.nLinks(); ++j)
+      if (const double bound = limit(model.joints()[static_cast<std::size_t>(j)]); bound > 0)
+        largest = std::max(largest, std::abs(v(j)) / bound);
+  }
+  return largest;
+}
+
+}  // namespace
+
+double maxJointRateUse(const Trajectory& traj, const dynamics::Model& model) {
+  return largestUse(
+      traj, model, [](const Knot& k) { return dynamics::toJoint(VecD(k.dtheta)); },
+      [](const dynamics::Joint& j) { return j.velocity_limit; });
+}
+
+double maxTorqueUse(const Trajectory& traj, const dynamics::Model& model) {
+  return largestUse(
+      traj, model, [](const Knot& k) { return VecD(k.tau); },
+      [](const dynamics::Joint& j) { return j.actuated ? j.torque_limit : 0.0; });
 }
 
 double minFootCopMargin(const Trajectory& traj, const dynamics::Model& model) {

@@ -19,6 +19,14 @@ double minSwingClearance(const Trajectory& traj, const dynamics::Model& model);
 /// where the support-hull ZMP of minZmpMargin does not. Negative outside; -inf when F_By <= 0.
 double minFootCopMargin(const Trajectory& traj, const dynamics::Model& model);
 
+/// Largest |dq_j| / velocity_limit_j over the knots and the joints whose robot file gives a
+/// velocity limit, with dq = M dtheta the joint rates (Mu 2.41) [-]: above 1 a joint turns
+/// faster than its actuator can. 0 when no joint has a limit.
+double maxJointRateUse(const Trajectory& traj, const dynamics::Model& model);
+
+/// The same for |tau_j| / torque_limit_j [-].
+double maxTorqueUse(const Trajectory& traj, const dynamics::Model& model);
+
 /// Largest distance of the swing tip E from its pinned place (step_length, 0) over the DSP
 /// knots, Mu (2.9) [m]; 0 for a step without a DSP.
 double maxDspTipDrift(const Trajectory& traj, const dynamics::Model& model);

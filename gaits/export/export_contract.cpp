@@ -32,7 +32,9 @@ ExportFigures exportFigures(const Trajectory& dense, const dynamics::Model& mode
           .min_normal_force = minNormalForce(dense),
           .max_friction_ratio = maxFrictionRatio(dense),
           .min_foot_cop_margin = minFootCopMargin(dense, model),
-          .min_swing_clearance = minSwingClearance(dense, model)};
+          .min_swing_clearance = minSwingClearance(dense, model),
+          .max_joint_rate_use = maxJointRateUse(dense, model),
+          .max_torque_use = maxTorqueUse(dense, model)};
 }
 
 std::vector<ExportBreach> exportBreaches(const ExportFigures& f, double friction, double rate_hz) {
@@ -56,6 +58,11 @@ std::vector<ExportBreach> exportBreaches(const ExportFigures& f, double friction
   }
   b.atLeast("min_swing_clearance", f.min_swing_clearance, -kGroundTolerance,
             "the swing tip passes below the ground");
+  b.atMost("max_joint_rate_use", f.max_joint_rate_use, 1 + kLimitTolerance,
+           "a joint turns faster than the robot file's velocity_limit (a config bounds the joints "
+           "with constraints.joint_velocity_limits; rate_limit bounds the links)");
+  b.atMost("max_torque_use", f.max_torque_use, 1 + kLimitTolerance,
+           "a joint torque passes the robot file's torque_limit");
   return b.take();
 }
 

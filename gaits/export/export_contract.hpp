@@ -5,8 +5,10 @@
 /// its collocation points only; the export reads the scheme's polynomials in between, where a
 /// force can dip, a tip can drift and an interpolant can disagree with its derivative
 /// (docs/optimal_gaits.md#between-the-points). The first three bounds are issue 34's on the
-/// 1 kHz export; the others are the contact conditions themselves (the robot's own mu, the
-/// foot's own length, the ground), without the design margins a config may add at its points.
+/// 1 kHz export; then the contact conditions themselves (the robot's own mu, the foot's own
+/// length, the ground), without the design margins a config may add at its points; and the
+/// robot file's joint velocity and torque limits, which an actuator cannot pass whatever a
+/// config bounds.
 #include <string>
 #include <vector>
 
@@ -18,6 +20,11 @@ namespace gaitopt::gaits {
 inline constexpr double kMaxDspTipDrift = 1e-6;           ///< [m]
 inline constexpr double kMaxRateMismatch = 2e-3;          ///< of the rates' peak
 inline constexpr double kMaxAccelerationMismatch = 1e-2;  ///< of the accelerations' peak
+/// How far a joint's rate or torque may pass the robot file's limit before it counts: 1 %. A
+/// bound the solver holds at its points is passed between them by the interpolant's curvature
+/// (the default problem with constraints.joint_velocity_limits: 0.09 %), which no actuator
+/// rating is exact to.
+inline constexpr double kLimitTolerance = 0.01;
 /// [m] how far below the ground the swing tip, or beyond the foot's ends its centre of
 /// pressure, may pass before it counts: a micrometre, the drift's bound.
 inline constexpr double kGroundTolerance = 1e-6;
@@ -44,6 +51,8 @@ struct ExportFigures {
   double max_friction_ratio = 0;         ///< maxFrictionRatio
   double min_foot_cop_margin = 0;        ///< [m] minFootCopMargin
   double min_swing_clearance = 0;        ///< [m] minSwingClearance
+  double max_joint_rate_use = 0;         ///< maxJointRateUse
+  double max_torque_use = 0;             ///< maxTorqueUse
 };
 
 ExportFigures exportFigures(const Trajectory& dense, const dynamics::Model& model);

@@ -242,6 +242,8 @@ nlohmann::ordered_json betweenNodeMetrics(const gaits::Trajectory& dense,
       {"max_dsp_tip_drift", f.max_dsp_tip_drift},
       {"max_rate_mismatch", f.max_rate_mismatch},
       {"max_acceleration_mismatch", f.max_acceleration_mismatch},
+      {"max_joint_rate_use", f.max_joint_rate_use},
+      {"max_torque_use", f.max_torque_use},
       // the summary's peak torques and posture at the solver's points, here the export's
       {"peak_torque",
        std::vector<double>(peak_torque.data(), peak_torque.data() + peak_torque.size())},

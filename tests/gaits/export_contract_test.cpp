@@ -46,6 +46,25 @@ TEST(ExportContract, AStandingRobotOnItsFootKeepsEveryBound) {
   EXPECT_TRUE(checks(standing(1000, {0, 300}), 1000).empty());
 }
 
+// The robot file's actuator limits (10 rad/s and 150 N m at each joint of this robot), passed
+// by more than kLimitTolerance: the default optimum's swing knee turned at 13.6 rad/s unseen.
+TEST(ExportContract, AJointFasterOrStrongerThanItsActuatorBreaksItsLimit) {
+  Trajectory traj = standing(200, {0, 300});  // 200 Hz: the derivative checks are not judged
+  std::vector<Knot> knots = traj.knots();
+  knots[3].dtheta(2) = -10.05;  // joint rates dq_2 = 10.05, dq_3 = -10.05: within 1 %
+  EXPECT_TRUE(checks(Trajectory("test", 0.35, knots), 200).empty());
+  knots[3].dtheta(2) = -10.5;
+  EXPECT_EQ(checks(Trajectory("test", 0.35, knots), 200),
+            std::vector<std::string>{"max_joint_rate_use"});
+  knots[3].dtheta(2) = 0;
+  knots[5].tau(3) = -157.5;  // the swing hip, 5 % over
+  EXPECT_EQ(checks(Trajectory("test", 0.35, knots), 200),
+            std::vector<std::string>{"max_torque_use"});
+  const dynamics::Model model = loadNamed("mu2004_five_link");
+  EXPECT_NEAR(gaits::exportFigures(Trajectory("test", 0.35, knots), model).max_torque_use, 1.05,
+              1e-12);
+}
+
 TEST(ExportContract, AForceOutsideTheRobotsConeIsASlipNotTheConfigsMargin) {
   const dynamics::Model model = loadNamed("mu2004_five_link");
   const double mu = model.friction();  // 0.6; a config's friction margin does not count here
