@@ -58,6 +58,41 @@ std::vector<double> configValues(const library::Grid& grid, const std::vector<st
   return values;
 }
 
+/// A torque a passive joint may carry before the blend counts as loading it: a millinewton
+/// metre, far above the inverse dynamics' rounding (1e-14 N m on the solved gaits) [N m].
+constexpr double kUnactuatedTorque = 1e-3;
+/// The five-link blends, whose steps end in the double support, close to 1e-11 [-].
+constexpr double kBlendPeriodicity = 1e-6;
+
+/// The largest torque the blend asks of a joint without an actuator [N m] (0 when all have one).
+double unactuatedTorque(const gaits::Trajectory& traj, const dynamics::Model& model) {
+  double largest = 0;
+  for (const gaits::Knot& k : traj.knots())
+    for (int j = 0; j < model.nLinks(); ++j)
+      if (!model.joints()[static_cast<std::size_t>(j)].actuated)
+        largest = std::max(largest, std::abs(k.tau(j)));
+  return largest;
+}
+
+/// A blend of corners that end their steps in an impact (a single-impact gait: the impact map is
+/// not linear in the state) neither closes on itself nor keeps a passive joint passive: the
+/// torques recomputed from the blended motion then load that joint (RABBIT's ankle, 3 N m).
+void warnOfABlendThatIsNoGait(const nlohmann::ordered_json& summary) {
+  const double torque = summary["unactuated_torque_Nm"].get<double>();
+  const double periodicity = summary["periodicity_error"].get<double>();
+  if (torque > kUnactuatedTorque)
+    fmt::print(stderr,
+               "interpolate: warning: the blend needs {:.3g} N m at a joint without an actuator: "
+               "it is no gait of this robot; solve the point instead\n",
+               torque);
+  if (periodicity > kBlendPeriodicity)
+    fmt::print(stderr,
+               "interpolate: warning: the blended step does not close on itself (periodicity "
+               "error {:.3g}): its corners end in an impact, which a blend does not keep; solve "
+               "the point instead\n",
+               periodicity);
+}
+
 void runInterpolate(InterpolateOptions o) {
   io::refuseInputs(o.output.out_dir, {o.library_dir}, "--out");  // before reading it
   const library::LibraryFolder lib = library::readLibraryFolder(o.library_dir);
@@ -77,6 +112,7 @@ void runInterpolate(InterpolateOptions o) {
   const gaits::Trajectory traj =
       library::interpolateGait(lib.grid, solved.lookup(), model, values, o.output.rate_hz);
   auto summary = gaits::gaitSummary(traj, model, {o.library_dir, "interpolated", 0, 0, 0});
+  summary["unactuated_torque_Nm"] = unactuatedTorque(traj, model);
   auto& corners = summary["library_corners"] = nlohmann::ordered_json::array();
   for (const auto& [p, w] : library::cellWeights(lib.grid, values))
     corners.push_back({{"point", lib.grid.point(p).name}, {"weight", w}});
@@ -89,6 +125,7 @@ void runInterpolate(InterpolateOptions o) {
       "{:.3g}; wrote {}/trajectory.csv\n",
       io::counted(corners.size(), "corner"), summary["max_defect"].get<double>(),
       summary["periodicity_error"].get<double>(), out.path());
+  warnOfABlendThatIsNoGait(summary);
 }
 
 }  // namespace

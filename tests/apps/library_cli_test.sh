@@ -113,7 +113,14 @@ w = sorted((c["point"], c["weight"]) for c in d["library_corners"])
 assert [p for p, _ in w] == ["v0.600_L0.500_s+0.000", "v0.700_L0.500_s+0.000"], w
 assert all(abs(x - 0.5) < 1e-12 for _, x in w), w
 assert abs(d["duration"] - 0.5 / 0.65) < 1e-9, d["duration"]
+# RABBIT's steps end in its single impact, which a blend does not keep: the torques recomputed
+# from the blended motion load its passive ankle, and the step does not close on itself.
+assert d["unactuated_torque_Nm"] > 1e-3 and d["periodicity_error"] > 1e-6, d
 PY
+grep -q "warning: the blend needs .* N m at a joint without an actuator" "$TMP/err" ||
+  fail "(a') no warning of the loaded passive ankle: $(cat "$TMP/err")"
+grep -q "warning: the blended step does not close on itself" "$TMP/err" ||
+  fail "(a') no warning of the open step: $(cat "$TMP/err")"
 run interpolate --library "$L" --speed 0.9 --step-length 0.5 --out "$TMP/far" --no-plots
 [[ $RC -eq 3 ]] || fail "(a') outside the grid exited $RC: $(cat "$TMP/err")"
 grep -q "speed 0.9 is outside the library's range \[0.6, 0.8\]" "$TMP/err" || fail "(a') $(cat "$TMP/err")"
