@@ -206,9 +206,11 @@ class DartPlant {
     return f;
   }
 
-  /// The swing ankle is a servo while its foot carries no load and it is actuated.
+  /// The swing ankle is a servo while its foot carries no load and it is actuated; a point
+  /// foot's ankles are locked (actuateAnkles), and a servo command to one warns every time step.
   bool swingServo() const {
-    return plant_.joints()[0].actuated && forces_[static_cast<size_t>(1 - side_)].y() <= 0;
+    return plant_.joints()[0].actuated && !pointFeet(plant_) &&
+           forces_[static_cast<size_t>(1 - side_)].y() <= 0;
   }
 
   /// The stance ankle takes the controller's torque; the swing ankle is a velocity servo or, on a
