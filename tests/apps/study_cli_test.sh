@@ -90,6 +90,14 @@ run study --config "$TMP/study.yaml" --out "$TMP/s" --set 'walks[0].plant.values
 grep -q "set" "$TMP/err" || fail "(b) the difference not named: $(cat "$TMP/err")"
 cmp -s "$TMP/s/solves.csv" "$TMP/solves_before.csv" || fail "(b) a refused rerun wrote solves.csv"
 
+# A file the rows were made from, edited since, is named in the refusal (the record holds the
+# files' fingerprints only, which the message once listed instead).
+cp "$TMP/study.yaml" "$TMP/study.yaml.orig" && echo "# edited" >>"$TMP/study.yaml"
+run study --config "$TMP/study.yaml" --out "$TMP/s"
+[[ $RC -eq 2 ]] && grep -q "study.yaml has changed since the folder's rows were made" "$TMP/err" ||
+  fail "(b) an edited input not named, exit $RC: $(cat "$TMP/err")"
+mv "$TMP/study.yaml.orig" "$TMP/study.yaml"
+
 # (c) Two runs at once give the same tables in the same order (times aside).
 run study --config "$TMP/study.yaml" --out "$TMP/s2" --jobs 2 --quiet
 [[ $RC -eq 0 ]] || fail "(c) --jobs 2 exited $RC: $(cat "$TMP/err")"
