@@ -11,6 +11,7 @@
 #include "config/config_error.hpp"
 #include "gaits/export/gait_summary.hpp"
 #include "gaits/trajectory/trajectory_csv.hpp"
+#include "io/data_dir.hpp"
 #include "io/settings_record.hpp"
 #include "io/strict_json.hpp"
 
@@ -88,6 +89,20 @@ void refuseChangedInputs(const std::string& library_file, const nlohmann::ordere
                                             file));
 }
 
+/// The base OCP file: relative to the library folder as recorded (the folder and the configs
+/// moved together), else the shipped file of that name when its contents are the ones the
+/// library recorded (a copy of a shipped library, e.g. results/library_mu2004, elsewhere).
+std::string ocpOfFolder(const std::string& dir, const nlohmann::ordered_json& claim) {
+  const std::filesystem::path recorded =
+      std::filesystem::path(dir) / claim["ocp"].get<std::string>();
+  if (std::filesystem::exists(recorded) || !claim.contains("ocp_config_fnv1a"))
+    return recorded.string();
+  const std::string shipped = io::localOrShipped("configs/ocp/" + recorded.filename().string());
+  return !shipped.empty() && io::fileFingerprint(shipped) == claim["ocp_config_fnv1a"]
+             ? shipped
+             : recorded.string();
+}
+
 }  // namespace
 
 GaitLookup FolderGaits::lookup() {
@@ -145,9 +160,9 @@ LibraryFolder readLibraryFolder(const std::string& dir) {
   // The OCP path is relative to the library folder (claimLibraryFolder).
   if (!j.at("ocp").is_string())
     throw config::ConfigError(path, "ocp", 0, "expected the base OCP file's path");
-  const auto ocp_path = std::filesystem::path(dir) / j.at("ocp").get<std::string>();
-  LibraryFolder folder{Grid(walk, std::move(config)), ocp::loadOcpConfig(ocp_path.string())};
-  refuseChangedInputs(path, j, ocp_path.string(), folder.base);
+  const std::string ocp_path = ocpOfFolder(dir, j);
+  LibraryFolder folder{Grid(walk, std::move(config)), ocp::loadOcpConfig(ocp_path)};
+  refuseChangedInputs(path, j, ocp_path, folder.base);
   return folder;
 }
 

@@ -162,6 +162,17 @@ run interpolate --library "$TMP/edited" --speed 0.65 --step-length 0.5 --out "$T
 [[ $RC -eq 2 ]] && grep -q "library.json: key 'axes.speed': expected an increasing list" "$TMP/err" ||
   fail "(a') an edited library.json exited $RC: $(cat "$TMP/err")"
 
+# A copy of a shipped library elsewhere finds its base problem among the shipped configs, by
+# the contents library.json recorded (its path relative to the folder no longer leads there).
+printf 'name: shipped\nocp: %s\ngrid:\n  speed: [0.6, 0.7]\n' "$ROOT/configs/ocp/rabbit_kelly2017.yaml" \
+  >"$TMP/shipped.yaml"
+run library --config "$TMP/shipped.yaml" --out "$TMP/shipped" --jobs 1 --quiet
+[[ $RC -eq 0 ]] || fail "(a') the shipped problem's library exited $RC: $(cat "$TMP/err")"
+mkdir -p "$TMP/far/away" && cp -r "$TMP/shipped" "$TMP/far/away/"
+run interpolate --library "$TMP/far/away/shipped" --speed 0.65 --step-length 0.5 \
+  --out "$TMP/far_mid" --no-plots
+[[ $RC -eq 0 ]] || fail "(a') a moved library of a shipped problem exited $RC: $(cat "$TMP/err")"
+
 # (b) a rerun has nothing to do and leaves index.csv as it was.
 run library --config "$TMP/tiny.yaml" --out "$L" --jobs 2
 [[ $RC -eq 0 ]] || fail "(b) exited $RC: $(cat "$TMP/err")"
