@@ -1,8 +1,9 @@
 #pragma once
 /// @file library_index.hpp
-/// The index of a gait library: index.csv in the library folder, one row per finished point
-/// (a io::RowLog, row_log.hpp: a rerun skips what is done), and index.json written from it at the
-/// end of every run.
+/// The index of a gait library: index.csv in the library folder, one row per finished solve of a
+/// point, appended as it ends (a io::RowLog, row_log.hpp: a rerun skips what is done), so a point
+/// retried (its second chance, --retry-failed, a worker that died) has several rows and its last
+/// one is its outcome; index.json, written from it at the end of every run, keeps that one.
 #include <optional>
 #include <string>
 #include <vector>
