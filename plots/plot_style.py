@@ -92,6 +92,23 @@ def finish(ax, xlabel, ylabel, title=None, legend=True, **legend_kw):
         ax.legend(**legend_kw)
 
 
+def remove_leftovers(folder, name):
+    """Removes NAME.tmp-PID-* files of processes that no longer run: a run killed while it drew
+    left them in a folder its rerun writes into again (a library's picture)."""
+    prefix = name + ".tmp-"
+    for entry in os.listdir(folder):
+        pid = entry[len(prefix):].split("-", 1)[0] if entry.startswith(prefix) else ""
+        if not pid.isdigit():
+            continue
+        try:
+            os.kill(int(pid), 0)
+        except (ProcessLookupError, OverflowError):  # gone, or no pid a process can have
+            with contextlib.suppress(OSError):
+                os.unlink(os.path.join(folder, entry))
+        except PermissionError:
+            pass  # alive, another user's
+
+
 @contextlib.contextmanager
 def replacing(path):
     """Yields a new file's path next to `path` and renames it over `path` when the block ends.
@@ -100,9 +117,10 @@ def replacing(path):
     name is never written through: the rename replaces the link itself. Pictures of resumable
     folders (stability, library) are rewritten in place, where this matters."""
     folder, name = os.path.split(os.fspath(path))
+    remove_leftovers(folder or ".", name)
     # The same extension: writers that pick the format by it (Pillow's GIF) still can.
-    fd, tmp = tempfile.mkstemp(prefix=name + ".tmp-", suffix=os.path.splitext(name)[1],
-                               dir=folder or ".")
+    fd, tmp = tempfile.mkstemp(prefix=f"{name}.tmp-{os.getpid()}-",
+                               suffix=os.path.splitext(name)[1], dir=folder or ".")
     os.close(fd)
     try:
         os.chmod(tmp, 0o644)

@@ -137,6 +137,23 @@ done
 [[ $(wc -l <"$TMP/out") -eq 6 ]] || fail "(a) expected 6 lines: $(cat "$TMP/out")"
 [[ ! -s "$TMP/err" ]] || fail "(a) stderr: $(cat "$TMP/err")"
 
+# A picture's temporary file left by a run killed while it drew is removed by the next write of
+# that picture, and one of a running process is not.
+mkdir -p "$TMP/leftovers"
+(cd "$PLOTS" && "$PY" - "$TMP/leftovers" <<'PY') || fail "leftover temporary pictures"
+import os, sys
+import plot_style
+folder = sys.argv[1]
+dead = os.path.join(folder, "x.png.tmp-4194305-abc.png")  # above Linux's largest pid
+alive = os.path.join(folder, f"x.png.tmp-{os.getppid()}-def.png")
+for f in (dead, alive):
+    open(f, "w").close()
+with plot_style.replacing(os.path.join(folder, "x.png")) as tmp:
+    open(tmp, "w").write("picture")
+assert not os.path.exists(dead) and os.path.exists(alive), os.listdir(folder)
+assert open(os.path.join(folder, "x.png")).read() == "picture"
+PY
+
 # (a') the stick diagram stands each step's stance tip on the foot of the walk's summary.
 cp -r "$TMP/walk" "$TMP/footed_walk"
 (cd "$PLOTS" && "$PY" - "$TMP/footed_walk" <<'PY') || fail "(a') feet of the stick diagram"
