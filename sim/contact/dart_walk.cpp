@@ -252,8 +252,12 @@ class DartPlant {
           c.collisionObject2->getShapeFrame()->asShapeNode()->getBodyNodePtr().get();
       for (int k = 0; k < 2; ++k) {
         const auto* foot = feet_[static_cast<size_t>(k)];
-        // Contact::force acts on body 1 (DART's Contact.hpp), -force on body 2.
-        const double sign = body1 == foot ? 1.0 : body2 == foot ? -1.0 : 0.0;
+        // Contact::force acts on body 1 (DART's Contact.hpp), -force on body 2. Only the floor's:
+        // a foot that touches the other foot or a shank (legs passing at mid-swing) carries a
+        // force of the robot on itself, which is no ground reaction (it read 8 kN, 9 times mu).
+        const auto* other = body1 == foot ? body2 : body2 == foot ? body1 : nullptr;
+        if (other == nullptr || other->getSkeleton() == robot_) continue;
+        const double sign = body1 == foot ? 1.0 : -1.0;
         out[static_cast<size_t>(k)] += sign * Vec2d(c.force.x(), c.force.z());
       }
     }
