@@ -21,6 +21,7 @@
 #include "io/settings_record.hpp"
 #include "library/library_folder.hpp"
 #include "library/library_run.hpp"
+#include "ocp/problem/ocp_config.hpp"
 #include "parallel/mpi_executor.hpp"
 #include "parallel/parallel_for.hpp"
 #include "parallel/process_executor.hpp"
@@ -103,6 +104,10 @@ void runLibrary(const LibraryOptions& o) {
   const auto& axes = grid.axes();
   gaits::requireExportRate(axes[library::kStepLength].front() / axes[library::kSpeed].back(),
                            o.rate_hz);
+  // So is the longest step against the legs (exit 3, as optimize), before any point is solved.
+  ocp::OcpConfig longest = config.base;
+  longest.step_length = axes[library::kStepLength].back();
+  ocp::requireReachable(ocp::problemModel(longest), longest, o.config_path);
   const library::LibrarySetup setup{
       std::move(config),
       std::move(grid),

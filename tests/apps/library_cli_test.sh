@@ -263,6 +263,12 @@ run library --config "$TMP/missing.yaml" --out "$TMP/bad"
 run library --config "$TMP/tiny.yaml" --out "$TMP/bad" --rate 5
 [[ $RC -eq 2 ]] && grep -q "5 Hz samples the 0.625 s step 4 time(s), fewer than the 10" "$TMP/err" ||
   fail "(g) rate: $(cat "$TMP/err")"
+# A step beyond the legs' reach anywhere in the grid is refused before any solve (exit 3, as
+# optimize), where each such point was an error row and the run exited 1.
+printf 'name: far\nocp: rabbit8.yaml\ngrid:\n  speed: [0.6]\n  step_length: [0.5, 3.0]\n' >"$TMP/bad.yaml"
+run library --config "$TMP/bad.yaml" --out "$TMP/bad"
+[[ $RC -eq 3 ]] && grep -q "key 'step_length': 3 m is out of reach" "$TMP/err" ||
+  fail "(g) reach: exit $RC: $(cat "$TMP/err")"
 # One key dotted and nested: solved twice under the second's values, plotted and read wrongly.
 printf 'name: bad\nocp: rabbit8.yaml\ngrid:\n  speed: [0.7]\n  constraints.rate_limit: [8, 10]\n  constraints: {rate_limit: [6, 12]}\n' >"$TMP/bad.yaml"
 run library --config "$TMP/bad.yaml" --out "$TMP/bad"
