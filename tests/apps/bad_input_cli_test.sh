@@ -140,6 +140,11 @@ expect "push after the walk's end" 2 "--push: the push comes in step 2 \(from mi
 run stability --reference "$TMP/ref" --out "$TMP/out_dir" --steps 1 --sweep push=-1:1:3 --no-plots --quiet
 expect "swept push after the walk's end" 2 "--sweep: key 'push': the push comes in step 2"
 
+# A walk whose rows would not fit in memory is refused before it is walked (2000 steps on the
+# LCP ground died in bad_alloc after the whole computation).
+run simulate --reference "$TMP/ref" --out "$TMP/out_dir" --ground lcp --steps 5000 --no-plots --quiet
+expect "walk beyond the memory budget" 2 "--steps: 5000 steps of 0.7 s at 1000 rows per second keep about 5.25 GB"
+
 # Options of the rigid ground's impacts on a ground with its own contact law: once recorded in
 # summary.json and walked without.
 run simulate --reference "$TMP/ref" --out "$TMP/out_dir" --ground lcp --restitution 0.3 --no-plots --quiet
