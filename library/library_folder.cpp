@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "config/config_error.hpp"
+#include "gaits/export/gait_folder_checks.hpp"
 #include "gaits/export/gait_summary.hpp"
 #include "gaits/trajectory/trajectory_csv.hpp"
 #include "io/data_dir.hpp"
@@ -41,8 +42,8 @@ nlohmann::ordered_json lastRun(const std::string& path, const RunStats& s) {
           {"points_per_second", s.wall_time_s > 0 ? s.points / s.wall_time_s : 0.0}};
 }
 
-/// A point's gait is what the grid says it is: its summary.json present, converged, of this
-/// robot and slope, its trajectory of the point's step length and step time. A folder copied
+/// A point's gait is what the grid says it is: a gait of this robot (gaits::requireGaitOf) with
+/// its summary.json present, of the point's slope, step length and step time. A folder copied
 /// over another point's, another robot's point or a lost summary otherwise blended in unseen.
 void checkPointGait(const std::string& point_dir, const gaits::Trajectory& traj,
                     const GridPoint& point, const dynamics::Model& model) {
@@ -55,20 +56,17 @@ void checkPointGait(const std::string& point_dir, const gaits::Trajectory& traj,
   };
   if (!std::filesystem::is_regular_file(summary))
     refuse(summary, "missing beside its trajectory.csv");
-  const auto json = io::readStrictJson(summary);
-  if (!json.is_object() || json.value("converged", true) != true ||
-      json.value("robot", model.name()) != model.name())
-    refuse(summary, fmt::format("not a converged gait of robot '{}'", model.name()));
+  gaits::requireGaitOf(point_dir, model);
+  const double slope_rad = io::readStrictJson(summary).value("slope_rad", 0.0);
   const auto [speed, length, slope] = point.walk();
   const double step_time = length / speed;
   if (std::abs(traj.stepLength() - length) > 1e-9 * length ||
       std::abs(traj.duration() - step_time) > 1e-6 * step_time ||
-      std::abs(json.value("slope_rad", 0.0) - slope) > 1e-9)
+      std::abs(slope_rad - slope) > 1e-9)
     refuse(point_dir + "/trajectory.csv",
            fmt::format("a step of {:g} m in {:g} s on slope {:g}, not the point's {:g} m in {:g} "
                        "s on {:g}",
-                       traj.stepLength(), traj.duration(), json.value("slope_rad", 0.0), length,
-                       step_time, slope));
+                       traj.stepLength(), traj.duration(), slope_rad, length, step_time, slope));
 }
 
 /// The files the points were solved from, as they are now against the fingerprints the library

@@ -11,6 +11,7 @@
 #include "config/quantities.hpp"
 #include "dynamics/model_variation.hpp"
 #include "gaits/export/gait_export.hpp"
+#include "gaits/export/gait_folder_checks.hpp"
 #include "gaits/export/gait_summary.hpp"
 #include "gaits/polynomial/gait_params.hpp"
 #include "gaits/polynomial/hip_plan_search.hpp"
@@ -19,7 +20,6 @@
 #include "io/data_dir.hpp"
 #include "io/output/output_folder.hpp"
 #include "python/bindings.hpp"
-#include "sim/scenario/reference_folder.hpp"
 
 namespace py = pybind11;
 
@@ -75,7 +75,7 @@ size_t writeFolder(const Trajectory& traj, const dynamics::Model& robot,
 /// alone checks only the number of links.
 Trajectory readFolderTrajectory(const std::filesystem::path& path, const dynamics::Model& robot) {
   const std::filesystem::path dir = path.parent_path();
-  sim::requireDesignedFor(dir.empty() ? "." : dir.string(), robot);
+  gaits::requireDesignedFor(dir.empty() ? "." : dir.string(), robot);
   return gaits::readTrajectoryCsv(path.string(), robot);
 }
 

@@ -8,13 +8,13 @@
 #include "apps/command_runner.hpp"
 #include "apps/shipped_file.hpp"
 #include "config/config_error.hpp"
+#include "gaits/export/gait_folder_checks.hpp"
 #include "gaits/trajectory/trajectory_csv.hpp"
 #include "io/output/output_folder.hpp"
 #include "ocp/guess/initial_guess.hpp"
 #include "ocp/solve/gait_solve.hpp"
 #include "ocp/solve/solution_report.hpp"
 #include "report/plot_script.hpp"
-#include "sim/scenario/reference_folder.hpp"
 
 namespace gaitopt::apps {
 namespace {
@@ -23,7 +23,7 @@ namespace {
 gaits::Trajectory initialGuess(const dynamics::Model& model, const ocp::OcpConfig& config,
                                const std::string& path, const std::string& warm_start) {
   if (!warm_start.empty()) {
-    sim::requireGaitOf(warm_start, model);
+    gaits::requireGaitOf(warm_start, model);
     return gaits::readTrajectoryCsv(warm_start + "/trajectory.csv", model);
   }
   try {

@@ -26,15 +26,6 @@ struct ReferenceFolder {
 ///         file exists.
 std::string robotOfFolder(const std::string& dir);
 
-/// @throws config::ConfigError unless the result folder `dir` holds a usable gait of `model`:
-/// no FAILED.txt, not "converged": false, and summary.json's robot (when recorded) is model's.
-void requireGaitOf(const std::string& dir, const dynamics::Model& model);
-
-/// requireGaitOf, and the robot the gait was designed on weighs what `model` does (summary.json's
-/// total_mass, when recorded): a gait to walk or to read, where a warm start may come from
-/// another robot of that name on purpose.
-void requireDesignedFor(const std::string& dir, const dynamics::Model& model);
-
 /// Reads DIR/trajectory.csv (with the switch states of DIR/summary.json put back, so the step's
 /// SSP ends at the touchdown in the pre-impact state and its DSP ends at the period:
 /// gaits/trajectory/trajectory_csv.hpp) for the robot `robot_path`, or, when that is empty, for
