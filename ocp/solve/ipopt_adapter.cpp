@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstring>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -14,6 +15,7 @@
 #include <IpTNLP.hpp>
 
 #include "ocp/solve/kkt/kkt_statistics.hpp"
+#include "ocp/solve/kkt/mumps_factor.hpp"
 #include "ocp/solve/kkt/pardiso_interface.hpp"
 
 namespace gaitopt::ocp {
@@ -329,6 +331,10 @@ void checkStart(const Nlp& nlp, const WarmStart& start) {
 SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options, const WarmStart* warm) {
   const auto start = Clock::now();
   SolveResult result;
+  // Ipopt's MUMPS instance lives as long as the application: the lock is taken before it and
+  // released after it (kkt::mumpsMutex).
+  std::unique_lock<std::mutex> mumps_lock;
+  if (options.linear_solver == "mumps") mumps_lock = std::unique_lock(kkt::mumpsMutex());
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
   app->Options()->SetNumericValue("tol", options.tolerance);
   app->Options()->SetNumericValue("constr_viol_tol", options.constraint_tolerance);

@@ -31,6 +31,7 @@ void check(const DMUMPS_STRUC_C& data) {
 
 void call(DMUMPS_STRUC_C& data, int job) {
   data.job = job;
+  const std::scoped_lock lock(mumpsMutex());
   dmumps_c(&data);
   check(data);
 }
@@ -48,6 +49,11 @@ void setLikeIpopt(DMUMPS_STRUC_C& data) {
 }
 
 }  // namespace
+
+std::mutex& mumpsMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
 
 MumpsFactor::MumpsFactor(const SymmetricPattern& pattern) : mumps_(std::make_unique<Handle>()) {
   for (int column = 0; column < pattern.n; ++column)
@@ -69,6 +75,7 @@ MumpsFactor::MumpsFactor(const SymmetricPattern& pattern) : mumps_(std::make_uni
 
 MumpsFactor::~MumpsFactor() {
   mumps_->data.job = kTerminate;
+  const std::scoped_lock lock(mumpsMutex());
   dmumps_c(&mumps_->data);
 }
 
@@ -77,6 +84,7 @@ void MumpsFactor::factorize(const double* values) {
   data.a = const_cast<double*>(values);  // MUMPS reads A through a non-const pointer
   if (!analysed_) call(data, kAnalyse);
   analysed_ = true;
+  const std::scoped_lock lock(mumpsMutex());
   // Short of working memory (INFO(1) -8 or -9), MUMPS is given twice as much, as Ipopt does.
   for (int attempt = 0; attempt < kMemoryAttempts; ++attempt) {
     data.job = kFactorize;

@@ -7,6 +7,7 @@
 /// ICNTL(13) = 1 for an exact inertia), so a fallback factorization is the one
 /// `linear_solver: mumps` would have made.
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <vector>
 
@@ -18,6 +19,12 @@ namespace gaitopt::ocp::kkt {
 struct SingularMatrix : std::runtime_error {
   SingularMatrix() : std::runtime_error("singular matrix") {}
 };
+
+/// Debian's sequential MUMPS keeps state shared by all its instances: one call at a time in the
+/// process. Every call here holds this lock, and a solve through Ipopt's own MUMPS interface
+/// (`linear_solver: mumps`) holds it for the whole solve (ipopt_adapter.cpp), so threads of one
+/// process (Python's) may solve side by side.
+std::mutex& mumpsMutex();
 
 class MumpsFactor {
  public:
