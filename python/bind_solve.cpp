@@ -1,6 +1,6 @@
 /// @file bind_solve.cpp
 /// gaitopt.optimize: an OCP config (configs/ocp/) solved as `gaitopt optimize` solves it, from the
-/// config's polynomial gait; the solution as a dict with the trajectory.
+/// config's initial guess; the solution as a dict with the trajectory.
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
@@ -40,7 +40,7 @@ py::dict optimize(const std::filesystem::path& config_file, double rate_hz,
   config.solver.progress = false;
   const ocp::GaitSolution solution = [&] {
     py::gil_scoped_release release;  // Ipopt runs without the interpreter
-    return ocp::solveGait(model, config, ocp::polynomialGuess(model, config));
+    return ocp::solveGait(model, config, ocp::initialGuess(model, config));
   }();
   const ocp::SolveResult& r = solution.result;
   if (!r.success)

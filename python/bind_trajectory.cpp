@@ -4,6 +4,7 @@
 /// write_trajectory).
 #include <filesystem>
 
+#include <fmt/format.h>
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
@@ -62,6 +63,7 @@ Trajectory designPoly(const dynamics::Model& robot, const std::filesystem::path&
 size_t writeFolder(const Trajectory& traj, const dynamics::Model& robot,
                    const std::filesystem::path& dir, double rate_hz) {
   config::requireInRange(config::kSampleRate, rate_hz, "rate_hz");
+  requireTrajectoryOf(traj, robot);
   size_t samples = 0;
   io::OutputFolder(dir.string(), {}, "dir").write([&](const std::string& staging) {
     samples = gaits::writeGaitExport(staging, traj, robot, rate_hz,
@@ -80,6 +82,14 @@ Trajectory readFolderTrajectory(const std::filesystem::path& path, const dynamic
 }
 
 }  // namespace
+
+void requireTrajectoryOf(const gaits::Trajectory& traj, const dynamics::Model& robot) {
+  if (traj.robot() != robot.name())
+    throw std::invalid_argument(
+        fmt::format("the trajectory is a gait of robot '{}', not of "
+                    "robot '{}' given with it",
+                    traj.robot(), robot.name()));
+}
 
 void bindTrajectory(py::module_& m) {
   py::class_<Trajectory> c(m, "Trajectory",

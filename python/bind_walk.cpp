@@ -3,6 +3,8 @@
 /// logged sample as numpy arrays and one entry per step; gaitopt.controllers and gaitopt.grounds:
 /// the names it accepts, from the registries (sim/controllers/controller_registry.hpp,
 /// sim/walk/ground_registry.hpp).
+#include <limits>
+
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
@@ -13,6 +15,7 @@
 #include "sim/contact/ground_config.hpp"
 #include "sim/scenario/scenario.hpp"
 #include "sim/scenario/scenario_settings.hpp"
+#include "sim/scenario/walk_memory.hpp"
 #include "sim/walk/ground_registry.hpp"
 
 namespace py = pybind11;
@@ -76,6 +79,10 @@ py::dict simulate(const dynamics::Model& robot, const gaits::Trajectory& referen
   scenario.controller = controller;
   scenario.ground = sim::loadGround(sim::groundPath(ground));
   scenario.gain_scale = config::requireInRange(config::kGainScale, gain_scale, "gain_scale");
+  requireTrajectoryOf(reference, robot);
+  // Every sample is kept, at the ground's own step.
+  sim::requireWalkFits(scenario, reference.endTime(), std::numeric_limits<double>::infinity(),
+                       "steps");
   std::vector<sim::WalkSample> samples;
   const sim::ScenarioResult result = [&] {
     py::gil_scoped_release release;

@@ -6,7 +6,18 @@
 
 #include <pybind11/pybind11.h>
 
+namespace gaitopt::dynamics {
+class Model;
+}
+namespace gaitopt::gaits {
+class Trajectory;
+}
+
 namespace gaitopt::python {
+
+/// @throws std::invalid_argument (InputError) when `traj` is not a gait of `robot` (by name): its
+/// motion with another robot's masses would be written or walked as this one's, unseen.
+void requireTrajectoryOf(const gaits::Trajectory& traj, const dynamics::Model& robot);
 
 /// A solve that did not succeed: InfeasibleError (exit code 3) or NotConvergedError (4).
 struct SolveFailed : std::runtime_error {

@@ -13,40 +13,13 @@
 #include "io/terminal_text.hpp"
 #include "report/plot_script.hpp"
 #include "sim/scenario/reference_folder.hpp"
+#include "sim/scenario/walk_memory.hpp"
 #include "sim/scenario/walk_summary.hpp"
 #include "sim/walk/ground_registry.hpp"
 #include "sim/walk/walk_record.hpp"
 
 namespace gaitopt::apps {
 namespace {
-
-/// walk.csv's rows stay in memory until the walk ends: about this much each, the sample and its
-/// CSV text (measured: 200 steps on the LCP ground, 1 kHz, 192 MB) [B].
-constexpr double kBytesPerRow = 1500;
-/// What a walk may keep [B]: beyond it a long walk died in bad_alloc after the whole computation.
-constexpr double kWalkMemoryBudget = 4e9;
-
-/// The ground's time step, the finest rows walk.csv can have [s].
-double groundStep(const sim::GroundModel& g) {
-  if (const auto* rigid = g.getIf<sim::RigidGround>()) return rigid->integrator.step;
-  if (const auto* compliant = g.getIf<sim::CompliantGround>()) return compliant->time_step;
-  if (const auto* lcp = g.getIf<sim::LcpGround>()) return lcp->time_step;
-  if (const auto* dart = g.getIf<sim::DartGround>()) return dart->time_step;
-  return 1e-4;  // another ground's: assume a fine one
-}
-
-/// Refuses a walk whose rows would not fit kWalkMemoryBudget, before it is walked.
-void requireWalkFits(const sim::Scenario& s, double step_time, double rate_hz) {
-  const double per_second = std::min(rate_hz, 1 / groundStep(s.ground));
-  const double bytes = s.steps * step_time * per_second * kBytesPerRow;
-  if (bytes <= kWalkMemoryBudget) return;
-  throw config::ConfigError(
-      "--steps", "", 0,
-      fmt::format("{} steps of {:.3g} s at {:g} rows per second keep about {:.3g} GB of walk.csv "
-                  "in memory, more than the {:g} GB a walk may take: walk fewer steps or give a "
-                  "lower --rate",
-                  s.steps, step_time, per_second, bytes / 1e9, kWalkMemoryBudget / 1e9));
-}
 
 constexpr double kStickFrameInterval = 0.05;  // [s]
 
@@ -85,7 +58,7 @@ void runSimulate(const SimulateOptions& o) {
                ref.dir, scenario.controller, sim::groundName(scenario.ground));
   const sim::Reference reference(ref.step, ref.model);
   checkControllerFitsReference(ref, reference, scenario);
-  requireWalkFits(scenario, reference.endTime(), o.output.rate_hz);
+  sim::requireWalkFits(scenario, reference.endTime(), o.output.rate_hz, "--steps");
   sim::WalkRecorder recorder(plant, o.output.rate_hz);
   const sim::ScenarioResult r = sim::runScenario(ref.model, reference, scenario, recorder.log());
   recorder.finish();

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <fmt/format.h>
 #include <Eigen/Dense>
 
 #include "dynamics/kinematics.hpp"
@@ -107,8 +108,11 @@ Fade fadeAt(double s) {
 
 Reference::Reference(const gaits::Trajectory& step, ReferenceOptions options) : options_(options) {
   checkOptions(options);
-  if (step.knots().empty() || step.knots().front().phase != gaits::Phase::kSsp)
-    throw std::invalid_argument("a reference step starts with single support");
+  if (step.knots().size() < 2 || step.knots().front().phase != gaits::Phase::kSsp)
+    throw std::invalid_argument(
+        fmt::format("a reference step starts with single support and has at least 2 samples "
+                    "(this one: {})",
+                    step.knots().size()));
   ssp_ = phasePart(step, gaits::Phase::kSsp);
   ssp_end_ = ssp_.endTime();
   end_ = step.endTime();

@@ -16,14 +16,17 @@ namespace gaitopt::sim {
 const std::vector<GroundEntry>& grounds() {
   static const std::vector<GroundEntry> entries{
       makeGroundEntry("rigid", "impact maps and located events (Mu 2.23-2.37)", readRigidGround,
-                      walkRigid),
+                      walkRigid, [](const RigidGround& g) { return g.integrator.step; }),
       makeGroundEntry("impedance", "compliant Hunt-Crossley contact, fixed-step RK4",
-                      readImpedanceGround, walkCompliant),
-      makeGroundEntry("pad", "Addi & Rodic's stiffening pad, damped while compressed, fixed-step RK4",
-                      readImpedanceGround, walkCompliant),
+                      readImpedanceGround, walkCompliant,
+                      [](const CompliantGround& g) { return g.time_step; }),
+      makeGroundEntry(
+          "pad", "Addi & Rodic's stiffening pad, damped while compressed, fixed-step RK4",
+          readImpedanceGround, walkCompliant, [](const CompliantGround& g) { return g.time_step; }),
       makeGroundEntry("lcp", "time stepping, one Lemke LCP per step (Stewart & Trinkle 1996)",
-                      readLcpGround, walkLcp),
-      makeGroundEntry("dart", "the DART physics engine, feet as bodies", readDartGround, walkDart),
+                      readLcpGround, walkLcp, [](const LcpGround& g) { return g.time_step; }),
+      makeGroundEntry("dart", "the DART physics engine, feet as bodies", readDartGround, walkDart,
+                      [](const DartGround& g) { return g.time_step; }),
   };
   return entries;
 }

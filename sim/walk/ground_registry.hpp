@@ -7,6 +7,7 @@
 /// module (python/bind_walk.cpp) take the names from here.
 #include <functional>
 #include <string>
+#include <type_traits>
 #include <typeindex>
 #include <vector>
 
@@ -38,6 +39,8 @@ struct GroundEntry {
   std::function<GroundModel(const config::YamlReader& file)> read;
   /// Its walk; `ground` holds settings of the entry's type.
   std::function<WalkResult(const GroundModel& ground, const WalkArguments& args)> walk;
+  /// Its time step, the finest a walk's logged rows can be [s].
+  std::function<double(const GroundModel& ground)> time_step;
 };
 
 /// The walk on a ground whose settings are a G, as walkLcp (sim/contact/lcp_walk.hpp).
@@ -46,16 +49,21 @@ using GroundWalk = WalkResult (*)(const dynamics::Model&, const Controller&, con
                                   const G&, const WalkPlan&, const WalkLog&, const VecD&,
                                   const VecD&);
 
-/// The entry of a ground with settings G, read from its file by `read` and walked by `walk`.
+/// The entry of a ground with settings G, read from its file by `read`, walked by `walk` in steps
+/// of `time_step`.
 template <class G>
 GroundEntry makeGroundEntry(std::string name, std::string description,
-                            G (*read)(const config::YamlReader&), GroundWalk<G> walk) {
-  return {std::move(name), std::move(description), typeid(G),
+                            G (*read)(const config::YamlReader&), GroundWalk<G> walk,
+                            std::type_identity_t<double (*)(const G&)> time_step) {
+  return {std::move(name),
+          std::move(description),
+          typeid(G),
           [read](const config::YamlReader& file) -> GroundModel { return read(file); },
           [walk](const GroundModel& ground, const WalkArguments& a) {
             return walk(a.plant, a.controller, a.ref, *ground.getIf<G>(), a.plan, a.log, a.theta0,
                         a.dtheta0);
-          }};
+          },
+          [time_step](const GroundModel& ground) { return time_step(*ground.getIf<G>()); }};
 }
 
 /// The ground `gaitopt simulate` and the Python module walk on unless told otherwise.

@@ -172,3 +172,60 @@ def test_paths_may_be_pathlib_paths(robot, poly_gait, tmp_path):
     np.testing.assert_array_equal(back.theta, gait.resample(100).theta)
     assert gaitopt.optimize(ROOT / "configs/ocp/rabbit_kelly2017.yaml", rate_hz=200)["cost"] == \
         pytest.approx(390.79, abs=0.01)
+
+
+def test_optimize_starts_where_the_cli_starts(cli, tmp_path):
+    # A straight-leg config has no polynomial gait: it starts from its straight-leg guess, as
+    # the CLI does (it was refused, naming an empty file).
+    config = str(ROOT / "configs/ocp/three_link_walk.yaml")
+    py = gaitopt.optimize(config, rate_hz=200)
+    subprocess.run([cli, "optimize", "--config", config, "--out", str(tmp_path / "t"), "--quiet",
+                    "--no-plots"], check=True, cwd=ROOT, capture_output=True)
+    summary = json.loads((tmp_path / "t" / "summary.json").read_text())
+    assert py["cost"] == pytest.approx(summary["cost"], rel=1e-9)
+    assert py["iterations"] == summary["iterations"]
+
+
+def test_threads_solve_side_by_side_through_mumps():
+    # Debian's MUMPS keeps state shared by its instances: two threads solving through it at once
+    # crashed the interpreter (a segfault, or MUMPS's own abort).
+    from concurrent.futures import ThreadPoolExecutor
+    config = str(ROOT / "configs/ocp/mu2004_walk.yaml")
+    solve = lambda _: gaitopt.optimize(config, rate_hz=100, set=["solver.linear_solver=mumps"])
+    alone = solve(None)["cost"]
+    with ThreadPoolExecutor(2) as pool:
+        costs = [r["cost"] for r in pool.map(solve, range(4))]
+    assert costs == [alone] * 4
+
+
+def test_a_gait_is_written_and_walked_only_with_its_robot(poly_gait, tmp_path):
+    # RABBIT has five links as the five-link robot has: only the name tells the gaits apart, and
+    # the written summary would call the five-link gait RABBIT's.
+    rabbit = gaitopt.Robot(str(ROOT / "configs/robots/rabbit.yaml"))
+    with pytest.raises(gaitopt.InputError, match="a gait of robot 'mu2004_five_link', not of "
+                                                 "robot 'rabbit'"):
+        gaitopt.write_trajectory(poly_gait, rabbit, str(tmp_path / "g"), rate_hz=100)
+    assert not (tmp_path / "g").exists()
+    with pytest.raises(gaitopt.InputError, match="a gait of robot 'mu2004_five_link'"):
+        gaitopt.simulate(rabbit, poly_gait, steps=1)
+
+
+def test_a_walk_that_would_not_fit_in_memory_is_refused_before_it_is_walked(robot, poly_gait):
+    # Every sample is kept: 100000 steps of 0.7 s on the LCP ground's 1 ms steps would take
+    # about 100 GB (the walk ran until the system killed it).
+    with pytest.raises(gaitopt.InputError, match="steps: 100000 steps of 0.7 s at 1000 rows per "
+                                                 "second keep about 105 GB"):
+        gaitopt.simulate(robot, poly_gait, steps=100000, ground="lcp")
+
+
+def test_a_one_sample_gait_is_not_walked(robot, poly_gait, tmp_path):
+    gaitopt.write_trajectory(poly_gait, robot, str(tmp_path / "g"), rate_hz=100)
+    csv = tmp_path / "g" / "trajectory.csv"
+    lines = csv.read_text().splitlines(True)
+    header = [line for line in lines if line[0] in "#t"]
+    csv.write_text("".join(header + [line for line in lines if line[0] not in "#t"][:1]))
+    (tmp_path / "g" / "summary.json").unlink()  # which would refuse the file as truncated
+    one = gaitopt.read_trajectory(str(csv), robot)
+    assert len(one) == 1
+    with pytest.raises(gaitopt.InputError, match="at least 2 samples"):
+        gaitopt.simulate(robot, one, steps=1)
