@@ -6,6 +6,7 @@
 #include <fmt/ranges.h>
 
 #include "apps/command_runner.hpp"
+#include "apps/export_warnings.hpp"
 #include "apps/shipped_file.hpp"
 #include "config/config_error.hpp"
 #include "gaits/export/gait_folder_checks.hpp"
@@ -52,15 +53,6 @@ ocp::GaitResultOptions resultOptions(const OptimizeOptions& o) {
   throw io::CommandError(infeasible ? io::kExitInfeasible : io::kExitNotConverged, message);
 }
 
-/// The export's breaches of its contract between the points (gaits/export/export_contract.hpp),
-/// one warning each: the solve converged, but a controller that follows the export meets them.
-void warnOfBreaches(const nlohmann::ordered_json& between_nodes) {
-  for (const auto& b : between_nodes["breaches"])
-    fmt::print(stderr, "optimize: warning: on the {:g} Hz export {} ({} {:.3g}, bound {:.3g})\n",
-               between_nodes["rate_hz"].get<double>(), b["meaning"].get<std::string>(),
-               b["check"].get<std::string>(), b["value"].get<double>(), b["bound"].get<double>());
-}
-
 }  // namespace
 
 void runOptimize(const OptimizeOptions& o) {
@@ -96,13 +88,7 @@ void runOptimize(const OptimizeOptions& o) {
   io::removeIfOurs(out.path() + ".failed");
   fmt::print("optimize: wrote {}/trajectory.csv, summary.json{}\n", out.path(),
              report::holdsPictures(out.path()) ? " and pictures" : "");
-  warnOfBreaches(summary["between_nodes"]);
-  if (summary["between_nodes"].contains("unjudged"))
-    fmt::print(
-        "optimize: not judged on this export: {} ({})\n",
-        fmt::join(summary["between_nodes"]["unjudged"]["checks"].get<std::vector<std::string>>(),
-                  ", "),
-        summary["between_nodes"]["unjudged"]["why"].get<std::string>());
+  warnOfBreaches("optimize", summary["between_nodes"]);
 }
 
 void registerOptimizeCommand(CLI::App& app) {

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "apps/command_runner.hpp"
+#include "apps/export_warnings.hpp"
 #include "apps/shipped_file.hpp"
 #include "config/config_error.hpp"
 #include "config/overrides.hpp"
@@ -52,6 +53,8 @@ void runPoly(const PolyOptions& options) {
   auto summary = gaits::gaitSummary(traj, model, {options.gait_path, "designed", 0, elapsed, 0});
   summary.update(gaits::designJson(params, search));
   if (!options.sets.empty()) summary["config_overrides"] = options.sets;
+  // The export contract, judged as optimize judges an optimum's export.
+  summary["between_nodes"] = ocp::betweenNodeMetrics(traj, model, options.output.rate_hz);
   size_t samples = 0;
   out.write([&](const std::string& dir) {
     samples = ocp::writeGaitFiles(dir, traj, model, options.output.rate_hz, summary,
@@ -65,6 +68,7 @@ void runPoly(const PolyOptions& options) {
       summary["min_zmp_margin"].get<double>());
   fmt::print("poly: wrote {}/trajectory.csv ({} samples), summary.json{}\n", out.path(), samples,
              report::holdsPictures(out.path()) ? " and pictures" : "");
+  warnOfBreaches("poly", summary["between_nodes"]);
 }
 
 void registerPolyCommand(CLI::App& app) {

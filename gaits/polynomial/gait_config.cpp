@@ -1,5 +1,7 @@
 #include <numbers>
 
+#include <fmt/format.h>
+
 #include "config/yaml_reader.hpp"
 #include "dynamics/model.hpp"
 #include "gaits/polynomial/gait_params.hpp"
@@ -21,8 +23,16 @@ GaitParams loadGait(const std::string& path, const std::vector<config::Override>
 
   const auto apex = root.map("swing_apex");
   apex.allowOnly({"x", "height"});
-  p.apex_x = apex.number("x", inRange(-0.999 * p.step_length, 0.999 * p.step_length,
-                                      "[m] (strictly between the start and end of the swing)"));
+  // y_a, the quintic of (3.10)-(3.12) with zero slope at both ends and at the apex, is
+  // tau^2 (1 - tau)^2 (p + q tau) in tau = t / T_S: it stays above the ground only while the apex
+  // time lies in [0.4, 0.6] T_S, which x_a's cubic (3.7)-(3.11) maps to |S_m| <= 0.296 S
+  // (x_a(0.4 T_S) = -S + 2 S (3 0.4^2 - 2 0.4^3)).
+  const double reach = kApexReach * p.step_length;
+  p.apex_x = apex.number(
+      "x", inRange(-reach, reach,
+                   fmt::format("[m] (within {:g} step lengths of mid-swing: farther, the swing tip "
+                               "passes below the ground before or after its apex)",
+                               kApexReach)));
   p.apex_height = apex.number("height", inRange(1e-4, 2.0, "[m]"));
 
   const auto hip = root.map("hip");

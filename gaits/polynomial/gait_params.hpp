@@ -17,6 +17,10 @@ enum class HipObjective {
   kZmp,     ///< the least of that and the SSP ZMP's distance inside the stance foot
 };
 
+/// How far from mid-swing the apex may lie, in step lengths: |S_m| <= kApexReach * step_length
+/// keeps the swing tip at or above the ground (gait_config.cpp).
+inline constexpr double kApexReach = 0.296;
+
 struct GaitParams {
   std::string name;
   double step_length = 0;   ///< tip distance at touchdown [m] (Mu S_L / 2)

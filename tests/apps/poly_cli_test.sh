@@ -37,7 +37,16 @@ assert d["sample_rate_hz"] == 200
 assert s["t"] == 0.6 and s["before"]["phase"] == "SSP" and s["after"]["phase"] == "DSP", s["t"]
 assert s["before"]["t"] == s["after"]["t"] == 0.6
 assert d["step_end"]["t"] == d["duration"] and d["step_end"]["phase"] == "DSP"
+# judged by the export contract as an optimum is: Mu's gait puts its centre of pressure behind
+# the shipped 5 cm heel (its ZMP leaves the foot, docs/design.md), and 200 Hz is too coarse for
+# the derivative checks
+b = d["between_nodes"]
+assert [x["check"] for x in b["breaches"]] == ["min_foot_cop_margin"], b["breaches"]
+assert b["min_foot_cop_margin"] < -0.1 and b["min_normal_force"] > 0, b
+assert b["unjudged"]["checks"] == ["max_rate_mismatch", "max_acceleration_mismatch"]
 PY
+grep -q "poly: warning: on the 200 Hz export foot B's centre of pressure leaves the foot" \
+  "$TMP/err" || fail "(a) no warning of the breach: $(cat "$TMP/err")"
 
 # (b) a gait file with a typo names the file and key; exit code 2.
 sed 's/ssp_duration/ssp_duraton/' "$GAIT" >"$TMP/typo.yaml"
@@ -81,4 +90,17 @@ run poly --robot "$ROOT/configs/robots/compass_gait.yaml" --gait "$ROOT/configs/
 [[ $RC -eq 2 ]] || fail "(g) poly on one-link legs: exit code $RC, expected 2"
 grep -qF "compass_gait.yaml: the polynomial gait (Mu ch. 3) needs legs of two links" "$TMP/err" ||
   fail "(g) stderr: $(cat "$TMP/err")"
+# (i) a gait five times as fast is written (exit 0) with a warning per bound it breaks: its
+# stance tip pulls on the ground and its torques pass the robot file's limits. An apex far from
+# mid-swing, where the swing tip's quintic dips below the ground (3.10-3.12), is refused.
+run poly --robot "$ROBOT" --gait "$GAIT" --out "$TMP/fast" --no-plots --set ssp_duration=0.12 \
+  --set dsp_duration=0.02
+[[ $RC -eq 0 ]] || fail "(i) exited $RC: $(cat "$TMP/err")"
+for what in "a tip in contact pulls on the ground (min_normal_force -5" \
+  "a joint torque passes the robot file's torque_limit"; do
+  grep -qF "poly: warning: on the 1000 Hz export $what" "$TMP/err" || fail "(i) $what: $(cat "$TMP/err")"
+done
+run poly --robot "$ROBOT" --gait "$GAIT" --out "$TMP/apex" --no-plots --set swing_apex.x=-0.2
+[[ $RC -eq 2 ]] && grep -q "key 'swing_apex.x'.*the swing tip passes below the ground" "$TMP/err" ||
+  fail "(i) apex far from mid-swing: $RC $(cat "$TMP/err")"
 echo "poly CLI: all checks passed"

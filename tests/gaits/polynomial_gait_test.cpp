@@ -1,10 +1,13 @@
 // The polynomial gait of Mu (2004) ch. 3: boundary conditions (3.2-3.23), inverse kinematics
 // (3.24) against Table 4.1, continuity and periodicity, and zero touchdown velocity.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include <gtest/gtest.h>
 
+#include "config/config_error.hpp"
+#include "config/overrides.hpp"
 #include "dynamics/impact/relabel.hpp"
 #include "dynamics/kinematics.hpp"
 #include "gaits/export/metrics.hpp"
@@ -163,6 +166,29 @@ TEST_F(PolynomialGaitTest, ReachCheckAgreesWithInverseKinematics) {
     }
   }
   EXPECT_GT(unreachable, 20);  // both answers were exercised
+}
+
+// y_a of (3.10)-(3.12) stays on or above the ground exactly while the apex lies within
+// kApexReach step lengths of mid-swing: at the bound its least height is 0, a little beyond it
+// the tip passes below the ground, and the gait file refuses such an apex.
+TEST_F(PolynomialGaitTest, TheSwingTipStaysAboveTheGroundForEveryApexTheGaitFileAccepts) {
+  const auto lowest = [&](double apex_x) {
+    gaits::GaitParams p = params_;
+    p.apex_x = apex_x;
+    const gaits::PolynomialGait gait(model_, p, plan_);
+    double y = 1;
+    for (int k = 0; k <= 2000; ++k)
+      y = std::min(y, gait.swingTip(p.ssp_duration * k / 2000, Phase::kSsp).pos(1));
+    return y;
+  };
+  const double reach = gaits::kApexReach * params_.step_length;
+  for (const double x : {-reach, -0.5 * reach, 0.0, reach}) EXPECT_GE(lowest(x), -1e-12) << x;
+  EXPECT_LT(lowest(1.05 * reach), -1e-5);
+  EXPECT_LT(lowest(-1.05 * reach), -1e-5);
+  const std::string file = std::string(GAITOPT_SOURCE_DIR) + "/configs/gaits/mu2004.yaml";
+  EXPECT_NO_THROW(gaits::loadGait(file, config::parseOverrides({"swing_apex.x=0.1"})));
+  EXPECT_THROW(gaits::loadGait(file, config::parseOverrides({"swing_apex.x=0.11"})),
+               config::ConfigError);
 }
 
 TEST(LegReach, AgreesWithTheInverseKinematicsAtTheEdgesOfTheWorkspace) {
