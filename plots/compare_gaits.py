@@ -87,6 +87,8 @@ def ratio(va, vb):
 
 
 TAGS = "ABCD"
+# A figure a gait's summary does not have.
+MISSING = "—"
 
 
 def design(s):
@@ -113,20 +115,36 @@ def table(dirs, summaries=None):
     lines = ["| quantity | " + " | ".join(head) + " |",
              "|---|" + "---:|" * (len(head))]
     lines.append(row("gait", [design(s) for s in summaries], None))
+    lines.append(row("robot", [s.get("robot", MISSING) for s in summaries], None))
     for key, label, fmt in ROWS:
-        values = [s.get(key) for s in summaries]
-        if any(v is None for v in values):
+        if all(key not in s for s in summaries):
             continue
-        lines.append(row(label, values, fmt))
-    joints = summaries[0].get("joints")
+        lines.append(row(label, [value(s, key) for s in summaries], fmt))
+    peaks = [joint_peaks(s) for s in summaries]
+    for name in dict.fromkeys(n for p in peaks for n in p):  # every joint, in order of first use
+        lines.append(row(f"peak torque {name} [N m]", [p.get(name, MISSING) for p in peaks],
+                         "{:.1f}"))
+    return "\n".join(lines) + "\n"
+
+
+def value(summary, key):
+    """A summary's figure for the table: a null is an unbounded figure (summary.json writes an
+    infinite friction ratio, where a tip pulls on the ground, as null); a missing key a dash."""
+    if key not in summary:
+        return MISSING
+    return "inf" if summary[key] is None else summary[key]
+
+
+def joint_peaks(summary):
+    """Peak torque by joint name: gaits of other robots have other joints, matched by name."""
+    joints = summary.get("joints")
+    peaks = summary.get("peak_torque")
+    if not isinstance(peaks, list):
+        return {}
     names = [j.get("name", "") if isinstance(j, dict) else str(j)
              for j in (joints if isinstance(joints, list) else [])]
-    peaks = [s.get("peak_torque") for s in summaries]
-    if all(isinstance(p, list) for p in peaks):
-        for j, values in enumerate(zip(*peaks)):
-            name = names[j] if j < len(names) and names[j] else f"joint {j}"
-            lines.append(row(f"peak torque {name} [N m]", list(values), "{:.1f}"))
-    return "\n".join(lines) + "\n"
+    return {(names[j] if j < len(names) and names[j] else f"joint {j}"): p
+            for j, p in enumerate(peaks)}
 
 
 def write_text(path, text):

@@ -168,4 +168,28 @@ s['foot'] = {'heel': 'long', 'toe': 0.15}; json.dump(s, open(p, 'w'))" "$TMP/foo
 expect_error "(g) malformed foot" "$TMP/footed/summary.json: key 'foot.heel'" "$TMP/footed" "$B" \
   "$TMP/out_g"
 
+# (h) Gaits of other robots: peak torques matched by joint name (B's three joints against A's
+# five, a dash where a gait has no such joint), the robots named; an unbounded friction ratio
+# (summary.json's null: a tip pulls on the ground) is shown as inf, not its row dropped.
+cp -r "$A" "$TMP/with_mu" && cp -r "$B" "$TMP/three"
+"$PY" - "$TMP/with_mu/summary.json" "$TMP/three/summary.json" <<'PY'
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:])
+a["max_friction_ratio"] = 0.3
+b.update(robot="three_joints", max_friction_ratio=None, peak_torque=[1.0, 2.0, 3.0],
+         joints=[{"name": x} for x in ("stance_ankle", "stance_hip", "swing_hip")])
+for p, s in zip(sys.argv[1:], (a, b)):
+    json.dump(s, open(p, "w"))
+PY
+compare "$TMP/with_mu" "$TMP/three"
+[[ $RC -eq 0 ]] || fail "(h) exit $RC: $(cat "$TMP/err")"
+for line in "| robot | made_up | three_joints |  |" \
+  "| max friction ratio abs(Fx)/Fy | 0.300 | inf |  |" \
+  "| peak torque stance_knee [N m] | 20.0 | — |  |" \
+  "| peak torque stance_hip [N m] | 0.0 | 2.0 |  |" \
+  "| peak torque swing_hip [N m] | 5.0 | 3.0 | 0.60 |" \
+  "| peak torque swing_knee [N m] | 8.0 | — |  |"; do
+  grep -qxF "$line" "$TMP/out" || fail "(h) no row '$line' in: $(cat "$TMP/out")"
+done
+
 echo "compare_plots_test: all checks passed"
