@@ -21,6 +21,10 @@ void runExportUrdf(const ExportUrdfOptions& o) {
     throw config::ConfigError(o.out, "--out", 0, "expected a .urdf file");
   if (std::filesystem::is_directory(o.out))
     throw config::ConfigError(o.out, "--out", 0, "is a folder: expected a .urdf file");
+  std::error_code ec;  // a robot file named *.urdf, or a link to it
+  if (std::filesystem::equivalent(o.out, o.robot_path, ec))
+    throw config::ConfigError(o.out, "--out", 0,
+                              "is the robot file itself (--robot): write the URDF elsewhere");
   const dynamics::Model model = dynamics::loadRobot(o.robot_path);
   std::string text;
   try {

@@ -115,8 +115,10 @@ void registerImpactMapCommand(CLI::App& app) {
   cmd->add_option("--approach-angles", options->approach_angles,
                   "Swing-tip velocity angle alpha from the -x axis [deg], in (0, 180)")
       ->capture_default_str();
-  cmd->add_option("--approach-speed", options->approach_speed,
-                  "Swing-tip speed V_e [m/s] (scales the impulses only)")
+  cmd->add_option(
+         "--approach-speed", options->approach_speed,
+         "Swing-tip speed V_e [m/s]: the impact is linear in it, so it scales the impulses and the "
+         "post-impact rates, never which impact occurs")
       ->check(CLI::Range(1e-3, 100.0))
       ->capture_default_str();
   cmd->add_option("--jobs", options->jobs, "Worker threads (default: all cores)")

@@ -31,7 +31,8 @@ void registerInspectCommand(CLI::App& app) {
       "Output (stdout, JSON): robot, n_links, total_mass, gravity, friction, links, joints, "
       "state, D, H_dtheta, G, tau (SSP inverse-dynamics joint torques, Mu 2.43), "
       "kinetic_energy, potential_energy, com, swing_tip, hip (position and velocity relative "
-      "to the stance tip). Exit codes: 0 ok, 2 bad robot/state file or usage, 1 other failure.");
+      "to the stance tip), link_segments (each link from its proximal joint to its distal end, "
+      "for stick figures). Exit codes: 0 ok, 2 bad robot/state file or usage, 1 other failure.");
   cmd->add_option("--robot", options->robot_path, "Robot YAML file (e.g. configs/robots/*.yaml)")
       ->required()
       ->transform(orShippedFile())

@@ -1,5 +1,7 @@
 #include "apps/study_commands/report_command.hpp"
 
+#include <filesystem>
+
 #include <fmt/format.h>
 
 #include "apps/command_runner.hpp"
@@ -16,6 +18,8 @@ void runReport(const ReportOptions& o) {
   // The page is the one file this command writes: never over an input (summary.json, a CSV).
   if (!o.out.empty() && !o.out.ends_with(".html"))
     throw config::ConfigError(o.out, "--out", 0, "expected a .html file for the page");
+  if (std::filesystem::is_directory(o.out))
+    throw config::ConfigError(o.out, "--out", 0, "is a folder: expected a .html file");
   const report::ReportContent content = report::collectReport(o.dir, o.robot_path);
   const std::string out = o.out.empty() ? o.dir + "/report.html" : o.out;
   io::writeFileAtomically(out, report::renderReportPage(content));
@@ -37,7 +41,9 @@ void registerReportCommand(CLI::App& app) {
       ->transform(orShippedFile())
       ->option_text("FILE");
   cmd->add_option("--out", options->out, "The page (default DIR/report.html)")->option_text("FILE");
-  cmd->add_flag("!--no-gif", options->gif, "Do not draw walk.gif for a walk folder");
+  cmd->add_flag("!--no-gif", options->gif,
+                "Do not draw DIR/walk.gif, a walk folder's animation, written beside its walk.csv "
+                "whatever --out says");
   cmd->footer(
       "The page opens from disk with no network access; URL hash #t=SECONDS shows that time.\n"
       "Exit codes: 0 ok, 2 DIR is not a result folder, a file in it is malformed or its gait\n"

@@ -22,9 +22,11 @@ void checkAxis(const GridAxis& a, MapAxis which) {
   if (a.count < 1) throw std::invalid_argument(fmt::format("{}: count {} < 1", name, a.count));
   if (!std::isfinite(a.first) || !std::isfinite(a.last))
     throw std::invalid_argument(fmt::format("{}: bounds must be finite numbers", name));
-  if (a.first > a.last || (a.count == 1 && a.first != a.last))
+  // Equal ends with a count above 1 would map one point several times, counted as many.
+  if ((a.count == 1) != (a.first == a.last) || a.first > a.last)
     throw std::invalid_argument(
-        fmt::format("{}: range {:.6g}:{:.6g}:{} must have first <= last (equal when count is 1)",
+        fmt::format("{}: range {:.6g}:{:.6g}:{} must have first < last, or first = last when "
+                    "count is 1",
                     name, a.first / unit, a.last / unit, a.count));
   const double upper = angle ? std::numbers::pi : std::numeric_limits<double>::infinity();
   if (!(a.first > 0 && a.last < upper))

@@ -27,6 +27,12 @@ cp "$ROBOT" "$TMP/robot.yaml"
 run export-urdf --robot "$TMP/robot.yaml" --out "$TMP/robot.yaml"
 [[ $RC -eq 2 ]] || fail "(b) --out robot.yaml: exit code $RC, expected 2"
 cmp -s "$ROBOT" "$TMP/robot.yaml" || fail "(b) the robot file was overwritten"
+# and a robot file named *.urdf, given as --out too (here through a link to it): exit 2, unwritten
+cp "$ROBOT" "$TMP/robot.urdf" && ln -s "$TMP/robot.urdf" "$TMP/link.urdf"
+run export-urdf --robot "$TMP/robot.urdf" --out "$TMP/link.urdf"
+[[ $RC -eq 2 ]] && grep -qF "is the robot file itself" "$TMP/err" ||
+  fail "(b) --out the robot file: exit code $RC: $(cat "$TMP/err")"
+cmp -s "$ROBOT" "$TMP/robot.urdf" || fail "(b) the robot file named .urdf was overwritten"
 
 # (c) a missing robot file: exit 2, naming it.
 run export-urdf --robot "$TMP/no_such_robot.yaml" --out "$TMP/x.urdf"

@@ -99,6 +99,11 @@ run report "$TMP/empty"
 [[ $RC -eq 2 ]] || fail "(c) exit $RC for a folder without results"
 grep -q "$TMP/empty" "$TMP/err" || fail "(c) message does not name the folder: $(cat "$TMP/err")"
 [[ -e "$TMP/empty/report.html" ]] && fail "(c) a page was written"
+# and an --out that is a folder named like a page: bad input (exit 2), not an I/O failure (1)
+mkdir -p "$TMP/page.html"
+run report "$TMP/poly" --out "$TMP/page.html"
+[[ $RC -eq 2 ]] && grep -qF "is a folder: expected a .html file" "$TMP/err" ||
+  fail "(c) --out a folder: exit $RC: $(cat "$TMP/err")"
 
 # (d) the walk page in a browser: renders, no console error, the robot walks between 0.1 and 0.5 s.
 command -v chromium >/dev/null || fail "(d) chromium missing (scripts/install-deps.sh installs it)"
