@@ -99,6 +99,7 @@ nlohmann::ordered_json walkSummary(const ScenarioSettings& settings, const Refer
                                    const ScenarioResult& r) {
   nlohmann::ordered_json j{{"robot", ref.model.name()}, {"robot_file", ref.robot_path}};
   j.update(scenarioJson(settings, s));
+  j["slope_rad"] = plant.slope();  // the reference's, which the walk is on
   j["friction"] = plant.friction();
   j["foot"] = gaits::footJson(plant.foot());  // the plant's, as walked
   j["steps_completed"] = r.walk.steps_completed;

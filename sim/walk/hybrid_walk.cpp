@@ -7,7 +7,8 @@
 namespace gaitopt::sim {
 
 bool appendStep(WalkResult& walk, StepResult step, double planned_step) {
-  if (step.ok && step.advance < kMinStepFraction * planned_step) {
+  const bool landed = step.ok || step.impact == "double" || step.impact == "single";
+  if (landed && step.advance < kMinStepFraction * planned_step) {
     step.ok = false;
     step.failure = fmt::format(
         "the swing tip struck the ground {:.3g} m ahead of the stance tip, {:.0f} % of the "

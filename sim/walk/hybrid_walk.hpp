@@ -64,7 +64,7 @@ struct StepResult {
   VecD theta, dtheta;   ///< the next step's start (or the state at failure)
   std::string impact;   ///< "double", "single" or "" (no touchdown)
   double ssp_duration = 0, dsp_duration = 0;
-  double advance = 0;             ///< world x of the new stance tip minus the old [m]
+  double advance = 0;  ///< world x of the new stance tip minus the old (where it landed) [m]
   double max_tracking_error = 0;  ///< max |theta - theta_ref| over the step [rad]
   /// Largest distance a tip on the ground moved along it from where it was set down [m].
   double slip = 0;
@@ -138,7 +138,9 @@ inline constexpr double kMinStepFraction = 0.25;
 
 /// Adds a step to the walk (its error, and the failure as "step k: ..."); false when the step
 /// failed, which ends the walk, also when it advanced less than kMinStepFraction of
-/// `planned_step` [m]. Every ground's walk keeps its record through this.
+/// `planned_step` [m] (a scuff, also when the rigid ground's impact there failed: "double" or
+/// "single" with `advance` where the tip landed). Every ground's walk keeps its record through
+/// this.
 bool appendStep(WalkResult& walk, StepResult step, double planned_step);
 
 /// Distance advanced [m] and time taken [s] over the completed steps.

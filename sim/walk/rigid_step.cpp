@@ -324,6 +324,10 @@ StepResult finishStep(const StepContext& c, StepRecorder& rec, const PhaseStart&
     const ImpactChoice impact = chooseImpact(c, theta, dtheta);
     r.impact = impact.type;
     phase.failure = impact.failure;
+    // Where the tip landed, kept when the impact fails: a touchdown at the stance tip (knee-less
+    // legs crossing at mid-swing) leaves no consistent impact, and is a scuff
+    // (hybrid_walk.hpp appendStep), not a failure of Coulomb's law.
+    r.advance = swingTipOf(c, phase.x)(0);
     const auto& m = impact.map;
     phase.x = contactState(theta, m.dtheta_plus, phase.x(0), m.base_velocity,
                            c.controller.memorySize(Phase::kDsp));

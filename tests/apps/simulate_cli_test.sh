@@ -122,4 +122,22 @@ bad "case 4" "uncertainty-case" --reference "$REF" --uncertainty-case 4
 bad "mass error below -50 %" "mass-error" --reference "$REF" --mass-error -0.9
 bad "hzd with a DSP" "controller hzd.*double support" --reference "$REF" --controller hzd
 [[ $(wc -l <"$TMP/rigid/steps.csv") -eq 3 ]] || fail "(d) a failed run touched the old result"
+# (k) the knee-less walker under HZD on rigid ground: its swing tip meets the ground at the
+# stance tip as the legs cross at mid-swing, where no frictional impact is consistent; the walk
+# ends by a scuff, named as one, not by a failure of Coulomb's law.
+run optimize --config "$ROOT/configs/ocp/three_link_walk.yaml" --out "$TMP/three" --rate 200 \
+  --no-plots --quiet
+run simulate --reference "$TMP/three" --controller hzd --steps 2 --no-poincare --no-plots \
+  --out "$TMP/three_walk"
+[[ $RC -eq 0 ]] || fail "(k) exited $RC: $(cat "$TMP/err")"
+grep -q "0 of 2 steps then fell (step 1: the swing tip struck the ground .* ahead of the stance tip, 0 % of the planned 0.5 m step: a scuff" \
+  "$TMP/out" || fail "(k) $(cat "$TMP/out")"
+# The passive compass gait walks down its 0.05 rad slope, and its walk says so.
+run optimize --config "$ROOT/configs/ocp/compass_gait_passive.yaml" --out "$TMP/passive" \
+  --rate 200 --no-plots --quiet
+run simulate --reference "$TMP/passive" --controller hzd --steps 1 --no-poincare --no-plots \
+  --out "$TMP/passive_walk"
+check_json "(k) the walk's slope" "$TMP/passive_walk/summary.json" <<'PY'
+assert d["slope_rad"] == -0.05, d.get("slope_rad")
+PY
 echo "simulate CLI: all checks passed"

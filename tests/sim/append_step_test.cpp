@@ -29,5 +29,27 @@ TEST(AppendStep, AScuffAtMidSwingIsNotAStep) {
   EXPECT_EQ(w.max_slip, 1e-4);  // the failed step's record is kept
 }
 
+// Knee-less legs cross at mid-swing: the rigid ground's touchdown there, at the stance tip,
+// leaves no consistent frictional impact. Where the tip landed says what it was: a scuff. A
+// step that fell before any touchdown keeps its own failure.
+TEST(AppendStep, AnImpactThatFailsAtTheStanceTipIsAScuff) {
+  StepResult at_stance_tip = stepOf(1e-10);
+  at_stance_tip.ok = false;
+  at_stance_tip.impact = "double";
+  at_stance_tip.failure = "no consistent frictional impact (no stick/slide mode satisfies Coulomb)";
+  WalkResult w;
+  EXPECT_FALSE(appendStep(w, at_stance_tip, 0.5));
+  EXPECT_NE(w.failure.find("step 1: the swing tip struck the ground 1e-10 m ahead of the stance "
+                           "tip"),
+            std::string::npos)
+      << w.failure;
+  StepResult fallen = stepOf(0);
+  fallen.ok = false;
+  fallen.failure = "the hip fell below 0.5 of the leg length";
+  WalkResult v;
+  EXPECT_FALSE(appendStep(v, fallen, 0.5));
+  EXPECT_EQ(v.failure, "step 1: the hip fell below 0.5 of the leg length");
+}
+
 }  // namespace
 }  // namespace gaitopt::sim
