@@ -49,11 +49,14 @@ install(DIRECTORY configs/ DESTINATION ${CMAKE_INSTALL_DATADIR}/gaitopt/configs)
 install(DIRECTORY plots/ DESTINATION ${CMAKE_INSTALL_DATADIR}/gaitopt/plots
         FILES_MATCHING PATTERN "*.py")
 
+set(GAITOPT_DATA_INSTALL_DIR ${CMAKE_INSTALL_DATADIR}/gaitopt)
 configure_package_config_file(cmake/gaitoptConfig.cmake.in
   ${CMAKE_CURRENT_BINARY_DIR}/gaitoptConfig.cmake
-  INSTALL_DESTINATION ${GAITOPT_INSTALL_CMAKEDIR})
+  INSTALL_DESTINATION ${GAITOPT_INSTALL_CMAKEDIR}
+  PATH_VARS GAITOPT_DATA_INSTALL_DIR)
 write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/gaitoptConfigVersion.cmake
   COMPATIBILITY SameMinorVersion)
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/gaitoptConfig.cmake
               ${CMAKE_CURRENT_BINARY_DIR}/gaitoptConfigVersion.cmake
+              cmake/installed_data_dir.cpp
         DESTINATION ${GAITOPT_INSTALL_CMAKEDIR})

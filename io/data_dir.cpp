@@ -33,11 +33,21 @@ fs::path installedShare() {
   return {};
 }
 
+std::string& packageDataDir() {
+  static std::string dir;
+  return dir;
+}
+
 }  // namespace
+
+void useInstalledDataDir(const std::string& dir) {
+  packageDataDir() = dir;
+}
 
 std::string dataDir() {
   if (const char* env = std::getenv("GAITOPT_DATA_DIR"); env != nullptr && *env != '\0') return env;
   if (const fs::path share = installedShare(); !share.empty()) return share.string();
+  if (!packageDataDir().empty()) return packageDataDir();
   std::error_code ec;
   if (fs::is_directory(fs::path(GAITOPT_SOURCE_DIR) / "configs", ec)) return GAITOPT_SOURCE_DIR;
   return GAITOPT_INSTALL_DATADIR;

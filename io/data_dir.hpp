@@ -13,10 +13,15 @@ namespace gaitopt::io {
 /// 2. PREFIX/share/gaitopt, when the running program is PREFIX/bin/NAME or the running code is the
 ///    Python module PREFIX/lib/python3/dist-packages/gaitopt.so, and that folder exists (an
 ///    installed tree, wherever it was moved);
-/// 3. the source tree the library was built from, when it still exists;
-/// 4. the install prefix's share/gaitopt chosen at configure time (a program of another project
-///    linking gaitopt's installed libraries).
+/// 3. the share/gaitopt of the installed package a program of another project was built against
+///    (useInstalledDataDir), wherever that package was installed or moved to;
+/// 4. the source tree the library was built from, when it still exists;
+/// 5. the install prefix's share/gaitopt chosen at configure time.
 std::string dataDir();
+
+/// Names the share/gaitopt of the installed package: called before main by a file the package
+/// compiles into each program that links it (cmake/installed_data_dir.cpp).
+void useInstalledDataDir(const std::string& dir);
 
 /// dataDir() / `relative` (e.g. "configs/grounds/rigid.yaml").
 std::string dataFile(const std::string& relative);

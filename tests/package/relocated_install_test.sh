@@ -23,6 +23,33 @@ for f in share/gaitopt/configs/ocp/rabbit_kelly2017.yaml share/gaitopt/configs/g
   [[ -f "$TMP/moved/$f" ]] || fail "not installed: $f"
 done
 mkdir "$TMP/work"
+# A program of another project, built against the moved package, reads the shipped configs from
+# it, not from the source tree the package was built from (io/data_dir.hpp).
+mkdir "$TMP/consumer"
+cat >"$TMP/consumer/CMakeLists.txt" <<'CM'
+cmake_minimum_required(VERSION 3.25)
+project(data_dir_consumer LANGUAGES CXX)
+set(CMAKE_CXX_STANDARD 20)
+find_package(gaitopt 0.1 REQUIRED)
+add_executable(shipped_ground shipped_ground.cpp)
+target_link_libraries(shipped_ground PRIVATE gaitopt::sim)
+CM
+cat >"$TMP/consumer/shipped_ground.cpp" <<'CPP'
+#include <iostream>
+#include "io/data_dir.hpp"
+#include "sim/contact/ground_config.hpp"
+#include "sim/scenario/scenario_settings.hpp"
+int main() {
+  std::cout << gaitopt::io::dataDir() << '\n';
+  gaitopt::sim::loadGround(gaitopt::sim::groundPath("rigid"));  // throws when it is not there
+}
+CPP
+GEN=()
+command -v ninja >/dev/null && GEN=(-G Ninja)
+cmake -S "$TMP/consumer" -B "$TMP/consumer/build" "${GEN[@]}" -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$TMP/moved" >"$TMP/consumer.log" 2>&1 &&
+  cmake --build "$TMP/consumer/build" >>"$TMP/consumer.log" 2>&1 ||
+  fail "the consumer project: $(tail -20 "$TMP/consumer.log")"
 # The checks run inside the namespace, where $ROOT is an empty folder.
 unshare --mount --propagation private bash -s "$ROOT" "$TMP" <<'SH' || fail "see above"
 set -u
@@ -37,6 +64,8 @@ check() { # check NAME COMMAND...: runs it, fails with its output unless it exit
   "$@" >out.log 2>err.log || { echo "FAIL: $name exited $?: $(tail -5 err.log)"; exit 1; }
   ! grep -q "warning" err.log || { echo "FAIL: $name warned: $(cat err.log)"; exit 1; }
 }
+check consumer "$TMP/consumer/build/shipped_ground"
+[[ $(cat out.log) == "$TMP/moved/share/gaitopt" ]] || { echo "FAIL: consumer: $(cat out.log)"; exit 1; }
 check optimize "$G" optimize --config "$TMP/moved/share/gaitopt/configs/ocp/rabbit_kelly2017.yaml" \
   --out opt --rate 200 --quiet
 [[ -f opt/trajectory.csv && -f opt/overview.png ]] || { echo "FAIL: optimize: no pictures"; exit 1; }
