@@ -88,7 +88,7 @@ void record(const LibrarySetup& setup, const PointProblem& pp, const Attempts& a
     const auto summary = ocp::writeGaitResult(options, pp.model, pp.config, s, nullptr, staging);
     row.cost_of_transport = summary.at("cost_of_transport").get<double>();
   });
-  io::removeIfOurs(dir + ".failed");  // a retried point's old failure
+  ocp::removeFailedResult(dir + ".failed");  // a retried point's old failure
 }
 
 /// A row for the point with nothing known yet.

@@ -39,7 +39,8 @@ gaits::Trajectory initialGuess(const dynamics::Model& model, const ocp::OcpConfi
 }
 
 ocp::GaitResultOptions resultOptions(const OptimizeOptions& o) {
-  return {o.config_path, o.output.rate_hz, report::gaitPictures(o.output.plots), o.sets};
+  return {o.config_path, o.output.rate_hz, report::gaitPictures(o.output.plots), o.sets,
+          o.warm_start};
 }
 
 /// A failed solve goes to OUT.failed and never touches a previous good result in OUT.
@@ -85,7 +86,7 @@ void runOptimize(const OptimizeOptions& o) {
     summary = ocp::writeGaitResult(resultOptions(o), model, config, solution, nullptr, dir);
   });
   // A failure of an earlier run would sit next to this result and contradict it.
-  io::removeIfOurs(out.path() + ".failed");
+  ocp::removeFailedResult(out.path() + ".failed");
   fmt::print("optimize: wrote {}/trajectory.csv, summary.json{}\n", out.path(),
              report::holdsPictures(out.path()) ? " and pictures" : "");
   warnOfBreaches("optimize", summary["between_nodes"]);

@@ -282,10 +282,12 @@ double maxViolation(const Nlp& nlp, const Eigen::VectorXd& x) {
   return violation(nlp, x, nlp.constraintValues(x), nlp.constraintLower(), nlp.constraintUpper());
 }
 
-/// After a failure, x becomes the least violated point evaluated if it beats the last iterate.
-void keepLeastViolated(SolveResult& result, const LeastViolation& best) {
+/// After a failure, x becomes the least violated point evaluated if it beats the last iterate;
+/// its cost is that point's, as its summary's cost terms are.
+void keepLeastViolated(const Nlp& nlp, SolveResult& result, const LeastViolation& best) {
   if (result.success || !(best.violation < result.max_violation)) return;
   result.x = best.x;
+  result.cost = nlp.cost(best.x);
   result.max_violation = best.violation;
   result.point = "least-violated point evaluated";
 }
@@ -384,7 +386,7 @@ SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options, const W
         timing.StdAugSystemSolverMultiSolve().TotalWallclockTime();
   }
   result.max_violation = maxViolation(nlp, result.x);
-  keepLeastViolated(result, best);
+  keepLeastViolated(nlp, result, best);
   result.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();
   return result;
 }

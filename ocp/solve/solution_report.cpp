@@ -1,6 +1,7 @@
 #include "ocp/solve/solution_report.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -271,6 +272,7 @@ nlohmann::ordered_json solutionSummary(const GaitResultOptions& o, const dynamic
                                      r.callback_time_s, config.cost.primary()});
   summary["converged"] = r.success;
   if (!o.config_overrides.empty()) summary["config_overrides"] = o.config_overrides;
+  if (!o.warm_start.empty()) summary["warm_start"] = o.warm_start;
   summary["cost"] = r.cost;  // the solver's objective (the scheme's own quadrature)
   summary["cost_terms"] = costTermsJson(problem.nlp, r.x, config.cost);
   summary["cost_quadrature"] = fmt::format(
@@ -340,12 +342,16 @@ void writeFailedNote(const std::string& path, const std::string& message) {
 
 }  // namespace
 
+void removeFailedResult(const std::string& failed_dir) {
+  if (std::filesystem::is_regular_file(failed_dir + "/FAILED.txt")) io::removeIfOurs(failed_dir);
+}
+
 std::string writeFailedResult(const GaitResultOptions& o, const dynamics::Model& model,
                               const OcpConfig& config, const GaitSolution& solution,
                               const std::string& failed_dir) {
   const FailureReport report = failureReport(solution, failed_dir);
   std::vector<std::string> inputs = ocpInputs(config);
-  inputs.push_back(o.config_path);
+  inputs.insert(inputs.end(), {o.config_path, o.warm_start});
   io::OutputFolder(failed_dir, inputs).write([&](const std::string& dir) {
     writeGaitResult(o, model, config, solution, report.summary, dir);
     writeFailedNote(dir + "/FAILED.txt", report.message);

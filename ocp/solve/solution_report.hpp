@@ -27,6 +27,9 @@ struct GaitResultOptions {
   FolderPictures pictures;
   /// The config values set on the command line (KEY=VALUE), recorded in summary.json
   std::vector<std::string> config_overrides;
+  /// The result folder the solve started from (optimize --warm-start), or empty; recorded in
+  /// summary.json, and never replaced by a failed solve's folder.
+  std::string warm_start;
 };
 
 /// The files of every gait folder (designed, optimised or interpolated) into `dir`:
@@ -63,6 +66,11 @@ nlohmann::ordered_json writeGaitResult(const GaitResultOptions& options,
                                        const GaitSolution& solution,
                                        const nlohmann::ordered_json& failure,
                                        const std::string& dir);
+
+/// Removes `failed_dir` when it holds a failed solve (writeFailedResult's FAILED.txt in a
+/// gaitopt folder): the old failure of a result just solved. A converged result that happens to
+/// be named so is kept.
+void removeFailedResult(const std::string& failed_dir);
 
 /// Writes a failed solve's least-violated point to `failed_dir` (staged,
 /// io/output/output_folder.hpp) with FAILED.txt, `"converged": false` and the worst violations;

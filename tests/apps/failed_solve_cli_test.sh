@@ -31,6 +31,21 @@ assert d["status"] == "Maximum_Iterations_Exceeded" and d["converged"] is False,
 w = d["worst_violation"]
 assert w["constraint"] and w["phase"] in ("ssp", "link") and w["violation"] > 1e-3, w
 assert w["violation"] == d["max_violation"] or d["worst_bound_violation"], (w, d["max_violation"])
+# the cost is the exported point's, whose terms it sums (the last iterate's had been kept when
+# the least-violated point evaluated was exported)
+terms = sum(d["cost_terms"]["terms"].values())
+assert abs(terms - d["cost"]) <= 1e-9 * abs(d["cost"]), (terms, d["cost"], d.get("point"))
+PY
+
+# (a') the five-link default stopped after 3 iterations exports the least-violated point it
+# evaluated, not its last iterate: its cost is that point's too.
+run optimize --config "$ROOT/configs/ocp/mu2004_walk.yaml" --out "$TMP/five" --quiet --no-plots \
+  --set solver.max_iterations=3
+[[ $RC -eq 4 ]] || fail "(a') expected exit 4, got $RC: $(cat "$TMP/err")"
+check_json "(a') its cost" "$TMP/five.failed/summary.json" <<'PY'
+assert d["point"] == "least-violated point evaluated", d["point"]
+terms = sum(d["cost_terms"]["terms"].values())
+assert abs(terms - d["cost"]) <= 1e-9 * abs(d["cost"]), (terms, d["cost"])
 PY
 
 # (b) infeasible: torque limits of 0.1 N m cannot carry RABBIT to the step; Ipopt proves local
@@ -64,6 +79,22 @@ timeout -s KILL 2 "$GAITOPT" optimize --config "$TMP/long.yaml" --out "$OUT" --q
   >/dev/null 2>&1
 [[ $? -eq 137 ]] || fail "(d) the run was not killed"
 unchanged "(d)"
+
+# (f) OUT.failed is cleared only when it holds a failed solve: a converged result named so, here
+# the warm start of the next run, is kept by that run's success; and a failure of a run started
+# from it is refused rather than written over it (exit 2), the folder left as it was.
+run optimize --config "$OCP" --out "$TMP/z.failed" --rate 50 --quiet --no-plots
+[[ $RC -eq 0 ]] || fail "(f) exited $RC: $(cat "$TMP/err")"
+KEPT=$(cat "$TMP/z.failed"/* | md5sum)
+run optimize --config "$OCP" --out "$TMP/z" --rate 50 --quiet --no-plots --warm-start "$TMP/z.failed"
+[[ $RC -eq 0 && -d "$TMP/z.failed" ]] || fail "(f) a converged z.failed was removed ($RC)"
+check_json "(f) the warm start is recorded" "$TMP/z/summary.json" <<'PY'
+assert d["warm_start"].endswith("/z.failed"), d.get("warm_start")
+PY
+run optimize --config "$TMP/short.yaml" --out "$TMP/z" --quiet --no-plots --warm-start "$TMP/z.failed" \
+  --set solver.max_iterations=1
+[[ $RC -eq 2 ]] || fail "(f) a failure onto its warm start exited $RC: $(cat "$TMP/err")"
+[[ "$(cat "$TMP/z.failed"/* | md5sum)" == "$KEPT" ]] || fail "(f) the warm start was changed"
 
 # (e) no staging or temporary files are left anywhere.
 leftovers=$(find "$TMP" -name '*.tmp*' -o -name '*.old-*')
