@@ -10,6 +10,7 @@
 #include "apps/shipped_file.hpp"
 #include "config/config_error.hpp"
 #include "gaits/export/gait_folder_checks.hpp"
+#include "gaits/trajectory/grid_export.hpp"
 #include "gaits/trajectory/trajectory_csv.hpp"
 #include "io/output/output_folder.hpp"
 #include "ocp/guess/initial_guess.hpp"
@@ -63,6 +64,7 @@ void runOptimize(const OptimizeOptions& o) {
   const io::OutputFolder out(o.output.out_dir, inputs);
   const dynamics::Model model = ocp::problemModel(config);  // the robot on the config's slope
   ocp::requireReachable(model, config, o.config_path);
+  gaits::requireExportRate(ocp::shortestStep(config), o.output.rate_hz);  // before, not after
   if (!o.quiet) fmt::print("optimize: {} on {}\n", config.name, model.name());
   config.solver.progress = !o.quiet;
   if (!o.warm_start.empty()) config.solver = ocp::warmStarted(config.solver);

@@ -185,6 +185,18 @@ void checkMarginsFitTheRobot(const YamlReader& r, const OcpConfig& c) {
   };
   checkCone("friction_margin", c.friction_margin);
   if (c.impulse_friction_margin) checkCone("impulse_friction_margin", *c.impulse_friction_margin);
+  // As the problem's builders (phase_builder.cpp, interior_contact.cpp) would refuse them, but
+  // named by key.
+  const bool knee_bound = c.max_stance_knee_flexion < kInf || c.max_swing_knee_flexion < kInf ||
+                          c.min_trailing_knee_flexion > 0;
+  if (knee_bound && !(c.knee_limits && robot.legLinks() == 2))
+    r.fail(r.has("max_knee_flexion") ? "max_knee_flexion" : "min_trailing_knee_flexion",
+           robot.legLinks() == 2 ? "a knee flexion bound needs knee_limits: true"
+                                 : "a knee flexion bound, but the robot's legs have no knees");
+  const bool free_duration = std::any_of(c.phases.begin(), c.phases.end(),
+                                         [](const PhaseConfig& p) { return p.freeDuration(); });
+  if (c.interior_contact > 0 && (c.scheme != Scheme::kHermiteSimpson || free_duration))
+    r.fail("interior_contact", "needs scheme: hermite_simpson and phases of fixed duration");
 }
 
 /// A [min, max] pair under `key`, each value checked; min > max is an error naming the key.
@@ -303,6 +315,23 @@ std::string CostWeights::primary() const {
   return abs_work > 0 ? "abs_work" : "torque_squared";
 }
 
+namespace {
+
+/// The computed-torque law of the variants (ocp/shape/computed_torque_law.hpp) commands every
+/// joint.
+void checkFeedbackFitsTheRobot(const YamlReader& root, const OcpConfig& c) {
+  if (c.shape.feedback.law != FeedbackGains::Law::kComputedTorque) return;
+  const dynamics::Model robot = dynamics::loadRobot(c.robot_path);
+  for (const auto& joint : robot.joints())
+    if (!joint.actuated)
+      root.map("variant_feedback")
+          .fail("law", fmt::format("computed_torque commands every joint, and the robot's joint "
+                                   "'{}' is passive: use law: joint_pd",
+                                   joint.name));
+}
+
+}  // namespace
+
 OcpConfig loadOcpConfig(const std::string& path, const std::vector<config::Override>& overrides) {
   const YamlReader root = YamlReader::fromFile(path, overrides);
   root.allowOnly(
@@ -351,6 +380,7 @@ OcpConfig loadOcpConfig(const std::string& path, const std::vector<config::Overr
   }
   if (root.has("solver")) readSolver(root.map("solver"), c.solver);
   c.shape = readShapeConfig(root);  // the problem's shape (ocp/shape/shape_config.hpp)
+  checkFeedbackFitsTheRobot(root, c);
   if (root.has("continuation")) readContinuationOf(root, c);
   return c;
 }
@@ -391,6 +421,14 @@ std::vector<std::string> ocpInputs(const OcpConfig& config) {
 
 dynamics::Model problemModel(const OcpConfig& config) {
   return dynamics::withSlope(dynamics::loadRobot(config.robot_path), config.slope);
+}
+
+double shortestStep(const OcpConfig& config) {
+  if (config.step_duration > 0) return config.step_duration;
+  double duration = 0;
+  for (const PhaseConfig& p : config.phases)
+    duration += p.freeDuration() ? p.duration_min : p.duration;
+  return duration;
 }
 
 void requireReachable(const dynamics::Model& model, const OcpConfig& config,

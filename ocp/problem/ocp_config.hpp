@@ -187,6 +187,10 @@ double impulseFrictionBound(const dynamics::Model& model, const OcpConfig& confi
 /// heel and at the toe. @throws std::invalid_argument when the margin leaves no foot.
 dynamics::Foot marginFoot(const dynamics::Model& model, const OcpConfig& config);
 
+/// The shortest step the solve may return [s]: step_duration, else the phases' durations, free
+/// ones at their lower bounds. What an export rate is checked against before the solve.
+double shortestStep(const OcpConfig& config);
+
 /// A step the two legs cannot span, even stretched, is bad input, not a question for Ipopt
 /// (which would spend its iteration limit on it). @throws std::domain_error naming `path` and
 /// the key.

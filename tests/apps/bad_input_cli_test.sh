@@ -58,6 +58,25 @@ edit "$OCP" ocp_far.yaml 's/^step_length: 0.5/step_length: 1.9/'
 run optimize --config "$TMP/ocp_far.yaml" --out "$TMP/out_dir" --quiet --no-plots
 expect "out of reach (optimize)" 3 "ocp_far.yaml: key 'step_length': 1.9 m is out of reach: the legs of robot 'rabbit' \(0.8 m each\) span less than 1.6 m"
 [[ ! -e "$TMP/out_dir.failed" ]] || fail "out of reach (optimize): Ipopt was run"
+# What the problem's builders cannot make is refused when the config is read, by key (exit 2;
+# it was exit 1 with no file named): interior contact rows on a trapezoidal mesh, a knee bound on
+# knee-less legs, the computed-torque law of the variants on a robot with a passive joint.
+OCPS="$ROOT/configs/ocp"
+run optimize --config "$OCPS/mu2004_walk.yaml" --out "$TMP/out_dir" --quiet --no-plots \
+  --set constraints.interior_contact=4 --set scheme=trapezoidal
+expect "interior contact, trapezoidal" 2 "key 'constraints.interior_contact': needs scheme: hermite_simpson"
+run optimize --config "$OCPS/compass_gait_walk.yaml" --out "$TMP/out_dir" --quiet --no-plots \
+  --set 'constraints.max_knee_flexion=[0.5, 0.5]'
+expect "knee bound, no knees" 2 "key 'constraints.max_knee_flexion': a knee flexion bound, but the robot's legs have no knees"
+run optimize --config "$OCPS/three_link_walk.yaml" --out "$TMP/out_dir" --quiet --no-plots \
+  --set 'variants=[{mass_scale: 1.1}]' --set variant_end_tolerance=0.1 \
+  --set 'variant_feedback={law: computed_torque, kp: 400, kd: 40, dsp_kp: 300, dsp_kd: 30}'
+expect "computed torque, passive ankle" 2 "key 'variant_feedback.law': computed_torque commands every joint, and the robot's joint 'stance_ankle' is passive"
+# A rate too low for the step is refused before the solve (it was refused after it).
+run optimize --config "$OCPS/mu2004_walk.yaml" --out "$TMP/out_dir" --quiet --no-plots --rate 5 \
+  --set solver.max_iterations=1
+expect "rate too low (optimize)" 2 "5 Hz samples the 0.7 s step 4 time\(s\), fewer than the 10"
+[[ ! -e "$TMP/out_dir.failed" ]] || fail "rate too low (optimize): Ipopt was run"
 
 # A config copied away from configs/ocp/: its robot, named relative to its own folder, is not
 # there; the error names the config, the key and where it looked.
