@@ -138,7 +138,8 @@ nlohmann::ordered_json violationJson(const Violation& v, const std::string& name
 /// Peak torques below this are a passive gait's, whose residual has no torque scale [N m].
 constexpr double kPassiveTorque = 1e-3;
 
-/// A strike slower than this lands at rest (solver tolerance), and no impact type applies [m/s].
+/// A strike slower than this, normal and tangential, lands at rest (solver tolerance), and no
+/// impact type applies [m/s].
 constexpr double kAtRest = 1e-6;
 
 /// |P_t| / P_n of an impulse, the share of its friction cone it uses (null without a push).
@@ -161,8 +162,9 @@ nlohmann::ordered_json strikeJson(const StrikeReport& s, const OcpConfig& config
           {"impulse_trailing", {s.impulse_trailing.x(), s.impulse_trailing.y()}},
           {"impulse_leading_cone_ratio", coneRatio(s.impulse_leading)},
           {"impulse_trailing_cone_ratio", coneRatio(s.impulse_trailing)},
-          {"impact_admitted", s.normal_velocity > kAtRest ? dynamics::toString(s.admitted)
-                                                          : "none: the tip lands at rest"}};
+          // a grazing strike (tangential only) is still an impact: its tip stops
+          {"impact_admitted", s.tip_velocity.norm() > kAtRest ? dynamics::toString(s.admitted)
+                                                              : "none: the tip lands at rest"}};
 }
 
 /// The objective term by term (the solver's quadrature), and the share of the torque-squared

@@ -209,4 +209,14 @@ assert d["cost"] < 1e-8, d["cost"]
 # the passive step of configs/ocp/compass_gait_passive.yaml (Newton shooting): 0.621817212397 s
 assert abs(d["duration"] - 0.621817212397) < 1e-3, d["duration"]
 PY
+# The compass-gait walk's tip lands grazing: 2.8 m/s along the ground, none into it. It still
+# strikes (its impulse stops the tip), so the summary names the impact, not a landing at rest.
+run optimize --config "$ROOT/configs/ocp/compass_gait_walk.yaml" --out "$TMP/grazing" --rate 200 \
+  --quiet --no-plots
+[[ $RC -eq 0 ]] || fail "grazing strike: exited $RC: $(cat "$TMP/err")"
+check_json "grazing strike" "$TMP/grazing/summary.json" <<'PY'
+s = d["strike"]
+assert s["tip_velocity"][0] > 2 and abs(s["normal_velocity"]) < 1e-6, s
+assert s["impact_admitted"] == "single", s["impact_admitted"]
+PY
 echo "optimize CLI: all checks passed"
