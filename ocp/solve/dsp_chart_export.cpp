@@ -11,6 +11,11 @@ namespace {
 /// Newton stops when E and the chart are met to this [m, rad].
 constexpr double kTolerance = 1e-13;
 constexpr int kMaxIterations = 30;
+/// Below this reciprocal condition number of the rows the chart is near its singularity (a leg
+/// stretched straight, where the hip's distance to its tip has a maximum), and the rates and
+/// accelerations solved from it amplify the solver's tolerance by its inverse: the point keeps
+/// its collocated values. The shipped optima stay above 5e-3.
+constexpr double kMinConditioning = 1e-6;
 
 /// Rows: E's position (2), the hip's (2), the upper-body angles; as chartValue and PinnedTip.
 MatD constraintJacobian(const dynamics::Model& model, const VecD& theta, int nc) {
@@ -80,6 +85,10 @@ bool projectOntoChart(const dynamics::Model& model, double step_length,
     theta -= constraintJacobian(model, theta, nc).partialPivLu().solve(f);
   }
   const auto lu = constraintJacobian(model, theta, nc).partialPivLu();
+  if (!(lu.rcond() >= kMinConditioning)) {
+    theta = start;
+    return false;
+  }
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(model.nLinks());
   rhs.tail(nc) = cdot;
   dtheta = lu.solve(rhs);

@@ -33,7 +33,8 @@ void placeOnChart(const dynamics::Model& model, double step_length, const ChartT
 /// `chart` = (c, cdot, cddot) (3 chartSize), by Newton's method from `theta` (which holds the
 /// start on entry): [J_E; J_hip; upper-body rows] dtheta = (0, cdot) and the same matrix for
 /// ddtheta with the bias terms. @return false, with theta, dtheta and ddtheta as they came in,
-/// when Newton does not reach the chain.
+/// when Newton does not reach the chain or the chain is near the chart's singularity (a stretched
+/// leg).
 bool projectOntoChart(const dynamics::Model& model, double step_length,
                       const Eigen::VectorXd& chart, VecD& theta, VecD& dtheta, VecD& ddtheta);
 

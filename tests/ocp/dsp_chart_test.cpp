@@ -3,12 +3,12 @@
 // export's projection onto the pinned chain, and the default problem's dense export holding E
 // on the ground at the points and between them (gaits::maxDspTipDrift), where collocating theta
 // lets it drift by 0.59 mm.
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
 #include <gtest/gtest.h>
-
-#include <algorithm>
 
 #include <fmt/format.h>
 
@@ -109,6 +109,32 @@ TEST(DspChart, AHipOutOfTheLegsReachIsRefusedAndTheStartKept) {
   VecD theta = start, dtheta, ddtheta;
   EXPECT_FALSE(projectOntoChart(model, c.step_length, chart, theta, dtheta, ddtheta));
   EXPECT_EQ(theta, start);
+}
+
+// A hip at the leading leg's full reach stretches that leg: there the hip's distance to E has a
+// maximum and the rows are singular, so rates solved from them amplify the solver's tolerance
+// (an optimum whose leading knee sat on its straight bound exported 450 000 N m). The
+// projection says so and leaves its start, as for a hip out of reach.
+TEST(DspChart, AStretchedLeadingLegIsRefusedAndTheStartKept) {
+  const auto c = reducedConfig("mu2004_walk.yaml");
+  const auto model = dynamics::loadRobot(c.robot_path);
+  const gaits::Trajectory guess = polynomialGuess(model, c);
+  const auto dsp = std::find_if(guess.knots().begin(), guess.knots().end(),
+                                [](const gaits::Knot& k) { return k.phase == gaits::Phase::kDsp; });
+  ASSERT_NE(dsp, guess.knots().end());
+  Eigen::VectorXd y(15);
+  y << dsp->theta, dsp->dtheta, dsp->ddtheta;
+  Eigen::VectorXd chart = chartValue(model, y);
+  const double reach = model.link(3).length + model.link(4).length;  // E's leg
+  const double lean = 0.4;  // sine of the stretched leg's lean back: B's leg still bends
+  chart(0) = c.step_length - reach * lean;
+  chart(1) = reach * std::sqrt(1 - lean * lean);
+  const VecD start = dsp->theta;
+  VecD theta = start, dtheta, ddtheta;
+  EXPECT_FALSE(projectOntoChart(model, c.step_length, chart, theta, dtheta, ddtheta));
+  EXPECT_EQ(theta, start);
+  chart(1) -= 0.01;  // a centimetre lower the leg bends, and the chain is found
+  EXPECT_TRUE(projectOntoChart(model, c.step_length, chart, theta, dtheta, ddtheta));
 }
 
 // The chart is the hip and upper body over two-link legs (Mu 2.19-2.21): a knee-less robot is
