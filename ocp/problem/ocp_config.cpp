@@ -72,7 +72,9 @@ void checkStepDuration(const YamlReader& root, const OcpConfig& c) {
     lo += p.freeDuration() ? p.duration_min : p.duration;
     hi += p.freeDuration() ? p.duration_max : p.duration;
   }
-  if (c.step_duration < lo || c.step_duration > hi || lo == hi)
+  if (lo == hi)
+    root.fail("step_duration", "needs a phase of free duration (duration_min/max) to share it");
+  if (c.step_duration < lo || c.step_duration > hi)
     root.fail("step_duration", fmt::format("expected a value in [{}, {}] s that free phase "
                                            "durations (duration_min/max) can reach",
                                            lo, hi));

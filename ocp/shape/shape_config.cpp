@@ -69,7 +69,15 @@ ShapeConfig readShapeConfig(const YamlReader& root) {
       if (root.has(key)) root.fail(key, "only meaningful with `variants`");
     return s;
   }
-  for (const auto& item : root.list("variants")) s.variants.push_back(readVariant(item));
+  for (const auto& item : root.list("variants")) {
+    const VariantConfig v = readVariant(item);
+    // A copy given twice duplicates its rows: the same plant weighed double, at twice the size.
+    for (const VariantConfig& before : s.variants)
+      if (before.mass_scale == v.mass_scale && before.length_scale == v.length_scale &&
+          before.controller_case == v.controller_case)
+        item.fail("mass_scale", "the same variant is given twice");
+    s.variants.push_back(v);
+  }
   if (s.variants.empty() || static_cast<int>(s.variants.size()) > kMaxVariants)
     root.fail("variants", "expected 1 to 8 variants besides the nominal");
   // Without the law a variant's torques are free and the ensemble says nothing.

@@ -72,6 +72,13 @@ run optimize --config "$OCPS/three_link_walk.yaml" --out "$TMP/out_dir" --quiet 
   --set 'variants=[{mass_scale: 1.1}]' --set variant_end_tolerance=0.1 \
   --set 'variant_feedback={law: computed_torque, kp: 400, kd: 40, dsp_kp: 300, dsp_kd: 30}'
 expect "computed torque, passive ankle" 2 "key 'variant_feedback.law': computed_torque commands every joint, and the robot's joint 'stance_ankle' is passive"
+run optimize --config "$OCPS/mu2004_walk.yaml" --out "$TMP/out_dir" --quiet --no-plots \
+  --set 'variants=[{mass_scale: 1.1}, {mass_scale: 1.1}]' --set variant_end_tolerance=0.1 \
+  --set 'variant_feedback={law: joint_pd, kp: 100, kd: 10}'
+expect "a variant twice" 2 "key 'variants\[1\]\.mass_scale': the same variant is given twice"
+run optimize --config "$OCPS/mu2004_walk.yaml" --out "$TMP/out_dir" --quiet --no-plots \
+  --set step_duration=0.7
+expect "step_duration, fixed phases" 2 "key 'step_duration': needs a phase of free duration"
 # A rate too low for the step is refused before the solve (it was refused after it).
 run optimize --config "$OCPS/mu2004_walk.yaml" --out "$TMP/out_dir" --quiet --no-plots --rate 5 \
   --set solver.max_iterations=1
