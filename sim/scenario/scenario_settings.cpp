@@ -25,7 +25,10 @@ std::string passiveAnkleOptions() {
 
 std::string groundPath(const std::string& ground) {
   if (findGround(ground)) return io::dataFile(groundRecord(ground));
-  if (std::filesystem::is_regular_file(ground)) return ground;
+  // A file as the docs spell it, configs/grounds/NAME.yaml, is the shipped one where the working
+  // directory has none (io::shippedIfMissing), as every other file option.
+  if (const std::string file = io::shippedIfMissing(ground); std::filesystem::is_regular_file(file))
+    return file;
   throw config::ConfigError(ground, "", 0,
                             fmt::format("neither a registered ground ({}) nor a ground file",
                                         fmt::join(groundNames(), ", ")));

@@ -159,6 +159,9 @@ def test_shipped_files_are_found_by_their_configs_path_from_any_folder(tmp_path,
     five = gaitopt.Robot("configs/robots/mu2004_five_link.yaml")
     assert gaitopt.design_poly(five, "configs/gaits/mu2004.yaml", 100).duration == \
         pytest.approx(0.7)
+    walk = gaitopt.simulate(five, gaitopt.design_poly(five, "configs/gaits/mu2004.yaml", 100),
+                            steps=1, ground="configs/grounds/rigid.yaml")  # a ground file too
+    assert len(walk["steps"]) == 1
     missing = "/".join(["configs", "robots", "nobody.yaml"])  # found nowhere: named as given
     with pytest.raises(gaitopt.InputError, match=missing):
         gaitopt.Robot(missing)
