@@ -110,6 +110,8 @@ nlohmann::ordered_json continuationJson(const ContinuationOptions& o,
                       {"max_violation", s.max_violation},
                       {"wall_time_s", s.wall_time_s}});
   return {{"steps", o.steps},
+          {"parameters", o.parameters},
+          {"sequential", o.sequential},
           {"spacing", o.geometric ? "geometric" : "linear"},
           {"cost_start", o.cost_start},
           {"halvings", o.halvings},

@@ -189,6 +189,9 @@ TEST(Continuation, PathIsRecordedInSummaryJsonAndEndsAtTheDirectOptimum) {
   ASSERT_TRUE(s.result.success) << s.result.status;
   const auto summary = solutionSummary({}, model, c, s, nullptr,
                                        reconstructDense(s.problem, model, s.result.x, 1000));
+  // the settings that chose the path: which groups moved, and how
+  EXPECT_EQ(summary.at("continuation").at("parameters"), std::vector<std::string>{"margins"});
+  EXPECT_EQ(summary.at("continuation").at("sequential"), false);
   const auto& stages = summary.at("continuation").at("stages");
   ASSERT_EQ(stages.size(), 4u);
   int iterations = 0;
