@@ -91,21 +91,25 @@ TEST(DspChart, ProjectionRecoversThePinnedChainFromItsChart) {
   EXPECT_GT(checked, 50);
 }
 
+/// The chart of the polynomial guess's first double-support knot, and that knot's angles.
+std::pair<Eigen::VectorXd, VecD> firstDspChart(const dynamics::Model& model, const OcpConfig& c) {
+  const gaits::Trajectory guess = polynomialGuess(model, c);
+  const auto dsp = std::find_if(guess.knots().begin(), guess.knots().end(),
+                                [](const gaits::Knot& k) { return k.phase == gaits::Phase::kDsp; });
+  if (dsp == guess.knots().end()) throw std::logic_error("the guess has no double support");
+  Eigen::VectorXd y(15);
+  y << dsp->theta, dsp->dtheta, dsp->ddtheta;
+  return {chartValue(model, y), dsp->theta};
+}
+
 // A hip beyond the legs' reach (the iterate of a failed solve can put it there) is no chart
 // point: the projection says so and leaves its start, where it used to throw and take the failed
 // solve's export with it.
 TEST(DspChart, AHipOutOfTheLegsReachIsRefusedAndTheStartKept) {
   const auto c = reducedConfig("mu2004_walk.yaml");
   const auto model = dynamics::loadRobot(c.robot_path);
-  const gaits::Trajectory guess = polynomialGuess(model, c);
-  const auto dsp = std::find_if(guess.knots().begin(), guess.knots().end(),
-                                [](const gaits::Knot& k) { return k.phase == gaits::Phase::kDsp; });
-  ASSERT_NE(dsp, guess.knots().end());
-  Eigen::VectorXd y(15);
-  y << dsp->theta, dsp->dtheta, dsp->ddtheta;
-  Eigen::VectorXd chart = chartValue(model, y);
+  auto [chart, start] = firstDspChart(model, c);
   chart(1) += 1.0;  // the hip a metre higher than legs of 0.63 m reach
-  const VecD start = dsp->theta;
   VecD theta = start, dtheta, ddtheta;
   EXPECT_FALSE(projectOntoChart(model, c.step_length, chart, theta, dtheta, ddtheta));
   EXPECT_EQ(theta, start);
@@ -118,18 +122,11 @@ TEST(DspChart, AHipOutOfTheLegsReachIsRefusedAndTheStartKept) {
 TEST(DspChart, AStretchedLeadingLegIsRefusedAndTheStartKept) {
   const auto c = reducedConfig("mu2004_walk.yaml");
   const auto model = dynamics::loadRobot(c.robot_path);
-  const gaits::Trajectory guess = polynomialGuess(model, c);
-  const auto dsp = std::find_if(guess.knots().begin(), guess.knots().end(),
-                                [](const gaits::Knot& k) { return k.phase == gaits::Phase::kDsp; });
-  ASSERT_NE(dsp, guess.knots().end());
-  Eigen::VectorXd y(15);
-  y << dsp->theta, dsp->dtheta, dsp->ddtheta;
-  Eigen::VectorXd chart = chartValue(model, y);
+  auto [chart, start] = firstDspChart(model, c);
   const double reach = model.link(3).length + model.link(4).length;  // E's leg
   const double lean = 0.4;  // sine of the stretched leg's lean back: B's leg still bends
   chart(0) = c.step_length - reach * lean;
   chart(1) = reach * std::sqrt(1 - lean * lean);
-  const VecD start = dsp->theta;
   VecD theta = start, dtheta, ddtheta;
   EXPECT_FALSE(projectOntoChart(model, c.step_length, chart, theta, dtheta, ddtheta));
   EXPECT_EQ(theta, start);
