@@ -89,7 +89,15 @@ AppendFile::~AppendFile() {
 }
 
 void AppendFile::append(std::string_view text) {
-  if (const int error = writeAll(fd_, text); error != 0) fail(path_, error);
+  const off_t before = ::lseek(fd_, 0, SEEK_END);
+  if (const int error = writeAll(fd_, text); error != 0) {
+    // A write cut short (a full disk) would leave a torn row for readers until a resume cuts
+    // it: the file goes back to its whole rows.
+    if (before >= 0) {
+      [[maybe_unused]] const int cut = ::ftruncate(fd_, before);  // best effort: it failed
+    }
+    fail(path_, error);
+  }
 }
 
 void AppendFile::truncate(long size) {

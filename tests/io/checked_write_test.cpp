@@ -1,6 +1,10 @@
 // Checked writes: the errno text reaches the message; a failed write leaves no partial file.
 #include "io/output/checked_write.hpp"
 
+#include <sys/resource.h>
+
+#include <csignal>
+
 #include "io_test_dir.hpp"
 
 namespace gaitopt::io::test {
@@ -77,6 +81,24 @@ TEST_F(CheckedWriteTest, AppendGrowsAndTruncateCutsATornLine) {
     f.truncate(4);
   }
   EXPECT_EQ(slurp(path("log.csv")), "h\n1\n");
+}
+
+// A disk that fills in the middle of a row (here a file-size limit of 12 bytes, which lets the
+// write through up to it and then fails with EFBIG): the file keeps its whole rows, with no
+// torn one for a reader to meet before a resume cuts it.
+TEST_F(CheckedWriteTest, AWriteCutShortLeavesTheRowsItHad) {
+  rlimit before{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &before), 0);
+  const auto sigxfsz = std::signal(SIGXFSZ, SIG_IGN);  // the write then fails with EFBIG
+  AppendFile f(path("rows.csv"));
+  f.append("h\n1\n");
+  rlimit limit = before;
+  limit.rlim_cur = 12;
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &limit), 0);
+  EXPECT_THROW(f.append("2,a long row past the limit\n"), WriteError);
+  ::setrlimit(RLIMIT_FSIZE, &before);
+  std::signal(SIGXFSZ, sigxfsz);
+  EXPECT_EQ(slurp(path("rows.csv")), "h\n1\n");
 }
 
 }  // namespace
