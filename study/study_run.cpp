@@ -114,6 +114,7 @@ StudyCounts runStudy(const StudyConfig& c, const std::string& dir, const StudyTo
     writeMarkdown(walkPivot(walks, 1 + c.axes.size()), dir + "/walks_by_plant.md");
   }
   if (!c.stability.empty()) writeBoth(sweeps, dir + "/stability");
+  counts.unfinished = *t.unfinished;
   return counts;
 }
 

@@ -17,6 +17,7 @@ namespace gaitopt::study {
 
 struct StudyCounts {
   int points = 0, converged = 0, walks = 0, sweeps = 0;
+  int unfinished = 0;  ///< runs that ended without a result, to redo (StudyTools::unfinished)
 };
 
 /// Runs the study's lines (the points along its last axis, one after another: a warm start needs

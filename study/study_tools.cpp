@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "io/exit_code.hpp"
 #include "io/output/checked_write.hpp"
 #include "io/spawn.hpp"
 #include "io/strict_json.hpp"
@@ -32,11 +33,16 @@ int runTool(const StudyTools& t, std::vector<std::string> args, const std::strin
   args.insert(args.begin(), t.gaitopt);
   args.insert(args.end(), {"--out", out, "--no-plots"});
   const int status = io::runProgramInto(args, out + ".log");
-  // A run refused (bad input) or killed wrote no summary, not even a failed solve's: remember
-  // why, so a rerun of the study does not start it again (deleting OUT.exit does).
-  if (status != 0 && !std::filesystem::exists(out + "/summary.json") &&
-      !std::filesystem::exists(out + ".failed/summary.json"))
+  const bool no_result = status != 0 && !std::filesystem::exists(out + "/summary.json") &&
+                         !std::filesystem::exists(out + ".failed/summary.json");
+  if (!no_result) return status;
+  // A run refused as bad input is refused again: remembered, so a rerun of the study does not
+  // start it (deleting OUT.exit does). One killed or stopped by the machine (a full disk) is
+  // not: the rerun redoes it.
+  if (status == io::kExitInputError)
     io::writeFileAtomically(out + ".exit", std::to_string(status));
+  else
+    ++*t.unfinished;
   return status;
 }
 

@@ -9,7 +9,9 @@
 #include "apps/command_runner.hpp"
 #include "apps/shipped_file.hpp"
 #include "config/overrides.hpp"
+#include "io/exit_code.hpp"
 #include "io/output/output_folder.hpp"
+#include "io/terminal_text.hpp"
 #include "parallel/parallel_for.hpp"
 #include "study/study_run.hpp"
 #include "study/study_settings.hpp"
@@ -32,6 +34,14 @@ void runStudyCommand(const StudyOptions& o) {
   fmt::print("study: {}: {} of {} solves converged, {} walks, {} sweeps; wrote {}/solves.csv{}\n",
              config.name, n.converged, n.points, n.walks, n.sweeps, folder.path(),
              config.walks.empty() ? "" : ", walks.csv");
+  if (n.unfinished > 0)
+    throw io::CommandError(
+        io::kExitFailure,
+        fmt::format("{} ended without a result (killed, or stopped by the machine, e.g. a full "
+                    "disk: see its .log under {}); the tables hold the rest. Run the study "
+                    "again to redo {}",
+                    io::counted(static_cast<std::size_t>(n.unfinished), "run"), folder.path(),
+                    n.unfinished == 1 ? "it" : "them"));
 }
 
 void registerStudyCommand(CLI::App& app) {

@@ -11,6 +11,8 @@
 #include <tuple>
 #include <vector>
 
+#include <unistd.h>
+
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -19,6 +21,7 @@
 #include "study/study_points.hpp"
 #include "study/study_settings.hpp"
 #include "study/study_table.hpp"
+#include "study/study_tools.hpp"
 #include "study/walk_pivot.hpp"
 #include "support/config_text.hpp"
 
@@ -255,6 +258,35 @@ TEST(StudyConfig, EveryShippedStudyLoads) {
     EXPECT_NO_THROW(loadStudyConfig(entry.path().string())) << entry.path().filename();
   }
   EXPECT_GE(studies, 14);
+}
+
+// A run refused as bad input (exit 2) is refused again, so its status is kept and it is not
+// restarted; a run killed or stopped by the machine (a full disk: exit 1) left no result for a
+// reason that may be gone, so the next run of the study starts it again, and it is counted.
+TEST(StudyTools, OnlyARefusedRunIsRememberedAKilledOneIsRedone) {
+  const std::string dir =
+      (std::filesystem::temp_directory_path() / fmt::format("gaitopt_study_tools_{}", ::getpid()))
+          .string();
+  std::filesystem::create_directories(dir);
+  const auto standIn = [&](const std::string& name, const std::string& body) {
+    const std::string path = dir + "/" + name;
+    std::ofstream(path) << "#!/bin/sh\n" << body << "\n";
+    std::filesystem::permissions(path, std::filesystem::perms::owner_all);
+    return path;
+  };
+  StudyTools refused{standIn("refused", "exit 2"), {}};
+  EXPECT_EQ(runTool(refused, {}, dir + "/a", "a"), 2);
+  EXPECT_EQ(readFile(dir + "/a.exit"), "2");
+  EXPECT_EQ(*refused.unfinished, 0);
+  StudyTools killed{standIn("killed", "kill -9 $$"), {}};
+  EXPECT_EQ(runTool(killed, {}, dir + "/b", "b"), 137);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/b.exit"));
+  EXPECT_EQ(*killed.unfinished, 1);
+  StudyTools full_disk{standIn("full_disk", "exit 1"), {}};
+  EXPECT_EQ(runTool(full_disk, {}, dir + "/b", "b"), 1);  // started again
+  EXPECT_EQ(*full_disk.unfinished, 1);
+  EXPECT_EQ(runTool(full_disk, {}, dir + "/a", "a"), 2);  // the refusal is not repeated
+  std::filesystem::remove_all(dir);
 }
 
 TEST(StudyTable, CsvQuotesWhatWouldSplitAFieldAndMarkdownEscapesBars) {
