@@ -1,6 +1,8 @@
 /// @file main.cpp
 /// The `gaitopt` command-line tool. Each subcommand lives in its own <name>_command.cpp and is
 /// registered in cli_app.cpp; exit codes are listed in command_runner.hpp.
+#include <cstdio>
+
 #include <CLI/CLI.hpp>
 
 #include "apps/cli_app.hpp"
@@ -26,6 +28,9 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A line on stdout is out as soon as it is printed, also into a file: a run interrupted or
+  // killed overnight keeps its log up to its last line (a full buffer was lost with it).
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   int code = gaitopt::io::kExitOk;
   const int status = gaitopt::apps::runReportingErrors([&] { code = run(argc, argv); });
   return status != gaitopt::io::kExitOk ? status : code;
