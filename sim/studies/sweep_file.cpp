@@ -78,8 +78,11 @@ void SweepFile::append(const SweepRow& row) {
                  row.max_multiplier < 0 ? std::string() : number(row.max_multiplier),
                  number(row.mean_advance), number(row.wall_time_s)});
   log_.append(fields);
+  // Kept as a resumed run reads it back from the file (values to the file's digits), so a
+  // resumed run's summary is the uninterrupted run's, byte for byte.
+  const SweepRow kept = parseRow(fields, map_ ? 2 : 1).value_or(row);
   const std::lock_guard lock(mutex_);  // counted only once it is on disk
-  rows_[keyOf(row)] = row;
+  rows_[keyOf(kept)] = kept;
 }
 
 }  // namespace gaitopt::sim

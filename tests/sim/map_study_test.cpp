@@ -102,5 +102,27 @@ TEST(SweepFile, MapRowsAreKeyedByBothValuesAcrossAReopen) {
   std::filesystem::remove(path);
 }
 
+// A run that wrote a row holds it as a resumed run reads it back: values to the file's digits
+// (a resumed stability summary said 0.4842105263 where the uninterrupted one said
+// 0.4842105263157894).
+TEST(SweepFile, ARowIsHeldAsAResumedRunReadsIt) {
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("gaitopt_sweep_" + std::to_string(::getpid()) + ".csv"))
+                               .string();
+  std::filesystem::remove(path);
+  const double value = 0.4842105263157894;
+  SweepFile file(path, {"friction"});
+  SweepRow r = row(value, 0, true);
+  r.max_tracking_error = 1.0 / 3;
+  file.append(r);
+  const SweepFile back(path, {"friction"});
+  const SweepRow& now = file.rows().at(SweepFile::key(value));
+  const SweepRow& resumed = back.rows().at(SweepFile::key(value));
+  EXPECT_EQ(now.value, resumed.value);
+  EXPECT_EQ(now.value, 0.4842105263);
+  EXPECT_EQ(now.max_tracking_error, resumed.max_tracking_error);
+  std::filesystem::remove(path);
+}
+
 }  // namespace
 }  // namespace gaitopt::sim
