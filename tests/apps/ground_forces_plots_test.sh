@@ -48,4 +48,22 @@ rm "$TMP/chatter/walk.csv"
 "$PY" "$chart" "$TMP/out2" "$TMP/smooth" "$TMP/chatter" >/dev/null 2>"$TMP/err"
 [[ $? -eq 1 ]] && grep -q "^error: $TMP/chatter/walk.csv: cannot read" "$TMP/err" ||
   fail "missing walk log: $(cat "$TMP/err")"
+# The first touchdown's window: E loaded at the walk's start (both feet down) is not a
+# touchdown; the window starts at E's rise after a sample without load and follows the same
+# foot as B after the step change renames the tips.
+PYTHONPATH="$ROOT/plots" "$PY" - <<'PY' || fail "touchdown window"
+import numpy as np
+import ground_forces_chart as chart
+t = np.arange(0, 1.0, 0.001)
+step = np.where(t < 0.55, 1, 2)
+e = np.where(t < 0.003, 200.0, 0.0) + np.where((t >= 0.5) & (t < 0.55), 60.0, 0.0)
+b = np.where(t < 0.55, 300.0, 0.0) + np.where(t >= 0.55, 250.0, 0.0)
+ms, force = chart.touchdown_window(t, step, b, e)
+assert abs(ms[np.argmax(force > 1.0)]) < 1e-9, ms[np.argmax(force > 1.0)]  # touchdown at 0.5 s
+assert ms[0] < -39 and ms[-1] > 79, (ms[0], ms[-1])
+assert np.all(force[(ms > 0) & (ms < 49)] == 60.0) and np.all(force[ms > 51] == 250.0)
+# A rigid ground: E never carries load, the step change is the touchdown.
+ms, force = chart.touchdown_window(t, step, b, np.zeros_like(t))
+assert abs(ms[np.argmax(force > 1.0)]) < 1e-9 and force[-1] == 250.0
+PY
 echo "ground_forces_plots_test: all checks passed"
