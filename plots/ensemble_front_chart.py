@@ -171,9 +171,7 @@ def draw(rows, path):
                     markersize=size, label=ground)
             drawn += points
         label_points(ax, drawn)
-        ax.axvline(FALLS_AT / 2, color="0.6", lw=0.8, ls=":")
-        ax.set_xticks([FALLS_AT] + [t for t in ax.get_xticks() if t >= 0])
-        ax.set_xticklabels(["falls\nat ×1"] + [f"{t:g}" for t in ax.get_xticks()[1:]])
+        style.falls_column(ax, FALLS_AT)
         style.finish(ax, "plant-mass interval walked 20 steps (width)", "cost / default optimum's",
                      title=label)
     fig.suptitle("Ensemble widths: cost against the mass interval walked "

@@ -92,6 +92,18 @@ def finish(ax, xlabel, ylabel, title=None, legend=True, **legend_kw):
         ax.legend(**legend_kw)
 
 
+def falls_column(ax, x):
+    """Marks x < 0 as the column of points that fall on the nominal plant: a dotted line
+    between it and the intervals (which start at 0, a gait walking the nominal plant only) and
+    the tick "falls at ×1" in place of a number, so a fall is not read as an interval of 0."""
+    ax.axvline(x / 2, color="0.6", lw=0.8, ls=":")
+    lo, hi = ax.get_xlim()
+    ticks = [t for t in ax.get_xticks() if 0 <= t <= hi]  # set_xticks would widen the axis
+    ax.set_xticks([x] + ticks)
+    ax.set_xticklabels(["falls\nat ×1"] + [f"{t:g}" for t in ticks])
+    ax.set_xlim(min(lo, 1.5 * x), hi)
+
+
 def remove_leftovers(folder, name):
     """Removes NAME.tmp-PID-* files of processes that no longer run: a run killed while it drew
     left them in a folder its rerun writes into again (a library's picture)."""

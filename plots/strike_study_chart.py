@@ -2,6 +2,7 @@
 """Cost against robustness of the strike study (configs/studies/strike_study.yaml).
 
 Usage: strike_study_chart.py STUDY_DIR OUT_DIR
+       strike_study_chart.py --redraw OUT_DIR
 STUDY_DIR is the folder `gaitopt study` wrote: solves.csv (one row per variant: the
 friction_margin, zmp_margin and strike_velocity labels and the run's folder), runs/FOLDER
 (summary.json of `gaitopt optimize`; none after a failed solve) and one `gaitopt stability`
@@ -15,6 +16,8 @@ and mass_error sweeps. Writes, printing their paths:
   OUT_DIR/strike_study.png  cost against the widest push interval (left) and the widest mass
                             interval (right) over the controllers, one point per variant: colour
                             the strike velocity, marker the margins
+--redraw draws OUT_DIR/strike_study.png again from OUT_DIR/strike_study.csv alone (the study's
+runs/ and stability/ folders are not kept in results/).
 A missing or malformed summary ends the script with "error: <file>: ..." and exit code 1.
 """
 import csv
@@ -29,6 +32,8 @@ AXES = ["strike_velocity", "friction_margin", "zmp_margin"]
 CONTROLLERS = ["computed_torque", "sliding_mode", "mu_sliding_mode"]
 # Sweep name in summary.json: (column prefix, scale to the table's unit, unit).
 SWEEPS = {"push": ("push", 1.0, "N s"), "mass_error": ("mass", 100.0, "%")}
+# A variant falling at nominal sits this fraction of the axis's widest interval left of 0.
+FALLS_FRACTION = 0.12
 MARKERS = ["o", "s", "D", "^", "v", "P", "*", "h"]
 FIELDS = ["variant", "strike_velocity", "friction_margin", "zmp_margin", "status", "cost",
           "min_zmp_margin", "max_friction_ratio", "controller", "push_from", "push_to",
@@ -95,10 +100,45 @@ def read_study(study):
     return [r for v in variants for r in variant_rows(study, v)]
 
 
+def read_table(path):
+    """The rows write_csv wrote, as read_study returns them: an empty cell is a missing key
+    (a failed solve has no cost, a variant not swept no controller) or None for an interval."""
+    header, lines = plot_io.read_rows(path, "strike study table")
+    plot_io.require_columns(path, header, FIELDS)
+    numbers = set(AXES) | {"cost", "min_zmp_margin", "max_friction_ratio"}
+    bounds = {"push_from", "push_to", "mass_from", "mass_to"}
+    rows = []
+    for line, cells in enumerate(lines, start=2):
+        r = {}
+        try:
+            for name, text in zip(header, cells):
+                if name in bounds:
+                    r[name] = float(text) if text else None
+                elif text:
+                    r[name] = float(text) if name in numbers else text
+        except ValueError as e:
+            raise InputError(f"{path}: line {line}: {e}") from None
+        rows.append(r)
+    return rows
+
+
 def width(r, column):
-    """Length of a walking interval, 0 when the walk fails at nominal."""
+    """Length of a walking interval, None when the walk fails at nominal."""
     lo, hi = r.get(f"{column}_from"), r.get(f"{column}_to")
-    return 0.0 if lo is None else hi - lo
+    return None if lo is None else hi - lo
+
+
+def widest(rs, column):
+    """The widest walking interval of a variant over its controllers, None when every one
+    fails at nominal (a fall is not an interval of 0: that is a gait walking the nominal only)."""
+    walked = [w for w in (width(x, column) for x in rs if "controller" in x) if w is not None]
+    return max(walked, default=None)
+
+
+def falls_x(widths):
+    """Where a variant that falls at nominal is drawn: left of 0 by FALLS_FRACTION of the
+    widest interval drawn (of 5 units, the empty axis's width, when none is wider than 0)."""
+    return -FALLS_FRACTION * (max([w for w in widths if w is not None] + [0]) or 5.0)
 
 
 def interval(r, column):
@@ -151,22 +191,24 @@ def chart(rows, path):
     margins = sorted({(rs[0]["friction_margin"], rs[0]["zmp_margin"]) for rs in solved})
     cmap = plt.cm.viridis
     for ax, (sweep, (column, _, unit)) in zip(axes, SWEEPS.items()):
-        widest = []
-        for rs in solved:
+        widths = [widest(rs, column) for rs in solved]
+        falls = falls_x(widths)
+        for rs, w in zip(solved, widths):
             r = rs[0]
             k = margins.index((r["friction_margin"], r["zmp_margin"]))
             colour = cmap(velocities.index(r["strike_velocity"]) / max(len(velocities) - 1, 1))
-            widest.append(max([width(x, column) for x in rs if "controller" in x], default=0))
-            ax.scatter(widest[-1], r["cost"], color=colour,
+            ax.scatter(falls if w is None else w, r["cost"], color=colour,
                        marker=MARKERS[k % len(MARKERS)], s=46, edgecolor="0.2", lw=0.5)
         ax.set_yscale("log")
         ax.set_yticks([100, 200, 500, 1000, 2000], ["100", "200", "500", "1000", "2000"])
         ax.yaxis.set_minor_formatter(NullFormatter())  # no "6x10^2" between
-        if not any(widest):  # an axis of one value would centre it on a range of nothing
-            ax.set_xlim(-0.5, 5)
+        if not any(widths):  # an axis of one value would centre it on a range of nothing
+            ax.set_xlim(2 * falls, 5)
             what = sweep.replace("_", " ")
-            ax.text(0.5, 0.03, f"no variant walks a {what} but the nominal one",
-                    transform=ax.transAxes, ha="center", fontsize=8)
+            ax.text(0.97, 0.97, f"no variant walks a {what} but the nominal one",
+                    transform=ax.transAxes, ha="right", va="top", fontsize=8)  # off the points
+        if any(w is None for w in widths):
+            style.falls_column(ax, falls)
         style.finish(ax, f"widest walking {sweep} interval over the controllers [{unit}]",
                      "cost of the optimum [N² m² s]", legend=False)
     for v in velocities:
@@ -175,14 +217,19 @@ def chart(rows, path):
     for k, (fm, zm) in enumerate(margins):
         axes[1].scatter([], [], color="0.6", marker=MARKERS[k % len(MARKERS)],
                         label=f"friction margin {fm:g}, ZMP margin {zm:g} m")
-    axes[0].legend(loc="center right")  # the walking points sit at the top right
-    axes[1].legend(loc="center right")
+    for ax in axes:  # below the axes: the points fill every corner
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, fontsize=8)
     fig.suptitle("Cost against robustness: five-link optimum (mu2004_walk), 20 steps per point")
     fig.tight_layout()
     style.save(fig, path)
 
 
 def main(args):
+    if args[0] == "--redraw":
+        png = os.path.join(args[1], "strike_study.png")
+        chart(read_table(os.path.join(args[1], "strike_study.csv")), png)
+        print(png)
+        return
     work, out = args
     rows = read_study(work)
     os.makedirs(out, exist_ok=True)

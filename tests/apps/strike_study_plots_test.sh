@@ -48,6 +48,20 @@ grep -qF "0.75: step 3: foot rotation" "$TMP/out/strike_study.csv" || fail "fail
 grep -qF "at nominal: step 1: foot rotation" "$TMP/out/strike_study.csv" ||
   fail "nominal failure not in csv: $(cat "$TMP/out/strike_study.csv")"
 
+# A variant falling at nominal under every controller is drawn in the "falls at ×1" column left
+# of 0 (not at 0, a gait walking the nominal plant only); --redraw reads the CSV back alike.
+(cd "$ROOT/plots" && "$PY" - "$TMP/out/strike_study.csv" <<'PY') || fail "falls column"
+import sys
+import strike_study_chart as chart
+rows = chart.read_table(sys.argv[1])
+rest = [r for r in rows if r["variant"] == "v0_f0.15_z0.06"]
+assert chart.widest(rest, "push") == 0.5 and chart.widest(rest, "mass") is None, rest
+assert chart.falls_x([0.5, None]) < 0 and chart.falls_x([None]) < 0
+assert chart.widest([{"controller": "c", "mass_from": 0.0, "mass_to": 0.0}], "mass") == 0.0
+PY
+"$PY" "$chart" --redraw "$TMP/out" >"$TMP/printed" && grep -qx "$TMP/out/strike_study.png" "$TMP/printed" ||
+  fail "--redraw: $(cat "$TMP/printed")"
+
 echo '{"cost": "high", "min_zmp_margin": 0.06, "max_friction_ratio": null}' \
   >"$work/runs/$rest/summary.json"
 "$PY" "$chart" "$work" "$TMP/out" >/dev/null 2>"$TMP/err" && fail "a broken summary passed"
