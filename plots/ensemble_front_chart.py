@@ -13,7 +13,9 @@ optimum (summary.json's cost). Writes into STUDY_DIR, printing their paths:
   OUT_DIR/front.md   the same as a table
   OUT_DIR/front.png  cost ratio against the width of each interval, one line per ground and
                      controller, the points labelled with the ensemble width; a gait that
-                     falls on the nominal plant left of the intervals, under "falls at ×1"
+                     falls on the nominal plant left of the intervals, under "falls at ×1";
+                     an open marker where the interval reaches the end of its ground's sweep
+                     (the legend gives each ground's range)
 A missing or malformed input ends the script with "error: <file>: ..." and exit code 1.
 """
 import os
@@ -39,6 +41,23 @@ def interval(walks):
     while j + 1 < len(masses) and walks[masses[j + 1]] == 20:
         j += 1
     return masses[i], masses[j]
+
+
+def cut_by_sweep(walked, masses):
+    """True when an interval reaches the lowest or highest plant swept: the sweep, not a fall,
+    ends it there, so its true width is unknown (at least the one drawn)."""
+    return walked is not None and (walked[0] == min(masses) or walked[1] == max(masses))
+
+
+def sweep_ranges(walks):
+    """{ground: (lowest, highest) plant mass swept} over every width and controller: the
+    grounds are swept over different ranges (rigid ±0.2, LCP and DART ±0.1 in the shipped
+    study), so equal widths are not equally robust."""
+    ranges = {}
+    for (_, ground, _), masses in walks.items():
+        lo, hi = ranges.get(ground, (min(masses), max(masses)))
+        ranges[ground] = (min(lo, *masses), max(hi, *masses))
+    return ranges
 
 
 def plant_mass(error):
@@ -96,7 +115,9 @@ def rows_of(widths, walks, default_cost):
         row.update({k: s[k] for k in POSTURE})
         for ground in GROUNDS:
             for controller in CONTROLLERS:
-                row[(ground, controller)] = interval(walks.get((width, ground, controller), {}))
+                masses = walks.get((width, ground, controller), {})
+                row[(ground, controller)] = interval(masses)
+                row[(ground, controller, "cut")] = cut_by_sweep(row[(ground, controller)], masses)
         rows.append(row)
     return rows
 
@@ -148,6 +169,12 @@ def front_points(rows, ground, controller):
     return points
 
 
+def cut_points(rows, ground, controller):
+    """[(interval width, cost ratio)] of the converged widths whose interval the sweep cuts."""
+    return [(r[(ground, controller)][1] - r[(ground, controller)][0], r["cost_ratio"])
+            for r in rows if r["converged"] and r.get((ground, controller, "cut"))]
+
+
 def label_points(ax, points):
     """One label per place (cost ratios equal to 0.01 share one), naming every ensemble width
     drawn there ("W=5, 10")."""
@@ -160,31 +187,50 @@ def label_points(ax, points):
                     textcoords="offset points")
 
 
-def draw(rows, path):
+def ground_label(ground, ranges):
+    """The legend's name of a ground with the plant masses it was swept over."""
+    if ground not in ranges:
+        return ground
+    lo, hi = ranges[ground]
+    return f"{ground} (swept ×{lo:g}–{hi:g})"
+
+
+def draw(rows, path, ranges=None):
     plt = style.pyplot()
-    fig, axes = plt.subplots(1, len(CONTROLLERS), figsize=(9, 3.8), sharey=True)
+    ranges = ranges or {}
+    fig, axes = plt.subplots(1, len(CONTROLLERS), figsize=(9, 4.6), sharey=True)
     for ax, (controller, label) in zip(axes, CONTROLLERS.items()):
         drawn = []
         for ground, marker, size in zip(GROUNDS, "osD", MARKER_SIZES):
             points = front_points(rows, ground, controller)
-            ax.plot([p[0] for p in points], [p[1] for p in points], marker=marker,
-                    markersize=size, label=ground)
+            line, = ax.plot([p[0] for p in points], [p[1] for p in points], marker=marker,
+                            markersize=size, label=ground_label(ground, ranges))
+            cut = cut_points(rows, ground, controller)
+            # Open markers: the interval is at least this wide, the sweep ended it.
+            ax.plot([p[0] for p in cut], [p[1] for p in cut], ls="none", marker=marker,
+                    markersize=size, color=line.get_color(), markerfacecolor="white")
             drawn += points
         label_points(ax, drawn)
         style.falls_column(ax, FALLS_AT)
         style.finish(ax, "plant-mass interval walked 20 steps (width)", "cost / default optimum's",
-                     title=label)
+                     title=label, legend=False)
+    handles, labels = axes[0].get_legend_handles_labels()
+    handles.append(axes[0].plot([], [], ls="none", marker="o", color="0.3",
+                                markerfacecolor="white")[0])
+    labels.append("open: reaches the end of its sweep (cut off by it)")
+    fig.legend(handles, labels, loc="lower center", ncol=2, fontsize=8)
     fig.suptitle("Ensemble widths: cost against the mass interval walked "
                  "(points: ensemble width W %)", fontsize=9)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0.13, 1, 1))
     style.save(fig, path)
 
 
 def main(out, default_gait):
     widths = read_solves(os.path.join(out, "solves.csv"))
-    rows = rows_of(widths, read_walks(os.path.join(out, "walks.csv")), default_cost(default_gait))
+    walks = read_walks(os.path.join(out, "walks.csv"))
+    rows = rows_of(widths, walks, default_cost(default_gait))
     write_tables(rows, out)
-    draw(rows, os.path.join(out, "front.png"))
+    draw(rows, os.path.join(out, "front.png"), sweep_ranges(walks))
     for name in ("front.csv", "front.md", "front.png"):
         print(os.path.join(out, name))
 

@@ -54,6 +54,19 @@ assert chart.FALLS_AT < 0 and points == [(0.0, 1.5, 5), (chart.FALLS_AT, 1.6, 10
 fig, ax = plot_style.pyplot().subplots()
 chart.label_points(ax, [(0.2, 1.690, 5), (0.2, 1.692, 10), (0.3, 1.7, 15), (0.2, 1.8, 20)])
 assert sorted(t.get_text() for t in ax.texts) == ["W=15", "W=20", "W=5, 10"], ax.texts
+# An interval reaching its sweep's end is cut off by it; each ground's range for the legend.
+walks = {(10, "rigid", "computed_torque"): {0.8: 0, 0.9: 20, 1.0: 20, 1.1: 20, 1.2: 3},
+         (10, "lcp", "computed_torque"): {0.9: 20, 1.0: 20, 1.1: 20}}
+assert not chart.cut_by_sweep((0.9, 1.1), walks[(10, "rigid", "computed_torque")])
+assert chart.cut_by_sweep((0.9, 1.1), walks[(10, "lcp", "computed_torque")])
+assert not chart.cut_by_sweep(None, walks[(10, "lcp", "computed_torque")])
+ranges = chart.sweep_ranges(walks)
+assert ranges == {"rigid": (0.8, 1.2), "lcp": (0.9, 1.1)}, ranges
+assert chart.ground_label("lcp", ranges) == "lcp (swept ×0.9–1.1)"
+rows = [{"converged": True, "cost_ratio": 2.0, "width_percent": 10, ("lcp", "computed_torque"):
+         (0.9, 1.1), ("lcp", "computed_torque", "cut"): True}]
+assert [tuple(round(v, 9) for v in p) for p in chart.cut_points(rows, "lcp", "computed_torque")] \
+    == [(0.2, 2.0)]
 PY
 
 echo '{"status": "Solve_Succeeded"}' >"$TMP/default/summary.json"
