@@ -8,8 +8,9 @@ hip x from the tight rigid reference (the path); right, the difference of the wa
 (the timing). A time step whose walk failed (diverged, slipped, fell) is a red-edged X at its
 own wall time and value, labelled with the step and the failure; where the value does not exist
 (no end time) or the wall time is not positive (too short to show on the log axis), the failure
-is a left-pointing marker on the axis edge and named in the note under the panel. The legend
-sits under the panels, so it hides no point.
+is a left-pointing marker on the axis edge and named in the notes under the panels, one line
+each. The legend sits under the panels, so it hides no point; its failure marker shows only
+when a panel draws one.
 Prints the picture's path, then a markdown table of the rows.
 """
 import os
@@ -74,12 +75,34 @@ def draw(ax, rows, column, ylabel):
                         fontsize=7, color=style.FAIL, va="top",
                         bbox={"fc": "w", "ec": "none", "alpha": 0.85, "pad": 1})
         ax.set_xlim(left=left)
-    ax.plot([], [], "X", color="0.6", mec=style.FAIL, mew=1.5, ms=9, ls="none",
-            label="walk failed (at its wall time)")
+    if any(line.get_marker() == "X" for line in ax.lines):  # no legend entry for no marker
+        ax.plot([], [], "X", color="0.6", mec=style.FAIL, mew=1.5, ms=9, ls="none",
+                label="walk failed (at its wall time)")
     ax.set_xlabel("wall time of a 10-step walk [s]")
     ax.set_ylabel(ylabel)
     ax.grid(True, which="both", alpha=0.3)
     return notes
+
+
+NOTE_WIDTH = 150  # characters of a note's line across the figure's width
+
+
+def note_lines(notes):
+    """One line per distinct note, wrapped at NOTE_WIDTH: joined on one line they ran off
+    both edges of the figure."""
+    lines = []
+    for note in dict.fromkeys(notes):
+        lines += textwrap.wrap(note, NOTE_WIDTH, subsequent_indent="    ")
+    return lines
+
+
+def legend_entries(axes):
+    """(handles, labels) of every panel without repeats: the failure marker may be on either."""
+    entries = {}
+    for ax in axes:
+        for handle, label in zip(*ax.get_legend_handles_labels()):
+            entries.setdefault(label, handle)
+    return list(entries.values()), list(entries)
 
 
 def table(rows):
@@ -101,15 +124,20 @@ def main(path):
     notes = draw(path_ax, rows, "hip_deviation_m",
                  "path: max hip height difference at equal hip x [m]")
     notes += draw(time_ax, rows, "timing_s", "timing: end time difference after 10 steps [s]")
-    handles, labels = path_ax.get_legend_handles_labels()
-    fig.legend(handles, labels, loc="lower center", ncol=len(labels))
-    if notes:
-        fig.text(0.5, 0.065, "; ".join(dict.fromkeys(notes)), ha="center",
-                 fontsize=8, color=style.FAIL)
+    handles, labels = legend_entries((path_ax, time_ax))
+    lines = note_lines(notes)
+    line_height = 0.026  # of the figure's height, one 8-point line at 1.3 spacing, with a gap
+    notes_top = 0.015 + line_height * len(lines)
+    bottom = 0.06 + notes_top
+    fig.legend(handles, labels, loc="lower center", ncol=len(labels),
+               bbox_to_anchor=(0.5, notes_top))
+    if lines:
+        fig.text(0.5, 0.01, "\n".join(lines), ha="center", va="bottom", fontsize=8,
+                 color=style.FAIL, linespacing=1.3)
     fig.suptitle("Speed against accuracy of the ground models, against a tight rigid reference "
                  "(labels: time step [s])")
     out = os.path.join(os.path.dirname(os.path.abspath(path)), "ground_speed_accuracy.png")
-    fig.tight_layout(rect=(0, 0.09 if notes else 0.06, 1, 1))
+    fig.tight_layout(rect=(0, bottom, 1, 1))
     style.save(fig, out)
     print(f"wrote {os.path.basename(out)}", file=sys.stderr)
     print(table(rows))

@@ -519,6 +519,12 @@ notes = gc.draw(b, rows, "timing_s", "timing: y")
 assert notes == ["soft (floor), h = 0.001 s failed: step 1: diverged: no timing value to draw"], notes
 xs = [x for line in a.lines for x in line.get_xdata() if line.get_marker() == "X"]
 assert 0.002 in xs, xs
+# The failure marker is in the legend of a panel that draws one only; notes one line each.
+assert "walk failed (at its wall time)" in a.get_legend_handles_labels()[1]
+assert "walk failed (at its wall time)" not in b.get_legend_handles_labels()[1]
+assert gc.legend_entries((a, b))[1].count("walk failed (at its wall time)") == 1
+lines = gc.note_lines(["a note", "x " * 100, "a note"])
+assert lines[0] == "a note" and len(lines) == 3 and all(len(l) <= gc.NOTE_WIDTH for l in lines), lines
 PY
 
 # (i) multipliers_plot.py: the walks with multipliers on the unit circle, a walk that fell named
