@@ -196,22 +196,47 @@ def time_colours(w):
     return style.time_colours(w.t[0], w.t[-1])
 
 
+# At most this many step labels on a time axis: twenty side by side ran into each other and,
+# drawn upright inside the axes, into the curves.
+MAX_STEP_LABELS = 6
+
+
+def labelled_steps(starts):
+    """The (step, t) of `starts` that get a label: every k-th, at most MAX_STEP_LABELS."""
+    stride = max(1, math.ceil(len(starts) / MAX_STEP_LABELS))
+    return starts[::stride]
+
+
 def mark_steps(ax, w, labels=True):
-    """Shades DSP intervals and dots step starts, labelled with the step number and the impact
-    that began it; a red line at the end of a walk that fell."""
+    """Shades DSP intervals and dots step starts; with `labels`, some step starts are labelled
+    with the step number and the impact that began it above the axes, off the curves (the title
+    moves up to make room); a red line at the end of a walk that fell."""
     for k, (a, b) in enumerate(w.dsp_intervals()):
         ax.axvspan(a, b, **style.DSP_SHADE, label="DSP" if k == 0 else None)
-    for k, (step, t) in enumerate(w.step_starts()):
+    starts = list(w.step_starts())
+    for k, (step, t) in enumerate(starts):
         ax.axvline(t, color="k", ls=":", lw=0.8, label="step start" if k == 0 else None)
-        if labels:
+    if labels:
+        for step, t in labelled_steps(starts):
             impact = w.impact_before(step)
-            # Upright: ten steps' labels side by side ran into each other.
-            ax.annotate(f"{step}" + (f" ({impact})" if impact else ""), (t, 0),
-                        xycoords=("data", "axes fraction"), xytext=(2, 3),
-                        textcoords="offset points", fontsize=7, color="0.3", rotation=90,
-                        va="bottom")
+            ax.annotate(f"step {step}" + (f" ({impact})" if impact else ""), (t, 1),
+                        xycoords=("data", "axes fraction"), xytext=(0, 2),
+                        textcoords="offset points", fontsize=7, color="0.3", ha="center",
+                        va="bottom", annotation_clip=False)
     if w.s["fell"]:
         ax.axvline(w.t[-1], color="tab:red", lw=1.2, label="fall")
+
+
+# How far below a time panel's bottom its legend starts [in]: clear of the tick labels and
+# the x label, so the legend sits on no curve.
+PANEL_LEGEND_DROP_IN = 0.55
+
+
+def legend_below(ax, ncol):
+    """The panel's legend under its x label: loc="best" still sat on the curves of a walk
+    that fills every corner of the panel."""
+    ax.legend(loc="upper center", ncol=ncol, fontsize=7,
+              bbox_to_anchor=(0.5, -PANEL_LEGEND_DROP_IN / axes_height_in(ax)))
 
 
 finish = style.finish
@@ -332,7 +357,10 @@ def draw_tracking(ax, w, legend=True):
     finish(ax, "time [s]", "θ − θ_ref [deg]",
            f"Tracking error: max {w.s['max_tracking_error']:.3g} rad "
            f"({math.degrees(w.s['max_tracking_error']):.3g}°, summary); "
-           f"{worst:.3g} rad in walk.csv", legend=legend, ncol=3, loc="best")
+           f"{worst:.3g} rad in walk.csv", legend=False)
+    ax.set_title(ax.get_title(), pad=14)  # above the step labels
+    if legend:
+        legend_below(ax, ncol=4)
 
 
 def draw_torque(ax, w, j, colour="tab:blue"):
@@ -350,8 +378,8 @@ def draw_all_torques(ax, w):
         ax.plot(w.t, w.tau_ref[:, j], color=colour, ls="--", lw=0.9)
         ax.plot(w.t, w.tau[:, j], color=colour, lw=1.4, label=f"τ{j} {w.joint_names()[j]}")
     mark_steps(ax, w, labels=False)
-    finish(ax, "time [s]", "torque [N m]", "Joint torques (dashed: reference)", ncol=3,
-           loc="best")
+    finish(ax, "time [s]", "torque [N m]", "Joint torques (dashed: reference)", legend=False)
+    legend_below(ax, ncol=4)
 
 
 def draw_normal_forces(ax, w):
@@ -360,7 +388,8 @@ def draw_normal_forces(ax, w):
     ax.plot(w.t, w.col["fe_y"], color="tab:orange", lw=1.6, label="E (swing) $f_n$")
     ax.axhline(0, color="0.5", lw=0.8)
     mark_steps(ax, w, labels=False)
-    finish(ax, "time [s]", "normal force [N]", "Normal ground forces", loc="best", ncol=2)
+    finish(ax, "time [s]", "normal force [N]", "Normal ground forces", legend=False)
+    legend_below(ax, ncol=4)
 
 
 def draw_tangential_forces(ax, w):
@@ -369,8 +398,8 @@ def draw_tangential_forces(ax, w):
     ax.plot(w.t, w.col["fe_x"], color="tab:orange", lw=1.6, label="E (swing) $f_t$")
     ax.axhline(0, color="0.5", lw=0.8)
     mark_steps(ax, w, labels=False)
-    finish(ax, "time [s]", "tangential force [N]", "Tangential ground forces", loc="best",
-           ncol=2)
+    finish(ax, "time [s]", "tangential force [N]", "Tangential ground forces", legend=False)
+    legend_below(ax, ncol=4)
 
 
 def friction_ratio(w, tip):
@@ -394,7 +423,8 @@ def draw_friction(ax, w):
     mark_steps(ax, w, labels=False)
     ax.set_ylim(0, 1.25 * top)
     finish(ax, "time [s]", "|f_t| / f_n [-]",
-           f"Friction needed where a tip carries more than {LOADED_N:g} N", loc="best", ncol=2)
+           f"Friction needed where a tip carries more than {LOADED_N:g} N", legend=False)
+    legend_below(ax, ncol=5)
 
 
 def draw_poincare(ax, w):

@@ -175,6 +175,28 @@ assert len(feet) == len(starts), (len(feet), starts)
 assert all(abs((x[1] - x[0]) - 0.2) < 1e-12 for x in feet), feet
 PY
 
+# (a'') the time panels' legends sit below the axes (loc="best" sat on the curves) and at most
+# MAX_STEP_LABELS step starts are labelled, above the axes.
+(cd "$PLOTS" && "$PY" - "$TMP/walk" <<'PY') || fail "(a'') legends below, few step labels"
+import sys
+import plot_style
+import walk_plots
+w = walk_plots.Walk(sys.argv[1])
+for draw in (walk_plots.draw_tracking, walk_plots.draw_all_torques,
+             walk_plots.draw_normal_forces, walk_plots.draw_friction):
+    fig, ax = plot_style.pyplot().subplots()
+    draw(ax, w)
+    fig.canvas.draw()
+    box = ax.get_legend().get_window_extent().transformed(ax.transAxes.inverted())
+    assert box.y1 < 0, (draw.__name__, box)
+    if draw is walk_plots.draw_tracking:
+        labels = [t for t in ax.texts if t.get_text().startswith("step ")]
+        assert labels and all(t.xy[1] == 1 for t in labels), [t.xy for t in labels]
+starts = [(k, 0.1 * k) for k in range(2, 22)]
+picked = walk_plots.labelled_steps(starts)
+assert len(picked) <= walk_plots.MAX_STEP_LABELS and picked[0] == (2, 0.2), picked
+PY
+
 # (b) a walk that fell: no Poincare multipliers, so five pictures and a note on stderr.
 make_walk "$TMP/fell" 3 1
 plot walk_plots.py "$TMP/fell"
