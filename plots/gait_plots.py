@@ -227,7 +227,7 @@ def draw_positions(ax, g):
             label="foot B (swing, then stance)")
     mark_phases(ax, g)
     ax.set_xlim(0, 2 * g.T)
-    finish(ax, "time [s]", "x (world) [m]", "(a) Horizontal positions over two steps",
+    finish(ax, "time [s]", "x (world) [m]", "Horizontal positions over two steps",
            loc="upper left", ncol=2)
 
 
@@ -302,11 +302,20 @@ def draw_friction(ax, g):
            loc="best", ncol=2)
 
 
+def torque_style(names, j):
+    """Line style of joint j's torque: the swing hip's dashed where a stance hip is drawn too,
+    whose torque is nearly the same through much of a step (Mu's gait: within 0.5 N m over
+    its single support) and hid it exactly."""
+    both = "stance hip" in names and "swing hip" in names
+    return "--" if both and names[j] == "swing hip" else "-"
+
+
 def draw_torques(ax, g, legend=True):
     """Joint torques tau0..tau{N-1} over the step, the largest |tau| of each joint marked."""
     names = g.joint_names()
     for j in range(g.n):
-        line, = ax.plot(g.t, g.tau[:, j], color=f"C{j}", lw=1.6, label=f"τ{j} {names[j]}")
+        line, = ax.plot(g.t, g.tau[:, j], color=f"C{j}", lw=1.6, ls=torque_style(names, j),
+                        label=f"τ{j} {names[j]}")
         k = int(np.argmax(np.abs(g.tau[:, j])))
         ax.plot(g.t[k], g.tau[k, j], "o", color=line.get_color(), ms=4)
     ax.axhline(0, color="0.5", lw=0.8)
@@ -340,6 +349,14 @@ def draw_clearance(ax, g):
            ncol=2)
 
 
+def note_place(ax, t):
+    """(x in axes fraction, alignment) of a note about the point at time t: in the half of the
+    axes away from the point, along the bottom (the legend holds the top). A fixed place in the
+    lower left covered the ZMP curve exactly where it left the foot at the step's start."""
+    lo, hi = ax.get_xlim()
+    return (0.97, "right") if (t - lo) / (hi - lo) < 0.5 else (0.03, "left")
+
+
 def draw_zmp_foot(ax, g):
     """ZMP (centre of pressure) x over the whole step against the support region: the foot
     [-heel, toe] around B in the SSP, B's heel to E's toe in the DSP. Where the ZMP leaves the
@@ -368,14 +385,15 @@ def draw_zmp_foot(ax, g):
         text = f"closest to an edge: {1000 * margin[k]:.0f} mm"
         colour = "0.3"
     ax.plot(g.t[k], zmp[k], "o", color=style.ZMP, mfc="none", ms=10, mew=1.5)
-    ax.annotate(text, (g.t[k], zmp[k]), xytext=(0.03, 0.04), textcoords="axes fraction",
-                fontsize=8, color=colour, bbox={"fc": "w", "ec": colour},
-                arrowprops={"arrowstyle": "->", "color": colour})
     mark_phases(ax, g, steps=1)
     ax.set_xlim(g.t[0], g.t[-1])
     lo, hi = min(np.min(zmp), np.min(back)), max(np.max(zmp), np.max(front))
     span = max(hi - lo, 0.1)
     ax.set_ylim(lo - 0.15 * span, hi + 0.45 * span)
+    x, ha = note_place(ax, g.t[k])
+    ax.annotate(text, (g.t[k], zmp[k]), xytext=(x, 0.04), textcoords="axes fraction", ha=ha,
+                fontsize=8, color=colour, bbox={"fc": "w", "ec": colour},
+                arrowprops={"arrowstyle": "->", "color": colour})
     foot = ("" if g.foot is None else
             f"heel {g.foot[0]:g} m, toe {g.foot[1]:g} m ({g.foot_source})")
     finish(ax, "time [s]", "x (from B) [m]",
@@ -410,7 +428,8 @@ def draw_stick(ax, g):
                 label="foot of B")
     ax.axhline(0, color="0.4", lw=1.2)
     ax.plot([], [], "k-", label="SSP")
-    ax.plot([], [], "k--", label="DSP")
+    if g.dsp.any():  # a gait without a double support (RABBIT) draws no dashed frames
+        ax.plot([], [], "k--", label="DSP")
     ax.plot([], [], "k*", ls="none", label="CoM")
     ax.set_aspect("equal")
     ax.figure.colorbar(matplotlib.cm.ScalarMappable(norm, cmap), ax=ax, label="time [s]",

@@ -448,6 +448,34 @@ assert (len(frames) - sum(g.dsp[frames]), sum(g.dsp[frames])) == (12, 4), frames
 assert g.foot == (0.05, 0.15) and g.foot_source == "summary.json", (g.foot, g.foot_source)
 assert abs(g.zmp_margin().min() - g.s["min_zmp_margin"]) < 1e-9, g.zmp_margin().min()
 PY
+# (h') the overview's panels: no stray "(a)" in a title; the swing hip's torque dashed beside
+# the stance hip's (they coincide through much of a step); the stick legend lists DSP only for
+# a gait with one; the ZMP note in the half away from its point.
+(cd "$PLOTS" && "$PY" - "$TMP/gait" <<'PY') || fail "(h') overview panels"
+import sys
+import numpy as np
+import gait_plots
+import plot_style
+g = gait_plots.Gait(sys.argv[1])
+plt = plot_style.pyplot()
+fig, ax = plt.subplots()
+gait_plots.draw_positions(ax, g)
+assert ax.get_title() == "Horizontal positions over two steps", ax.get_title()
+names = ["stance ankle", "stance knee", "stance hip", "swing hip", "swing knee"]
+assert [gait_plots.torque_style(names, j) for j in range(5)] == ["-", "-", "-", "--", "-"]
+assert gait_plots.torque_style(["stance ankle", "swing hip"], 1) == "-"
+def stick_labels(g):
+    fig, ax = plt.subplots()
+    gait_plots.draw_stick(ax, g)
+    return ax.get_legend_handles_labels()[1]
+assert "DSP" in stick_labels(g)
+g.dsp = np.zeros_like(g.dsp)
+assert "DSP" not in stick_labels(g)
+fig, ax = plt.subplots()
+ax.set_xlim(0, 0.7)
+assert gait_plots.note_place(ax, 0.01) == (0.97, "right")
+assert gait_plots.note_place(ax, 0.6) == (0.03, "left")
+PY
 # (h) a gait folder on the fixed-rate grid: the touchdown's two rows and the end row come from
 # summary.json (phase_switches, step_end) and plot_io puts them back in time order, replacing
 # the grid rows at 0.6 s and 0.7 s (docs/design.md#the-export-contract, gaits/trajectory/switch_states.hpp).
