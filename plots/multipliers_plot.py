@@ -70,23 +70,44 @@ def draw_unit_circle(ax, series):
     style.finish(ax, "Re λ", "Im λ", "Multipliers in the complex plane", legend=False)
 
 
+# The marker of a |multiplier| at or below FLOOR: an arrow down, not the walk's own marker,
+# which would read as a measured 1e-12.
+BELOW_FLOOR = "$\\downarrow$"
+
+
+def split_at_floor(z):
+    """(magnitudes above FLOOR, how many at or below it) of one walk's multipliers."""
+    m = np.abs(np.asarray(z))
+    return m[m > FLOOR], int(np.sum(m <= FLOOR))
+
+
 def draw_magnitudes(ax, series):
-    """|multiplier| per walk on a log axis, the largest labelled."""
+    """|multiplier| per walk on a log axis, the largest labelled; those at or below FLOOR as an
+    arrow at FLOOR. The legend sits under the axes: inside it covered the lowest markers."""
+    floored = False
     for k, (label, z, colour, marker) in enumerate(series):
-        m = np.maximum(np.abs(z), FLOOR)
+        m, below = split_at_floor(z)
         ax.plot(np.full(len(m), k), m, marker, color=colour, ms=7, mec="black", mew=0.6,
                 ls="none", alpha=0.85)
-        top = float(np.max(m))
+        if below:
+            ax.plot(np.full(below, k), np.full(below, FLOOR), marker=BELOW_FLOOR, color=colour,
+                    ms=11, ls="none")
+            floored = True
+        top = float(np.max(m, initial=FLOOR))
         ax.annotate(f"{top:.2g}", (k, top), xytext=(9, 0), textcoords="offset points",
                     va="center", fontsize=8)
     ax.axhline(1, color=style.FAIL, ls="--", lw=1.2, label="|λ| = 1 (stability limit)")
+    if floored:
+        ax.plot([], [], marker=BELOW_FLOOR, color="0.3", ms=11, ls="none",
+                label=f"|λ| ≤ {FLOOR:g} (drawn at {FLOOR:g})")
     ax.set_yscale("log")
     ax.set_xlim(-0.6, len(series) - 0.4)
     ax.set_xticks(range(len(series)))
     ax.set_xticklabels([str(k + 1) for k in range(len(series))])
     ax.grid(True, axis="y", which="major", alpha=0.3)
     style.finish(ax, "walk (numbered as in the legend)", "|λ|",
-                 "Magnitudes (log axis; largest labelled)", loc="lower right")
+                 "Magnitudes (log axis; largest labelled)", loc="upper center",
+                 bbox_to_anchor=(0.5, -0.17), ncol=2)
 
 
 def multipliers_figure(walks):

@@ -593,6 +593,26 @@ import multipliers_plot as mp
 assert label == "ref, computed_torque, rigid ground" and len(z) == 3 and abs(abs(z).max() - 0.5) < 1e-12
 assert none is None and outcome.startswith("fell: fell: hip below"), outcome
 PY
+# (i') magnitudes at or below FLOOR are an arrow at the floor with their own legend entry, shown
+# only when used; the legend under the axes.
+(cd "$PLOTS" && "$PY" - <<'PY') || fail "(i') multipliers at the floor"
+import numpy as np
+import multipliers_plot as mp
+import plot_style
+m, below = mp.split_at_floor(np.array([0.5, 1e-13, 0, 1e-6j]))
+assert list(m) == [0.5, 1e-6] and below == 2, (m, below)
+fig, (a, b) = plot_style.pyplot().subplots(1, 2)
+mp.draw_magnitudes(a, [("x", np.array([0.5, 0.0]), "C0", "o")])
+mp.draw_magnitudes(b, [("y", np.array([0.5, 1e-3]), "C0", "o")])
+floor_label = f"|λ| ≤ {mp.FLOOR:g} (drawn at {mp.FLOOR:g})"
+assert floor_label in a.get_legend_handles_labels()[1]
+assert floor_label not in b.get_legend_handles_labels()[1]
+arrows = [l for l in a.lines if l.get_marker() == mp.BELOW_FLOOR and len(l.get_ydata())]
+assert len(arrows) == 1 and list(arrows[0].get_ydata()) == [mp.FLOOR]
+fig.canvas.draw()
+box = a.get_legend().get_window_extent().transformed(a.transAxes.inverted())
+assert box.y1 < 0, box
+PY
 cp -r "$TMP/walk" "$TMP/badmult"
 edit "$TMP/badmult/summary.json" "import json; d = json.loads(text); d['poincare_multipliers'] = [[1]]; text = json.dumps(d)"
 plot_multipliers "$TMP/m2.png" "$TMP/badmult"
