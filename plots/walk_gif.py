@@ -23,7 +23,6 @@ from robot_foot import robot_foot  # noqa: E402
 
 STEPS = 6  # shown: enough to see the gait repeat, small enough for a README (about 1 MB)
 DPI = 80
-COLORS = ["tab:blue", "tab:green", "tab:red", "tab:orange", "tab:purple", "tab:brown"]
 
 
 def first_steps(frames, steps):
@@ -42,27 +41,43 @@ def feet_at(p0, p1, foot):
     return [([x - heel, x + toe], [y, y]) for x, y in tips]
 
 
+def link_colours(n, step):
+    """Colour of each link (numbered from the stance tip) in `step`: each physical leg keeps its
+    colour (style.link_colours for step 1: leg A blue, leg B orange) though the stance and
+    swing legs trade places, and so link numbers, at every touchdown."""
+    colours = style.link_colours(n)
+    return colours if step % 2 == 1 else colours[::-1]
+
+
+def x_limits(x_min, x_max, foot):
+    """The x range shown: the links' range plus the heel behind and the toe ahead of it (a
+    fixed 0.1 m cut the leading toe of a 0.15 m foot), and 0.05 m to spare."""
+    heel, toe = foot if foot else (0.0, 0.0)
+    return x_min - max(heel + 0.05, 0.1), x_max + max(toe + 0.05, 0.1)
+
+
 def draw(frames, path, foot=None):
     starts = np.concatenate([f[2] for f in frames] + [f[3] for f in frames])
     x_min, y_min = starts.min(axis=0)
     x_max, y_max = starts.max(axis=0)
     fig, ax = plt.subplots(figsize=(8, 2.8))
     ax.set_aspect("equal")
-    ax.set_xlim(x_min - 0.1, x_max + 0.1)
+    ax.set_xlim(*x_limits(x_min, x_max, foot))
     ax.set_ylim(min(y_min, 0) - 0.05, y_max + 0.08)
     ax.axhline(0, color="0.3", lw=1.5)
     ax.set_xlabel("x [m]")
     ax.set_yticks([])
-    lines = [ax.plot([], [], lw=4, solid_capstyle="round", color=COLORS[k % len(COLORS)])[0]
-             for k in range(len(frames[0][2]))]
+    n = len(frames[0][2])
+    lines = [ax.plot([], [], lw=4, solid_capstyle="round")[0] for _ in range(n)]
     feet = [ax.plot([], [], lw=3, solid_capstyle="butt", color="0.15")[0] for _ in range(2)]
     label = ax.text(0.01, 0.92, "", transform=ax.transAxes, fontsize=10)
     fig.tight_layout()
 
     def update(i):
         t, step, p0, p1 = frames[i]
-        for k, line in enumerate(lines):
+        for k, (line, colour) in enumerate(zip(lines, link_colours(n, step))):
             line.set_data([p0[k, 0], p1[k, 0]], [p0[k, 1], p1[k, 1]])
+            line.set_color(colour)
         drawn = feet_at(p0, p1, foot) if foot else []
         for k, line in enumerate(feet):
             line.set_data(*(drawn[k] if k < len(drawn) else ([], [])))

@@ -577,6 +577,17 @@ lines = gc.note_lines(["a note", "x " * 100, "a note"])
 assert lines[0] == "a note" and len(lines) == 3 and all(len(l) <= gc.NOTE_WIDTH for l in lines), lines
 PY
 
+# (k) walk_gif.py: each physical leg keeps its colour across the touchdown (the link numbers
+# run from the new stance tip), and the x range holds the toe ahead of the leading tip.
+(cd "$PLOTS" && "$PY" - <<'PY') || fail "(k) walk.gif colours and x range"
+import walk_gif
+one, two = walk_gif.link_colours(5, 1), walk_gif.link_colours(5, 2)
+assert two == one[::-1] and two[2] == one[2] and walk_gif.link_colours(5, 3) == one
+lo, hi = walk_gif.x_limits(0.0, 2.0, (0.05, 0.15))
+assert hi >= 2.0 + 0.15 + 0.05 - 1e-12 and lo <= -0.1, (lo, hi)
+assert walk_gif.x_limits(0.0, 2.0, None) == (-0.1, 2.1)
+PY
+
 # (i) multipliers_plot.py: the walks with multipliers on the unit circle, a walk that fell named
 # as having none; a malformed multiplier list is an error naming the file and key.
 plot_multipliers() {
