@@ -44,6 +44,17 @@ def cause(failure):
     return text.split(":")[0].strip() or "failed"
 
 
+def is_fraction(axis):
+    """A unitless sweep of an error (mass_error, length_error): a fraction the tables and docs
+    give in percent, so the map does too."""
+    return not axis["unit"] and axis["name"].endswith("_error")
+
+
+def percent_ticks(axis_artist):
+    """Tick labels of a fraction in percent (0.05 -> 5)."""
+    axis_artist.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda v, _: f"{100 * v:g}"))
+
+
 class Map:
     """One map: its parameters, and its grid of outcomes indexed [a][b]."""
 
@@ -72,6 +83,8 @@ class Map:
         self.requested = float(np.max(cols["steps_requested"]))
 
     def label(self, axis):
+        if is_fraction(axis):
+            return f"{axis['name'].replace('_', ' ')} [%]"
         return f"{axis['name']} [{axis['unit']}]" if axis["unit"] else axis["name"]
 
     def extent(self):
@@ -99,7 +112,9 @@ def mark_nominal_and_rectangle(ax, m):
 def draw_steps(ax, fig, m):
     image = ax.imshow(m.steps, origin="lower", aspect="auto", extent=m.extent(),
                       cmap="viridis", vmin=0, vmax=m.requested, interpolation="nearest")
-    fig.colorbar(image, ax=ax, label="steps completed")
+    bar = fig.colorbar(image, ax=ax, label="steps completed")
+    bar.locator = matplotlib.ticker.MaxNLocator(integer=True)  # steps are whole: no 2.5
+    bar.update_ticks()
     mark_nominal_and_rectangle(ax, m)
     ax.legend(fontsize=7, loc="upper right")
     walked = int((m.outcome == WALKED).sum())
@@ -129,6 +144,10 @@ def map_figure(m, title):
     for ax in axes:
         ax.set_xlabel(m.label(m.b))
         ax.set_ylabel(m.label(m.a))
+        if is_fraction(m.b):
+            percent_ticks(ax.xaxis)
+        if is_fraction(m.a):
+            percent_ticks(ax.yaxis)
     fig.suptitle(title)
     fig.tight_layout(rect=(0, 0, 1, 0.95))
     return fig

@@ -280,6 +280,24 @@ assert m.steps.tolist() == [[3, 10, 10], [2, 2, 10]], m.steps
 assert m.outcome.tolist() == [["slip", mp.WALKED, mp.WALKED],
                               ["foot rotation", "foot rotation", mp.WALKED]], m.outcome
 PY
+# (c3') an *_error sweep without a unit is a fraction, labelled and ticked in percent; the
+# colour bar of steps has whole-step ticks.
+(cd "$PLOTS" && "$PY" - "$TMP/map" <<'PY') || fail "(c3') percent axis, whole steps"
+import sys, json
+import map_plots as mp
+s = json.load(open(sys.argv[1] + "/summary.json"))
+m = mp.Map(sys.argv[1], "push_friction", s["maps"]["push_friction"])
+mass = {"name": "mass_error", "unit": ""}
+assert mp.is_fraction(mass) and m.label(mass) == "mass error [%]"
+assert not mp.is_fraction(m.b) and m.label(m.a) == "push [N s]"
+fig = mp.map_figure(m, "t")
+ax = fig.axes[0]
+mp.percent_ticks(ax.xaxis)
+assert ax.xaxis.get_major_formatter()(0.05, 0) == "5"
+bar = fig.axes[-1]  # the colour bar
+ticks = [t for t in bar.get_yticks() if 0 <= t <= m.requested]
+assert all(float(t).is_integer() for t in ticks), ticks
+PY
 edit "$TMP/map/summary.json" "text = text.replace('\"values\": 3', '\"values\": 4')"
 expect_error "(c3) grid size" stability_plots.py "$TMP/map" "$TMP/map/map_push_friction.csv: a 2 x 3 grid, summary.json says 2 x 4"
 
