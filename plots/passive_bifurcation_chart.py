@@ -47,6 +47,23 @@ def draw_against_slope(ax, branch, orbit, key, label, lo=None):
     style.finish(ax, "slope [rad]", label, fontsize=7)
 
 
+def fitted_limits(*values, margin=0.05):
+    """(low, high) holding every finite value given (and the +-1 lines): a fixed -1.6 .. 1.2
+    cut the period-1 gait's multipliers past the doubling (they reach 1.7)."""
+    shown = np.concatenate([np.atleast_1d(np.asarray(v, dtype=float)) for v in values])
+    shown = shown[np.isfinite(shown)]
+    lo, hi = shown.min(), shown.max()
+    pad = margin * (hi - lo)
+    return lo - pad, hi + pad
+
+
+def few_ticks(ax):
+    """At most five slope ticks: matplotlib's default ran 0.0025-wide labels into each other."""
+    from matplotlib.ticker import MaxNLocator
+
+    ax.xaxis.set_major_locator(MaxNLocator(5))
+
+
 def draw_multiplier(ax, branch):
     one = branch["period"] == 1
     real = one & np.isfinite(branch["most_negative_multiplier"])
@@ -57,7 +74,8 @@ def draw_multiplier(ax, branch):
     ax.axhline(-1, color="tab:red", lw=0.8)
     ax.axhline(1, color="tab:red", lw=0.8)
     ax.axvline(PUBLISHED_DOUBLING, color="0.4", ls="--", lw=0.8)
-    ax.set_ylim(-1.6, 1.2)
+    ax.set_ylim(*fitted_limits(branch["most_negative_multiplier"][real],
+                               branch["max_multiplier"][one], -1.0, 1.0))
     style.finish(ax, "slope [rad]", "multiplier of the period-1 gait",
                  "stability of the period-1 gait", fontsize=7)
 
@@ -74,6 +92,8 @@ def main(folder):
                        lo=orbit["slope"].min())
     draw_against_slope(axs[1], branch, orbit, "interleg_angle_rad", "inter-leg angle [rad]")
     draw_multiplier(axs[2], branch)
+    for ax in axs:
+        few_ticks(ax)
     fig.suptitle("Simplest walker (Garcia et al. 1998), passive down a slope: period doubling "
                  "to chaos")
     fig.tight_layout()

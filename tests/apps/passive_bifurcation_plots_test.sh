@@ -31,6 +31,20 @@ grep -qx "$out/bifurcation.png" "$TMP/printed" || fail "path not printed: $(cat 
 "$PY" -c "import sys, matplotlib.image as im; assert im.imread(sys.argv[1]).shape[1] > 1200" \
   "$out/bifurcation.png" || fail "expected three panels side by side"
 
+# The multiplier panel fits its data (a fixed -1.6 .. 1.2 cut the curves), infinities aside;
+# at most five slope ticks (more ran together).
+(cd "$ROOT/plots" && "$PY" - <<'PY') || fail "fitted limits, few ticks"
+import numpy as np
+import passive_bifurcation_chart as chart
+import plot_style
+lo, hi = chart.fitted_limits(np.array([-1.7, -0.7, -np.inf]), np.array([0.6, 1.7]), -1.0, 1.0)
+assert lo < -1.7 and hi > 1.7 and np.isfinite(lo), (lo, hi)
+fig, ax = plot_style.pyplot().subplots()
+ax.plot([0.001, 0.0192], [0, 1])
+chart.few_ticks(ax)
+ticks = [t for t in ax.get_xticks() if 0.001 <= t <= 0.0192]
+assert len(ticks) <= 6, ticks
+PY
 mv "$out/orbit.csv" "$TMP/orbit.csv"
 "$PY" "$chart" "$out" >/dev/null 2>"$TMP/err"
 [[ $? -eq 1 ]] && grep -q "^error: $out/orbit.csv: cannot read" "$TMP/err" ||
