@@ -45,8 +45,19 @@ std::optional<long> leftoverPid(const std::string& entry, const std::string& bas
   return std::stol(digits);
 }
 
+/// A process that has exited but is not yet reaped (a zombie, whose state in /proc/PID/stat is
+/// 'Z') still answers kill(pid, 0); it writes nothing more.
+bool zombie(long pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(stat, line)) return false;
+  const auto name_end = line.rfind(')');  // the name may hold spaces and parentheses
+  return name_end != std::string::npos && name_end + 2 < line.size() && line[name_end + 2] == 'Z';
+}
+
 bool alive(long pid) {
-  return pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
+  if (pid == ::getpid()) return true;
+  return (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM) && !zombie(pid);
 }
 
 /// Whether `dir` is a folder gaitopt may remove: a real folder (no link) that holds the marker,

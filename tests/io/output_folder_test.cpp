@@ -3,6 +3,11 @@
 #include "io/output/output_folder.hpp"
 
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <fstream>
 
 #include <stdexcept>
 
@@ -101,6 +106,27 @@ TEST_F(OutputFolderTest, LeftoversOfDeadRunsAreCleanedAndAnOrphanedOldResultRest
   EXPECT_FALSE(fs::exists(path("res.tmp-" + dead)));
   EXPECT_FALSE(fs::exists(path("res.old-" + dead)));
   EXPECT_TRUE(fs::exists(path("res.tmp-1x")));
+}
+
+// A run that has exited but is not yet reaped (a zombie, as a container's slow init leaves
+// it) answers kill(pid, 0): its staging folder is a leftover all the same (one stayed for good).
+TEST_F(OutputFolderTest, TheLeftoverOfAnExitedButUnreapedRunIsCleaned) {
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) ::_exit(0);
+  const std::string zombie = path("res.tmp-" + std::to_string(child));
+  fs::create_directories(zombie);
+  put(zombie + "/" + kMarker, "");
+  for (int wait_ms = 0; wait_ms < 2000 && ::kill(child, 0) == 0; wait_ms += 10) {
+    std::ifstream stat("/proc/" + std::to_string(child) + "/stat");
+    std::string line;
+    std::getline(stat, line);
+    if (line.find(") Z ") != std::string::npos) break;  // exited, not reaped
+    ::usleep(10000);
+  }
+  { const OutputFolder out(path("res"), {}); }
+  EXPECT_FALSE(fs::exists(zombie));
+  ::waitpid(child, nullptr, 0);
 }
 
 // Issue 39: DIR.lock is gaitopt's own. A link or a user's file there is refused and kept; a lock
