@@ -1,6 +1,7 @@
 #include "apps/study_commands/simulate_command.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 
@@ -22,6 +23,24 @@ namespace gaitopt::apps {
 namespace {
 
 constexpr double kStickFrameInterval = 0.05;  // [s]
+
+/// Walks this long say how far they are: a tenth of the steps at a time (a walk of 3000 steps
+/// said nothing for 80 s).
+constexpr int kProgressSteps = 100;
+
+/// `log`, and one line on stdout each time the walk passes another tenth of its `steps`.
+sim::WalkLog withStepProgress(sim::WalkLog log, int steps) {
+  if (steps < kProgressSteps) return log;
+  const auto start = std::chrono::steady_clock::now();
+  return [log = std::move(log), steps, start, shown = 0](const sim::WalkSample& s) mutable {
+    log(s);
+    const int tenth = 10 * s.step / steps;
+    if (tenth <= shown) return;
+    shown = tenth;
+    fmt::print("simulate: step {} of {}, {:.0f} s\n", s.step, steps,
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  };
+}
 
 void printOutcome(const sim::ScenarioResult& r, int steps) {
   fmt::print("simulate: {} of {} steps{}, max tracking error {:.3g} rad, {:.2f} s\n",
@@ -60,7 +79,9 @@ void runSimulate(const SimulateOptions& o) {
   checkControllerFitsReference(ref, reference, scenario);
   sim::requireWalkFits(scenario, reference.endTime(), o.output.rate_hz, "--steps");
   sim::WalkRecorder recorder(plant, o.output.rate_hz);
-  const sim::ScenarioResult r = sim::runScenario(ref.model, reference, scenario, recorder.log());
+  const sim::WalkLog log =
+      o.quiet ? recorder.log() : withStepProgress(recorder.log(), scenario.steps);
+  const sim::ScenarioResult r = sim::runScenario(ref.model, reference, scenario, log);
   recorder.finish();
   printOutcome(r, scenario.steps);
   out.write([&](const std::string& dir) {

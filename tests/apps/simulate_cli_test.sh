@@ -132,6 +132,15 @@ run simulate --reference "$TMP/three" --controller hzd --steps 2 --no-poincare -
 [[ $RC -eq 0 ]] || fail "(k) exited $RC: $(cat "$TMP/err")"
 grep -q "0 of 2 steps then fell (step 1: the swing tip struck the ground .* ahead of the stance tip, 0 % of the planned 0.5 m step: a scuff" \
   "$TMP/out" || fail "(k) $(cat "$TMP/out")"
+# A long walk says how far it is, a tenth of its steps at a time (3000 steps said nothing for
+# 80 s): the HZD walk of RABBIT's optimum, 100 steps.
+run optimize --config "$ROOT/configs/ocp/rabbit_kelly2017.yaml" --out "$TMP/rabbit" --rate 200 \
+  --no-plots --quiet
+run simulate --reference "$TMP/rabbit" --controller hzd --steps 100 --no-poincare \
+  --no-plots --rate 10 --out "$TMP/long_walk"
+[[ $RC -eq 0 ]] || fail "(k) long walk exited $RC: $(cat "$TMP/err")"
+[[ $(grep -c "^simulate: step [0-9]* of 100, [0-9]* s$" "$TMP/out") -eq 9 ]] ||
+  fail "(k) progress lines: $(cat "$TMP/out")"
 # The passive compass gait walks down its 0.05 rad slope, and its walk says so.
 run optimize --config "$ROOT/configs/ocp/compass_gait_passive.yaml" --out "$TMP/passive" \
   --rate 200 --no-plots --quiet
