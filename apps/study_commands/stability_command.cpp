@@ -48,27 +48,13 @@ struct Grids {
   std::vector<Map> maps;
 };
 
-/// The file's rows on this grid: a row its CSV holds for another value (an edited file) is no
-/// point of this sweep or map and counts in no summary.
-std::map<std::string, sim::SweepRow> onGrid(const sim::SweepFile& file,
-                                            const std::vector<std::string>& keys) {
-  std::map<std::string, sim::SweepRow> rows;
-  for (const std::string& key : keys)
-    if (const auto it = file.rows().find(key); it != file.rows().end()) rows.insert(*it);
-  return rows;
-}
-
+/// The file's rows on this grid, at the grid's values (sim::SweepFile::rowsAt).
 std::map<std::string, sim::SweepRow> onGrid(const Sweep& s) {
-  std::vector<std::string> keys;
-  for (double v : s.values) keys.push_back(sim::SweepFile::key(v));
-  return onGrid(*s.file, keys);
+  return s.file->rowsAt(s.values);
 }
 
 std::map<std::string, sim::SweepRow> onGrid(const Map& m) {
-  std::vector<std::string> keys;
-  for (double a : m.a.values)
-    for (double b : m.b.values) keys.push_back(sim::SweepFile::key(a, b));
-  return onGrid(*m.file, keys);
+  return m.file->rowsAt(m.a.values, m.b.values);
 }
 
 /// The parameter `name` and its range ("" or "=a:b:n"), checked against the scenario

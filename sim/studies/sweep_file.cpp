@@ -69,6 +69,31 @@ SweepFile::SweepFile(std::string path, std::vector<std::string> coordinates)
     if (const auto row = parseRow(fields, coordinates.size())) rows_[keyOf(*row)] = *row;
 }
 
+std::map<std::string, SweepRow> SweepFile::rowsAt(const std::vector<double>& values) const {
+  std::map<std::string, SweepRow> on_grid;
+  for (const double v : values)
+    if (const auto it = rows_.find(key(v)); it != rows_.end()) {
+      SweepRow row = it->second;
+      row.value = v;
+      on_grid.emplace(it->first, row);
+    }
+  return on_grid;
+}
+
+std::map<std::string, SweepRow> SweepFile::rowsAt(const std::vector<double>& a,
+                                                  const std::vector<double>& b) const {
+  std::map<std::string, SweepRow> on_grid;
+  for (const double va : a)
+    for (const double vb : b)
+      if (const auto it = rows_.find(key(va, vb)); it != rows_.end()) {
+        SweepRow row = it->second;
+        row.value = va;
+        row.value_b = vb;
+        on_grid.emplace(it->first, row);
+      }
+  return on_grid;
+}
+
 void SweepFile::append(const SweepRow& row) {
   io::Row fields{key(row.value)};
   if (map_) fields.push_back(key(row.value_b));
@@ -78,11 +103,8 @@ void SweepFile::append(const SweepRow& row) {
                  row.max_multiplier < 0 ? std::string() : number(row.max_multiplier),
                  number(row.mean_advance), number(row.wall_time_s)});
   log_.append(fields);
-  // Kept as a resumed run reads it back from the file (values to the file's digits), so a
-  // resumed run's summary is the uninterrupted run's, byte for byte.
-  const SweepRow kept = parseRow(fields, map_ ? 2 : 1).value_or(row);
   const std::lock_guard lock(mutex_);  // counted only once it is on disk
-  rows_[keyOf(kept)] = kept;
+  rows_[keyOf(row)] = row;
 }
 
 }  // namespace gaitopt::sim

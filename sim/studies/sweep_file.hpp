@@ -34,6 +34,13 @@ class SweepFile {
   const std::map<std::string, SweepRow>& rows() const { return rows_; }
   bool has(double value) const { return rows_.count(key(value)) > 0; }
   bool has(double a, double b) const { return rows_.count(key(a, b)) > 0; }
+  /// The rows of a sweep over `values`, each at its value as the grid holds it. A row read back
+  /// from the file holds its 10 digits; the grid's own doubles make a resumed run's summary the
+  /// uninterrupted run's. A row for another value (an edited file) is no point of the grid.
+  std::map<std::string, SweepRow> rowsAt(const std::vector<double>& values) const;
+  /// The rows of a map over a x b, as rowsAt.
+  std::map<std::string, SweepRow> rowsAt(const std::vector<double>& a,
+                                         const std::vector<double>& b) const;
   /// Appends and flushes a row; thread-safe.
   void append(const SweepRow& row);
   /// A sweep row's key, the value's 10-digit text (what a rerun matches).

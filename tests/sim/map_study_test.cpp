@@ -102,25 +102,34 @@ TEST(SweepFile, MapRowsAreKeyedByBothValuesAcrossAReopen) {
   std::filesystem::remove(path);
 }
 
-// A run that wrote a row holds it as a resumed run reads it back: values to the file's digits
-// (a resumed stability summary said 0.4842105263 where the uninterrupted one said
-// 0.4842105263157894).
-TEST(SweepFile, ARowIsHeldAsAResumedRunReadsIt) {
+// A resumed run reads its rows back at the file's 10 digits; on the grid they stand at the
+// grid's own values, as the run that walked them had them (a resumed stability summary said
+// 0.4842105263 where the uninterrupted one said 0.4842105263157894).
+TEST(SweepFile, RowsOnTheGridStandAtTheGridsValues) {
   const std::string path = (std::filesystem::temp_directory_path() /
                             ("gaitopt_sweep_" + std::to_string(::getpid()) + ".csv"))
                                .string();
   std::filesystem::remove(path);
-  const double value = 0.4842105263157894;
-  SweepFile file(path, {"friction"});
-  SweepRow r = row(value, 0, true);
-  r.max_tracking_error = 1.0 / 3;
-  file.append(r);
+  const double value = 0.4842105263157894, other = 0.1 + 0.2;
+  {
+    SweepFile file(path, {"friction"});
+    file.append(row(value, 0, true));
+    file.append(row(other, 0, true));
+  }
   const SweepFile back(path, {"friction"});
-  const SweepRow& now = file.rows().at(SweepFile::key(value));
-  const SweepRow& resumed = back.rows().at(SweepFile::key(value));
-  EXPECT_EQ(now.value, resumed.value);
-  EXPECT_EQ(now.value, 0.4842105263);
-  EXPECT_EQ(now.max_tracking_error, resumed.max_tracking_error);
+  EXPECT_EQ(back.rows().at(SweepFile::key(value)).value, 0.4842105263);
+  const auto on_grid = back.rowsAt({value, 0.7});  // 0.7 not walked, `other` not asked
+  ASSERT_EQ(on_grid.size(), 1u);
+  EXPECT_EQ(on_grid.at(SweepFile::key(value)).value, value);
+  std::filesystem::remove(path);
+  {
+    SweepFile map(path, {"push", "mass_error"});
+    map.append(row(value, other, true));
+  }
+  const SweepFile map_back(path, {"push", "mass_error"});
+  const SweepRow& r = map_back.rowsAt({value}, {other}).at(SweepFile::key(value, other));
+  EXPECT_EQ(r.value, value);
+  EXPECT_EQ(r.value_b, other);
   std::filesystem::remove(path);
 }
 
