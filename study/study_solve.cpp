@@ -28,6 +28,13 @@ std::optional<double> costOf(const std::string& dir) {
   return s->at("cost").get<double>();
 }
 
+/// Whether the run into `out` ended for good: a result (a solve's or a failed solve's) or a
+/// recorded refusal. One killed or stopped by the machine did not, and is redone (runTool).
+bool ended(const std::string& out) {
+  return fs::exists(out + "/summary.json") || fs::exists(out + ".failed/summary.json") ||
+         fs::exists(out + ".exit");
+}
+
 /// Moves `from` (and its log) to `to`, replacing what was there, its .failed twin and the exit
 /// status its failure recorded.
 void replaceWith(const std::string& from, const std::string& to) {
@@ -52,6 +59,7 @@ void warmSolve(const StudyPoint& p, const StudyPoint& previous, const std::strin
   const std::string cold = gaitFolder(p, dir), warm = cold + ".warm";
   fs::remove_all(warm);
   solveFrom(p, previous, dir, warm, t);
+  if (!ended(warm)) return;  // no .start: the next run of the study tries it again
   const auto cold_cost = costOf(cold), warm_cost = costOf(warm);
   const bool keep_warm = warm_cost && (!cold_cost || *warm_cost < *cold_cost);
   if (keep_warm) replaceWith(warm, cold);
@@ -81,12 +89,13 @@ void solvePoint(const StudyConfig& c, const std::vector<StudyPoint>& points, std
   const bool done = fs::exists(out + "/summary.json") || fs::exists(out + ".failed/summary.json");
   if (warm && c.warm_start == Warm::kPreviousOnly) {  // the guess only when that optimum failed
     if (!done) solveFrom(p, points[*p.previous], dir, out, t);
-    io::writeFileAtomically(out + ".start", points[*p.previous].folder);
+    if (ended(out)) io::writeFileAtomically(out + ".start", points[*p.previous].folder);
     return;
   }
   if (!done) runTool(t, solveArgs(p), out, "solve " + p.folder);
-  // The .start file is written last: without it the warm solve is still to do.
-  if (warm && !fs::exists(out + ".start")) warmSolve(p, points[*p.previous], dir, t);
+  // The .start file is written last: without it the warm solve is still to do. A solve from the
+  // guess that did not end is redone first, or the warm one would stand in for it for good.
+  if (warm && ended(out) && !fs::exists(out + ".start")) warmSolve(p, points[*p.previous], dir, t);
 }
 
 namespace {

@@ -36,10 +36,11 @@ int runTool(const StudyTools& t, std::vector<std::string> args, const std::strin
   const bool no_result = status != 0 && !std::filesystem::exists(out + "/summary.json") &&
                          !std::filesystem::exists(out + ".failed/summary.json");
   if (!no_result) return status;
-  // A run refused as bad input is refused again: remembered, so a rerun of the study does not
-  // start it (deleting OUT.exit does). One killed or stopped by the machine (a full disk) is
-  // not: the rerun redoes it.
-  if (status == io::kExitInputError)
+  // A run refused as bad input (exit 2) or as a problem no solve can meet (exit 3, e.g. a step
+  // the legs cannot span) is refused again: remembered, so a rerun of the study does not start
+  // it (deleting OUT.exit does). One killed or stopped by the machine (a full disk) is not: the
+  // rerun redoes it.
+  if (status == io::kExitInputError || status == io::kExitInfeasible)
     io::writeFileAtomically(out + ".exit", std::to_string(status));
   else
     ++*t.unfinished;

@@ -26,10 +26,10 @@ struct StudyTools {
 };
 
 /// Runs `gaitopt ARGS... --out OUT --no-plots` (output to OUT.log) unless OUT/summary.json
-/// exists or an earlier run was refused as bad input (exit 2, recorded in OUT.exit: it would be
-/// refused again); reports `what` through t.progress first. A run that ends without a result
-/// otherwise counts in t.unfinished and is started again by the next run of the study. Returns
-/// the child's exit status (0 when skipped after a success).
+/// exists or an earlier run was refused (bad input or an unrealisable problem, exits 2 and 3,
+/// recorded in OUT.exit: it would be refused again); reports `what` through t.progress first. A run
+/// that ends without a result otherwise counts in t.unfinished and is started again by the next run
+/// of the study. Returns the child's exit status (0 when skipped after a success).
 /// @throws std::system_error when the program cannot be started.
 int runTool(const StudyTools& t, std::vector<std::string> args, const std::string& out,
             const std::string& what);

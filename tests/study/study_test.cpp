@@ -20,6 +20,7 @@
 #include "study/study_config.hpp"
 #include "study/study_points.hpp"
 #include "study/study_settings.hpp"
+#include "study/study_solve.hpp"
 #include "study/study_table.hpp"
 #include "study/study_tools.hpp"
 #include "study/walk_pivot.hpp"
@@ -260,9 +261,10 @@ TEST(StudyConfig, EveryShippedStudyLoads) {
   EXPECT_GE(studies, 14);
 }
 
-// A run refused as bad input (exit 2) is refused again, so its status is kept and it is not
-// restarted; a run killed or stopped by the machine (a full disk: exit 1) left no result for a
-// reason that may be gone, so the next run of the study starts it again, and it is counted.
+// A run refused as bad input (exit 2) or as unrealisable (exit 3) is refused again, so its
+// status is kept and it is not restarted; a run killed or stopped by the machine (a full disk: exit
+// 1) left no result for a reason that may be gone, so the next run of the study starts it again,
+// and it is counted.
 TEST(StudyTools, OnlyARefusedRunIsRememberedAKilledOneIsRedone) {
   const std::string dir =
       (std::filesystem::temp_directory_path() / fmt::format("gaitopt_study_tools_{}", ::getpid()))
@@ -285,7 +287,46 @@ TEST(StudyTools, OnlyARefusedRunIsRememberedAKilledOneIsRedone) {
   StudyTools full_disk{standIn("full_disk", "exit 1"), {}};
   EXPECT_EQ(runTool(full_disk, {}, dir + "/b", "b"), 1);  // started again
   EXPECT_EQ(*full_disk.unfinished, 1);
-  EXPECT_EQ(runTool(full_disk, {}, dir + "/a", "a"), 2);  // the refusal is not repeated
+  EXPECT_EQ(runTool(full_disk, {}, dir + "/a", "a"), 2);         // the refusal is not repeated
+  StudyTools unreachable{standIn("unreachable", "exit 3"), {}};  // a step the legs cannot span
+  EXPECT_EQ(runTool(unreachable, {}, dir + "/c", "c"), 3);
+  EXPECT_EQ(readFile(dir + "/c.exit"), "3");
+  EXPECT_EQ(*unreachable.unfinished, 0);
+  std::filesystem::remove_all(dir);
+}
+
+// A warm solve killed under a point (warm_start: previous) did not happen: the point is not
+// marked as started (.start), so the next run of the study solves it from the warm start again
+// (it was marked "guess" and never retried, while the study said to run it again).
+TEST(StudySolve, AKilledWarmSolveIsTriedAgainByTheNextRun) {
+  const std::string dir =
+      (std::filesystem::temp_directory_path() / fmt::format("gaitopt_warm_{}", ::getpid()))
+          .string();
+  std::filesystem::create_directories(dir);
+  const std::string script = dir + "/stand_in";
+  // Writes a converged summary into --out, except that its first warm start is killed.
+  std::ofstream(script) << "#!/bin/sh\nout=; warm=0\n"
+                           "while [ $# -gt 0 ]; do case \"$1\" in --out) out=$2; shift;; "
+                           "--warm-start) warm=1;; esac; shift; done\n"
+                           "if [ $warm = 1 ] && [ ! -e \"$out.killed\" ]; then "
+                           ": > \"$out.killed\"; kill -9 $$; fi\n"
+                           "mkdir -p \"$out\" && echo '{\"cost\": 1}' > \"$out/summary.json\"\n";
+  std::filesystem::permissions(script, std::filesystem::perms::owner_all);
+  StudyConfig c;
+  c.warm_start = StudyConfig::WarmStart::kPrevious;
+  std::vector<StudyPoint> points(2);
+  points[0].folder = "p0";
+  points[1].folder = "p1";
+  points[1].previous = 0;
+  StudyTools t{script, {}};
+  solvePoint(c, points, 0, dir, t);
+  solvePoint(c, points, 1, dir, t);
+  EXPECT_FALSE(std::filesystem::exists(gaitFolder(points[1], dir) + ".start"));
+  EXPECT_EQ(*t.unfinished, 1);
+  StudyTools rerun{script, {}};
+  solvePoint(c, points, 1, dir, rerun);
+  EXPECT_EQ(readFile(gaitFolder(points[1], dir) + ".start"), "guess");  // tried, not cheaper
+  EXPECT_EQ(*rerun.unfinished, 0);
   std::filesystem::remove_all(dir);
 }
 
