@@ -202,11 +202,7 @@ ScheduleState previousState(const LibrarySetup& s, const LibraryIndex& index, bo
     const bool solved =
         row->converged && std::filesystem::exists(s.pointDir(p) + "/trajectory.csv");
     state.solved[static_cast<std::size_t>(p)] = solved;
-    // A solver's failure is an outcome, redone on request; an error (a full disk, a worker
-    // killed twice) is a failure of the run, redone by the next one.
-    const bool outcome = row->status != "error";
-    state.finished[static_cast<std::size_t>(p)] =
-        solved || (!row->converged && outcome && !retry_failed);
+    state.finished[static_cast<std::size_t>(p)] = solved || (!row->converged && !retry_failed);
   }
   return state;
 }

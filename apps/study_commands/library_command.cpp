@@ -37,6 +37,17 @@ std::string describeRow(const library::IndexRow& r) {
                      r.poly_cost_of_transport, r.start);
 }
 
+/// The points whose last row is an error (a full disk, a worker killed twice), and the first
+/// one's message: a rerun without --retry-failed leaves them unsolved.
+std::pair<int, std::string> earlierErrors(const library::LibrarySetup& setup,
+                                          const library::LibraryIndex& index) {
+  std::pair<int, std::string> errors{0, ""};
+  for (int p = 0; p < setup.grid.size(); ++p)
+    if (const auto row = index.row(setup.grid.point(p).name); row && row->status == "error")
+      if (errors.first++ == 0) errors.second = row->point + ": " + row->message;
+  return errors;
+}
+
 library::RunStats solveAll(const LibraryOptions& o, const library::LibrarySetup& setup,
                            library::LibraryIndex& index, parallel::Executor& executor) {
   library::ScheduleState state = library::previousState(setup, index, o.retry_failed);
@@ -71,12 +82,18 @@ void runScheduler(const LibraryOptions& o, const library::LibrarySetup& setup,
       stats.points - stats.failed, stats.failed, stats.wall_time_s,
       stats.wall_time_s > 0 ? stats.points / stats.wall_time_s : 0.0, stats.workers, setup.out_dir);
   // A solver that did not converge is an outcome a library records; a point that could not be
-  // set up or written (a full disk) is a failure of the run.
+  // set up or written (a full disk) is a failure of the run, also when an earlier run left it.
   if (stats.errors > 0)
     throw io::CommandError(io::kExitFailure,
                            fmt::format("{} point(s) ended in an error, not a solver outcome; the "
                                        "first: {}",
                                        stats.errors, stats.first_error));
+  if (const auto [count, first] = earlierErrors(setup, index); count > 0)
+    throw io::CommandError(io::kExitFailure,
+                           fmt::format("{} point(s) ended in an error in an earlier run and are "
+                                       "not solved (the first: {}); rerun with --retry-failed to "
+                                       "redo them",
+                                       count, first));
 }
 
 /// @throws config::ConfigError when two points of the grid would share a name.

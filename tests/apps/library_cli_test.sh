@@ -219,13 +219,16 @@ grep -q "^library: 1 of 3 points to solve" "$TMP/out" || fail "(d) retry: $(cat 
 grep -q "^library: \[1/1\] v0.800_L0.500_s+0.000: " "$TMP/out" || fail "(d) retry: $(cat "$TMP/out")"
 check_index "(d) retried" "$L" 3 0
 # A point whose last row is an error (a full disk, a worker killed twice: a failure of the run,
-# not of the solver) is redone by the next run without being asked (it was left unsolved and
-# the rerun said the library was complete).
+# not of the solver) left by an earlier run: the rerun says it is not solved (exit 1, naming it;
+# it said the library was complete, exit 0), and --retry-failed redoes it.
 sed -i 's/^\(v0\.800_L0\.500_s+0\.000,[^,]*,[^,]*,[^,]*,\)[^,]*,1,/\1error,0,/' "$L/index.csv"
 grep -q "^v0.800.*,error,0," "$L/index.csv" || fail "(d) edit to error: $(cat "$L/index.csv")"
 run library --config "$TMP/tiny.yaml" --out "$L" --jobs 2
-[[ $RC -eq 0 ]] || fail "(d) error redone exited $RC: $(cat "$TMP/err")"
-grep -q "^library: 1 of 3 points to solve" "$TMP/out" || fail "(d) error not redone: $(cat "$TMP/out")"
+[[ $RC -eq 1 ]] && grep -q "1 point(s) ended in an error in an earlier run and are not solved (the first: v0.800_L0.500_s+0.000: .*rerun with --retry-failed" "$TMP/err" ||
+  fail "(d) an earlier error: exit $RC: $(cat "$TMP/err")"
+run library --config "$TMP/tiny.yaml" --out "$L" --jobs 2 --retry-failed
+[[ $RC -eq 0 ]] && grep -q "^library: 1 of 3 points to solve" "$TMP/out" ||
+  fail "(d) error redone: $RC $(cat "$TMP/out")"
 check_index "(d) error redone" "$L" 3 0
 
 # (e) another grid into the same folder is refused, naming library.json; the index is kept.
