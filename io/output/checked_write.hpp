@@ -37,7 +37,9 @@ class AppendFile {
   AppendFile(const AppendFile&) = delete;
   AppendFile& operator=(const AppendFile&) = delete;
 
-  /// Appends `text` whole or throws WriteError.
+  /// Appends `text` whole or throws WriteError, cutting the file back to its size before it
+  /// (no torn row). One writer at a time: another's rows appended in between would be cut too
+  /// (RowLog serialises its appends).
   void append(std::string_view text);
   /// Cuts the file to `size` bytes (drops a torn last line). @throws WriteError.
   void truncate(long size);
