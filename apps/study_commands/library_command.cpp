@@ -129,7 +129,7 @@ void runLibrary(const LibraryOptions& o) {
       std::move(config),
       std::move(grid),
       io::normaliseOutPath(o.out_dir, "--out"),
-      {o.config_path, o.rate_hz, report::gaitPictures(o.plots), o.sets}};
+      {o.config_path, o.rate_hz, report::gaitPictures(o.plots), o.sets, {}}};
   const bool under_mpi = parallel::launchedByMpi();
   // No more worker processes than points.
   const int jobs =

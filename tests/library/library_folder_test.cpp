@@ -155,10 +155,11 @@ TEST(ShippedLibraries, AreKeyedByTheCurrentContentsOfTheirFiles) {
                                  (recorded.at("name").get<std::string>() + ".yaml");
     LibraryConfig config = loadLibraryConfig(config_path.string());
     Grid grid(config.axes, config.config_axes);
-    const LibrarySetup rerun{std::move(config),
-                             std::move(grid),
-                             entry.path().string(),
-                             {config_path.string(), recorded.at("rate_hz").get<double>(), {}, {}}};
+    const LibrarySetup rerun{
+        std::move(config),
+        std::move(grid),
+        entry.path().string(),
+        {config_path.string(), recorded.at("rate_hz").get<double>(), {}, {}, {}}};
     EXPECT_EQ(libraryClaim(rerun).dump(1), recorded.dump(1));
     ++checked;
   }

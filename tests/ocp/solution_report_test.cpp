@@ -54,7 +54,7 @@ TEST(SolutionSummary, ImpactLossIsTheKineticEnergyTheImpactMapTakes) {
   ASSERT_TRUE(s.result.success) << s.result.status;
   const gaits::Trajectory dense = reconstructDense(s.problem, r.model, s.result.x, 200);
   const auto summary =
-      solutionSummary({"cfg.yaml", 200, {}, {}}, r.model, r.config, s, nullptr, dense);
+      solutionSummary({"cfg.yaml", 200, {}, {}, {}}, r.model, r.config, s, nullptr, dense);
   // Before the strike the stance tip B is pinned; after a single impact E is pinned and B lifts
   // off, so the energy after is that of the relabelled chain pinned at E.
   const gaits::Knot strike = reconstruct(s.problem, r.model, s.result.x).knots().back();
@@ -153,6 +153,7 @@ TEST_F(FailedResult, IsMarkedAndNamesItsWorstViolation) {
       [&](const std::string& dir) {
         had_failed_note.push_back(std::filesystem::exists(dir + "/FAILED.txt"));
       },
+      {},
       {}};
   const std::string message = writeFailedResult(options, r.model, r.config, r.solution, failed);
   EXPECT_EQ(message.rfind("solver status Maximum_Iterations_Exceeded after 7 iterations", 0), 0u)
