@@ -127,7 +127,7 @@ TEST(SweepFile, RowsOnTheGridStandAtTheGridsValues) {
     map.append(row(value, other, true));
   }
   const SweepFile map_back(path, {"push", "mass_error"});
-  const SweepRow& r = map_back.rowsAt({value}, {other}).at(SweepFile::key(value, other));
+  const SweepRow r = map_back.rowsAt({value}, {other}).at(SweepFile::key(value, other));
   EXPECT_EQ(r.value, value);
   EXPECT_EQ(r.value_b, other);
   std::filesystem::remove(path);
