@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -58,10 +59,12 @@ std::map<std::string, sim::SweepRow> onGrid(const Map& m) {
 }
 
 /// The parameter `name` and its range ("" or "=a:b:n"), checked against the scenario
-/// (stiffness needs the impedance ground); `option` names the flag in errors.
+/// (stiffness needs a compliant ground); `option` names the flag in errors. A sweep and a map
+/// axis share one rule for the range (sim::sweepValues); a map axis also needs `min_values`.
 std::pair<const sim::SweepParameter*, std::vector<double>> parseAxis(const std::string& text,
                                                                      const std::string& option,
-                                                                     sim::Scenario base) {
+                                                                     sim::Scenario base,
+                                                                     int min_values = 1) {
   const std::size_t eq = text.find('=');
   const std::string name = text.substr(0, eq);
   try {
@@ -69,6 +72,10 @@ std::pair<const sim::SweepParameter*, std::vector<double>> parseAxis(const std::
     const gaits::GridAxis axis =
         eq == std::string::npos ? gaits::GridAxis{p->first, p->last, p->count}
                                 : gaits::parseRange(text.substr(eq + 1), option + " " + name, 1.0);
+    if (axis.count < min_values)
+      throw std::invalid_argument(
+          fmt::format("a map axis needs at least {} values, increasing (a < b, n >= {})",
+                      min_values, min_values));
     sim::setSweepValue(base, name, axis.first);
     return {p, sim::sweepValues(*p, axis)};
   } catch (const std::invalid_argument& e) {
@@ -97,10 +104,7 @@ Map parseMap(const std::string& text, const sim::Scenario& base, const dynamics:
   Map m;
   for (auto* axis : {&m.a, &m.b}) {
     const std::string part = axis == &m.a ? text.substr(0, comma) : text.substr(comma + 1);
-    auto [p, values] = parseAxis(part, "--map", base);
-    if (values.size() < 2 || values.front() >= values.back())
-      throw config::ConfigError("--map", p->name(), 0,
-                                "a map axis needs at least 2 values, increasing (a < b, n >= 2)");
+    auto [p, values] = parseAxis(part, "--map", base, 2);
     const double nominal = nominalValue(base, p->name(), model);
     *axis = {p, sim::withNominal(std::move(values), nominal), nominal};
   }

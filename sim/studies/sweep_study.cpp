@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "config/quantities.hpp"
 #include "io/settings_record.hpp"
 
@@ -15,6 +17,17 @@ std::vector<double> sweepValues(const SweepParameter& p, const gaits::GridAxis& 
   for (const double end : {axis.first, axis.last})
     if (std::string why = config::rangeError(p.quantity, end); !why.empty())
       throw std::invalid_argument(why);
+  // One rule for every sweep and map axis: a:b:n runs upwards. a == b with n > 1 would walk one
+  // point n times into one row key, a > b gives the same points as b:a:n under another key, and
+  // n = 1 with a != b walks a alone, dropping b without a word.
+  const std::string range = fmt::format("{:g}:{:g}:{}", axis.first, axis.last, axis.count);
+  if (axis.count > 1 && !(axis.first < axis.last))
+    throw std::invalid_argument(
+        fmt::format("'{}': {} values need a < b (a range runs upwards); one value is a or a:a:1",
+                    range, axis.count));
+  if (axis.count == 1 && axis.first != axis.last)
+    throw std::invalid_argument(fmt::format(
+        "'{}': n = 1 is one value, a, and would drop b: give n >= 2, or a alone", range));
   if (p.geometric && !(axis.first > 0 && axis.last > 0))
     throw std::invalid_argument("a geometric range needs positive ends");
   std::vector<double> values;
@@ -25,6 +38,13 @@ std::vector<double> sweepValues(const SweepParameter& p, const gaits::GridAxis& 
                                                  static_cast<double>(k) / (axis.count - 1));
     const double scale = std::max(std::abs(axis.first), std::abs(axis.last));
     values.push_back(std::abs(v) < 1e-12 * scale ? 0.0 : v);
+    // A row is found again by its value's 10 digits (SweepFile::key): two values that share
+    // them would be one row.
+    if (values.size() > 1 && SweepFile::key(values.back()) == SweepFile::key(values.end()[-2]))
+      throw std::invalid_argument(fmt::format(
+          "'{}': the values {} and {} are closer than the 10 digits a row keeps: give fewer "
+          "values or a wider range",
+          range, SweepFile::key(values.end()[-2]), SweepFile::key(values.back())));
   }
   return values;
 }
@@ -45,8 +65,10 @@ SweepRow walkSweepPoint(const dynamics::Model& model, const Reference& reference
 std::vector<double> withNominal(std::vector<double> values, double nominal) {
   if (!std::isfinite(nominal) || values.empty()) return values;
   const double tolerance = 1e-9 * std::max(1.0, std::abs(values.back() - values.front()));
+  // Also a value of the nominal's row key: inserted, the two would share one row.
   for (const double v : values)
-    if (std::abs(v - nominal) <= tolerance) return values;
+    if (std::abs(v - nominal) <= tolerance || SweepFile::key(v) == SweepFile::key(nominal))
+      return values;
   values.insert(std::upper_bound(values.begin(), values.end(), nominal), nominal);
   return values;
 }

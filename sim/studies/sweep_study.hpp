@@ -23,12 +23,14 @@ namespace gaitopt::sim {
 /// geometric parameter; rounding noise below 1e-12 of the larger end snapped to 0 (so
 /// -0.3:0.5:17 holds 0 rather than 5.6e-17).
 /// @throws std::invalid_argument for an end outside the parameter's quantity range
-///         (config/quantities.hpp) or a geometric range whose ends are not both positive.
+///         (config/quantities.hpp), a range that does not run upwards (n >= 2 values need
+///         a < b; n = 1 needs a == b), values closer than a row key's 10 digits, or a geometric
+///         range whose ends are not both positive.
 std::vector<double> sweepValues(const SweepParameter& parameter, const gaits::GridAxis& axis);
 
 /// `values` (increasing) with `nominal` put in its place unless a value lies within 1e-9 of the
-/// span from it (or it is NaN): an interval around the nominal grows from a walked point, not
-/// from the grid's nearest one.
+/// span from it or shares its row key (SweepFile::key), or it is NaN: an interval around the
+/// nominal grows from a walked point, not from the grid's nearest one.
 std::vector<double> withNominal(std::vector<double> values, double nominal);
 
 /// Walks `scenario` with the parameter `name` set to `value` (model: the reference's robot).

@@ -98,6 +98,18 @@ run stability "${ARGS[@]}" --sweep friction=0.1:x:3 --out "$TMP/e"
 [[ $RC -eq 2 ]] && grep -q "not a finite number" "$TMP/err" || fail "(e) range: $(cat "$TMP/err")"
 run stability "${ARGS[@]}" --sweep stiffness=1e5:1e6:2 --out "$TMP/e"
 [[ $RC -eq 2 ]] && grep -q "impedance ground only" "$TMP/err" || fail "(e) stiffness: $(cat "$TMP/err")"
+# (e2) a range that does not run upwards is refused by one rule for --sweep and --map, exit 2
+# naming the option and the parameter, before a folder is made: a == b with n > 1 (one point n
+# times), a > b, n = 1 with a != b (b dropped).
+for range in 0.5:0.5:3 1:-1:3 -1:1:1; do
+  run stability "${ARGS[@]}" --sweep push=$range --out "$TMP/e2"
+  [[ $RC -eq 2 ]] && grep -q "^error: --sweep: key 'push': '$range': " "$TMP/err" ||
+    fail "(e2) --sweep push=$range exited $RC: $(cat "$TMP/err")"
+  [[ ! -e "$TMP/e2" ]] || fail "(e2) --sweep push=$range made a folder"
+done
+run stability "${ARGS[@]}" --map push=1:-1:3,friction=0.2:0.6:3 --out "$TMP/e2"
+[[ $RC -eq 2 ]] && grep -q "^error: --map: key 'push': '1:-1:3': 3 values need a < b" "$TMP/err" ||
+  fail "(e2) --map push=1:-1:3 exited $RC: $(cat "$TMP/err")"
 # (f) a 2-D map: 3 x 3 points in map_push_friction.csv keyed by both values, the walking region
 # in summary.json (friction 0.2 slips, as in (a)); a rerun walks nothing; the picture is drawn.
 run stability "${ARGS[@]}" --map push=-0.5:0.5:3,friction=0.2:0.6:3 --out "$TMP/f"

@@ -32,6 +32,32 @@ TEST(SweepValues, OneValueIsTheFirstEnd) {
   EXPECT_EQ(sweepValues(kGeometric, {2e5, 2e5, 1}), std::vector<double>{2e5});
 }
 
+// One rule for every sweep and map axis (finding 5 of a user tour: push=0.5:0.5:3 wrote three
+// rows of one point, push=1:-1:3 was accepted and push=-1:1:1 dropped 1 without a word).
+TEST(SweepValues, ARangeRunsUpwards) {
+  for (const gaits::GridAxis& bad : {gaits::GridAxis{0.5, 0.5, 3}, gaits::GridAxis{1, -1, 3},
+                                     gaits::GridAxis{-1, 1, 1}, gaits::GridAxis{2e5, 1e5, 3}})
+    for (const SweepParameter* p : {&kLinear, &kGeometric})
+      EXPECT_THROW(sweepValues(*p, bad), std::invalid_argument)
+          << p->name() << " " << bad.first << ":" << bad.last << ":" << bad.count;
+  try {
+    sweepValues(kLinear, {1, -1, 3});
+    FAIL() << "a downward range was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(),
+                 "'1:-1:3': 3 values need a < b (a range runs upwards); one value is a "
+                 "or a:a:1");
+  }
+  EXPECT_EQ(sweepValues(kLinear, {0.5, 0.5, 1}), std::vector<double>{0.5});
+  EXPECT_EQ(sweepValues(kLinear, {-1, 1, 2}), (std::vector<double>{-1, 1}));
+}
+
+// Values that share a row key's 10 digits would be one row (SweepFile::key).
+TEST(SweepValues, ValuesCloserThanARowKeyAreRefused) {
+  EXPECT_THROW(sweepValues(kLinear, {1, 1 + 1e-11, 3}), std::invalid_argument);
+  EXPECT_NO_THROW(sweepValues(kLinear, {1, 1 + 1e-8, 3}));
+}
+
 TEST(SweepValues, AGeometricRangeNeedsPositiveEnds) {
   // Friction may be 0, so only the spacing refuses it here.
   const SweepParameter geometric_friction{config::kFriction, "friction", 0.1, 1, 3, true};
@@ -98,6 +124,10 @@ TEST(WithNominal, TheNominalValueIsOnTheGrid) {
   const std::vector<double> holds{0.1, 0.15000000000000002, 0.6000000000000001};
   EXPECT_EQ(withNominal(holds, 0.6), holds);
   EXPECT_EQ(withNominal(holds, std::nan("")), holds);
+  // A nominal that shares a grid value's row key is that value: inserted, two points would
+  // share one row.
+  const std::vector<double> narrow{1000, 1001};  // keys "1000" and "1001"; 1e-9 of the span
+  EXPECT_EQ(withNominal(narrow, 1000.0000001), narrow);
 }
 
 }  // namespace
