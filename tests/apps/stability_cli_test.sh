@@ -110,6 +110,13 @@ done
 run stability "${ARGS[@]}" --map push=1:-1:3,friction=0.2:0.6:3 --out "$TMP/e2"
 [[ $RC -eq 2 ]] && grep -q "^error: --map: key 'push': '1:-1:3': 3 values need a < b" "$TMP/err" ||
   fail "(e2) --map push=1:-1:3 exited $RC: $(cat "$TMP/err")"
+# (e3) an --out where no folder can be made (/proc takes no new entries, even from root): exit 2
+# naming --out, not exit 1 naming OUT.lock, a file the user never gave.
+if [[ -d /proc/self ]]; then
+  run stability "${ARGS[@]}" --sweep push=-1:1:3 --out /proc/gaitopt_stability_test
+  [[ $RC -eq 2 ]] && grep -q "^error: --out: '/proc/gaitopt_stability_test' cannot be created: " \
+    "$TMP/err" && ! grep -q "\.lock" "$TMP/err" || fail "(e3) exited $RC: $(cat "$TMP/err")"
+fi
 # (f) a 2-D map: 3 x 3 points in map_push_friction.csv keyed by both values, the walking region
 # in summary.json (friction 0.2 slips, as in (a)); a rerun walks nothing; the picture is drawn.
 run stability "${ARGS[@]}" --map push=-0.5:0.5:3,friction=0.2:0.6:3 --out "$TMP/f"
