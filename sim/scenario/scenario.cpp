@@ -4,10 +4,13 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <typeinfo>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "sim/controllers/hzd_controller.hpp"
+#include "sim/walk/ground_registry.hpp"
 #include "sim/walk/walk.hpp"
 
 namespace gaitopt::sim {
@@ -37,7 +40,11 @@ const std::vector<SweepParameter> kParameters{
     {config::kLengthError, "relative error of the link lengths and CoM offsets (Mu e_l = e_d)",
      -0.3, 0.5, 17},
     {config::kFriction, "Coulomb coefficient of the ground", 0.05, 1.0, 20},
-    {config::kStiffness, "impedance ground stiffness, damping scaled alike (impedance ground only)",
+    // Both compliant grounds (CompliantGround settings) have a stiffness: the impedance ground's
+    // Hunt-Crossley k and the pad's spring k.
+    {config::kStiffness,
+     "contact stiffness k of a compliant ground, damping scaled alike (impedance or pad ground "
+     "only)",
      1e4, 1e9, 11, true},
     {config::kGainScale, "controller bandwidth factor (kp, K by s^2; kd, lambda by s)", 0.1, 3.0,
      30},
@@ -170,9 +177,14 @@ void setSweepValue(Scenario& s, const std::string& name, double value) {
     compliant->contact.damping *= value / compliant->contact.stiffness;
     compliant->contact.stiffness = value;
   } else {
+    // The grounds whose settings hold a stiffness, from the registry: a new compliant ground is
+    // named here without a change.
+    std::vector<std::string> compliant_grounds;
+    for (const GroundEntry& e : grounds())
+      if (e.settings == typeid(CompliantGround)) compliant_grounds.push_back("--ground " + e.name);
     throw std::invalid_argument(
-        "stiffness is swept on the impedance ground only (--ground "
-        "impedance)");
+        fmt::format("stiffness is swept on a compliant ground only ({}), not on the {} ground",
+                    fmt::join(compliant_grounds, " or "), groundName(s.ground)));
   }
 }
 

@@ -90,10 +90,10 @@ const std::vector<SweepParameter>& sweepParameters();
 /// @throws std::invalid_argument for an unknown name.
 const SweepParameter& sweepParameter(const std::string& name);
 /// The parameter's value in `scenario` (the nominal point of a sweep); NaN when it has none
-/// (stiffness off the impedance ground).
+/// (stiffness off a compliant ground: impedance, pad).
 double sweepValue(const Scenario& scenario, const std::string& name);
 /// Sets the parameter. @throws std::invalid_argument for an unknown name, or stiffness on a
-/// ground that has none.
+/// ground that has none (rigid, LCP, DART).
 void setSweepValue(Scenario& scenario, const std::string& name, double value);
 
 }  // namespace gaitopt::sim

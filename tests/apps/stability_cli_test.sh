@@ -97,7 +97,17 @@ run stability "${ARGS[@]}" --sweep wind --out "$TMP/e"
 run stability "${ARGS[@]}" --sweep friction=0.1:x:3 --out "$TMP/e"
 [[ $RC -eq 2 ]] && grep -q "not a finite number" "$TMP/err" || fail "(e) range: $(cat "$TMP/err")"
 run stability "${ARGS[@]}" --sweep stiffness=1e5:1e6:2 --out "$TMP/e"
-[[ $RC -eq 2 ]] && grep -q "impedance ground only" "$TMP/err" || fail "(e) stiffness: $(cat "$TMP/err")"
+[[ $RC -eq 2 ]] && grep -q "^error: --sweep: key 'stiffness': stiffness is swept on a compliant ground only (--ground impedance or --ground pad), not on the rigid ground" "$TMP/err" ||
+  fail "(e) stiffness: $(cat "$TMP/err")"
+# (e') both compliant grounds have a stiffness: the pad's is swept too, and the words say so.
+run stability "${ARGS[@]}" --ground pad --sweep stiffness=1e5:1e6:2 --out "$TMP/e_pad"
+[[ $RC -eq 0 ]] || fail "(e') stiffness on the pad exited $RC: $(cat "$TMP/err")"
+check_json "(e') summary" "$TMP/e_pad/summary.json" <<'PY'
+s = d["sweeps"]["stiffness"]
+assert s["nominal"] == 3e5 and "impedance or pad" in s["meaning"], s
+PY
+"$GAITOPT" stability --help | grep -q "stiffness \[N/m^n\]: contact stiffness k of a compliant ground, damping scaled alike (impedance or pad" ||
+  fail "(e') --help: $("$GAITOPT" stability --help | grep stiffness)"
 # (e2) a range that does not run upwards is refused by one rule for --sweep and --map, exit 2
 # naming the option and the parameter, before a folder is made: a == b with n > 1 (one point n
 # times), a > b, n = 1 with a != b (b dropped).

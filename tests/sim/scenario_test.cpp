@@ -1,5 +1,6 @@
 // Scenarios: every sweep parameter sets what it names and reads back; Mu's uncertainty lands on
-// the plant or on the controller's model as asked; a stiffness sweep needs the impedance ground.
+// the plant or on the controller's model as asked; a stiffness sweep needs a compliant ground
+// (impedance, pad).
 #include <gtest/gtest.h>
 
 #include "sim/scenario/scenario.hpp"
