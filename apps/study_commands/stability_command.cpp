@@ -322,7 +322,15 @@ void registerStabilityCommand(CLI::App& app) {
     names += fmt::format("\n  {}{}: {} (default {}:{}:{}{})", p.name(),
                          p.unit().empty() ? "" : " [" + p.unit() + "]", p.meaning, p.first, p.last,
                          p.count, p.geometric ? ", geometric spacing" : "");
-  cmd->add_option("--sweep", options->sweeps, "NAME or NAME=a:b:n, repeatable:" + names)
+  // The nominal is the base scenario's value (finding 9 of a user tour: --push 1 --sweep push
+  // grows its interval from 1, not 0): said where the sweep is asked for.
+  cmd->add_option("--sweep", options->sweeps,
+                  "NAME or NAME=a:b:n (n values, a < b; n = 1: the value a), repeatable. The "
+                  "nominal value, always walked and the centre of the walking interval, is the "
+                  "scenario's own: --push, --mass-error and --length-error (else the uncertainty "
+                  "case's errors), --gain-scale, --friction (else the robot's), the ground's "
+                  "stiffness. NAME:" +
+                      names)
       ->option_text("NAME[=a:b:n]");
   cmd->add_option(
          "--map", options->maps,

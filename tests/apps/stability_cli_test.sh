@@ -91,6 +91,17 @@ assert d["sweeps"]["friction"]["nominal"] == 0.45, d["sweeps"]["friction"]
 assert d["config_overrides"] == ["robot.friction=0.45"], d.get("config_overrides")
 PY
 
+# (d3) the nominal of a sweep is the scenario's own value: --push 1 adds 1 to push=-0.5:0.5:3 and
+# the interval grows from it; --help says so.
+run stability "${ARGS[@]}" --push 1 --sweep push=-0.5:0.5:3 --out "$TMP/d3"
+[[ $RC -eq 0 ]] || fail "(d3) stability exited $RC: $(cat "$TMP/err")"
+check_json "(d3) summary" "$TMP/d3/summary.json" <<'PY'
+s = d["sweeps"]["push"]
+assert s["nominal"] == 1 and s["values"] == 4, s
+PY
+"$GAITOPT" stability --help | tr -s ' \n' ' ' | grep -q "The nominal value, always walked and the centre of the walking interval, is the scenario's own: --push, --mass-error" ||
+  fail "(d3) --help does not say what the nominal value is"
+
 # (e) bad input: unknown parameter, malformed range, stiffness off the impedance ground.
 run stability "${ARGS[@]}" --sweep wind --out "$TMP/e"
 [[ $RC -eq 2 ]] && grep -q "unknown sweep parameter 'wind'" "$TMP/err" || fail "(e) $(cat "$TMP/err")"
