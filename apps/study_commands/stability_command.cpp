@@ -288,8 +288,16 @@ void runStability(const StabilityOptions& o) {
   parallel::parallelFor(
       todo.size(), jobs, [&](std::size_t i) { todo[i](); },
       parallel::progressBar("stability", o.quiet));
-  nlohmann::ordered_json summary{{"robot", ref.model.name()}};
+  nlohmann::ordered_json summary{{"robot", ref.model.name()}, {"robot_file", ref.robot_path}};
   summary.update(sim::scenarioJson(o.scenario, base));
+  // What else shapes every row, recorded as simulate records it: the nominal plant's friction
+  // (--friction, --set robot.friction or the robot's; a sweep at friction 0.3 fell for a reason
+  // the summary did not give), foot and slope, and whether Poincare maps were taken.
+  const dynamics::Model plant = sim::scenarioPlant(ref.model, base);
+  summary["slope_rad"] = plant.slope();
+  summary["friction"] = plant.friction();
+  summary["foot"] = gaits::footJson(plant.foot());
+  summary["poincare"] = base.poincare;
   for (const auto& s : grids.sweeps) {
     const std::string name = s.parameter->name();
     summary["sweeps"][name] =

@@ -93,11 +93,18 @@ PY
 
 # (d3) the nominal of a sweep is the scenario's own value: --push 1 adds 1 to push=-0.5:0.5:3 and
 # the interval grows from it; --help says so.
-run stability "${ARGS[@]}" --push 1 --sweep push=-0.5:0.5:3 --out "$TMP/d3"
+# Every option that shapes the rows is in summary.json, --friction too.
+run stability "${ARGS[@]}" --push 1 --friction 0.5 --sweep push=-0.5:0.5:3 --out "$TMP/d3"
 [[ $RC -eq 0 ]] || fail "(d3) stability exited $RC: $(cat "$TMP/err")"
 check_json "(d3) summary" "$TMP/d3/summary.json" <<'PY'
 s = d["sweeps"]["push"]
 assert s["nominal"] == 1 and s["values"] == 4, s
+assert d["friction"] == 0.5 and d["push_impulse_Ns"] == 1 and d["poincare"] is False, d
+assert d["robot_file"].endswith("mu2004_five_link_long_heel.yaml") and d["slope_rad"] == 0, d
+assert d["foot"]["heel"] > 0.05 and d["ground"] == "rigid" and d["gain_scale"] == 1, d
+PY
+check_json "(d3) the robot's friction" "$TMP/a/summary.json" <<'PY'
+assert d["friction"] == 0.6, d.get("friction")
 PY
 "$GAITOPT" stability --help | tr -s ' \n' ' ' | grep -q "The nominal value, always walked and the centre of the walking interval, is the scenario's own: --push, --mass-error" ||
   fail "(d3) --help does not say what the nominal value is"
