@@ -6,6 +6,9 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include "config/overrides.hpp"
 
 #include "config/quantities.hpp"
 #include "io/settings_record.hpp"
@@ -109,6 +112,66 @@ nlohmann::ordered_json walkingInterval(const SweepParameter& parameter,
   return j;
 }
 
+namespace {
+
+/// A YAML value by content: numbers as numbers (0.10 and 0.1, 1e-3 and 0.001 alike), lists item
+/// by item, mappings by key in key order, any other scalar as its text.
+nlohmann::ordered_json yamlContent(const YAML::Node& node) {
+  if (node.IsSequence()) {
+    auto j = nlohmann::ordered_json::array();
+    for (const YAML::Node& item : node) j.push_back(yamlContent(item));
+    return j;
+  }
+  if (node.IsMap()) {
+    std::map<std::string, nlohmann::ordered_json> sorted;
+    for (const auto& kv : node) sorted[kv.first.Scalar()] = yamlContent(kv.second);
+    auto j = nlohmann::ordered_json::object();
+    for (auto& [key, value] : sorted) j[key] = std::move(value);
+    return j;
+  }
+  if (!node.IsScalar()) return nullptr;
+  double v = 0;
+  if (YAML::convert<double>::decode(node, v) && std::isfinite(v)) return v;
+  return node.Scalar();
+}
+
+/// Whether setting `a` and then `b` may differ from `b` then `a`: one key path holds the other
+/// ("robot.foot" and "robot.foot.heel").
+bool overlap(const std::string& a, const std::string& b) {
+  const auto holds = [](const std::string& outer, const std::string& inner) {
+    return inner.size() > outer.size() && inner.compare(0, outer.size(), outer) == 0 &&
+           (inner[outer.size()] == '.' || inner[outer.size()] == '[');
+  };
+  return holds(a, b) || holds(b, a);
+}
+
+}  // namespace
+
+nlohmann::ordered_json setsContent(const std::vector<std::string>& sets) {
+  // The last value of a key replaces the earlier ones, as config::applyOverrides does.
+  std::vector<std::pair<std::string, nlohmann::ordered_json>> kept;
+  for (const config::Override& o : config::parseOverrides(sets)) {
+    std::erase_if(kept, [&](const auto& k) { return k.first == o.key; });
+    nlohmann::ordered_json value;
+    try {
+      value = yamlContent(YAML::Load(o.value));
+    } catch (const YAML::Exception&) {
+      value = o.value;  // the files' readers refuse it before a folder is keyed
+    }
+    kept.emplace_back(o.key, std::move(value));
+  }
+  // Order-free unless it matters (a key inside another's value): then as given.
+  bool ordered = false;
+  for (std::size_t i = 0; i < kept.size(); ++i)
+    for (std::size_t k = 0; k < i; ++k) ordered = ordered || overlap(kept[i].first, kept[k].first);
+  if (!ordered)
+    std::sort(kept.begin(), kept.end(),
+              [](const auto& x, const auto& y) { return x.first < y.first; });
+  auto j = nlohmann::ordered_json::object();
+  for (auto& [key, value] : kept) j[key] = std::move(value);
+  return j;
+}
+
 nlohmann::ordered_json sweepFolderSettings(const ScenarioSettings& s, const ReferenceFolder& ref,
                                            const Scenario& base) {
   nlohmann::ordered_json j = scenarioJson(s, base);
@@ -125,6 +188,9 @@ nlohmann::ordered_json sweepFolderSettings(const ScenarioSettings& s, const Refe
   j["ground_file_fnv1a"] = io::fileFingerprint(groundPath(s.ground));
   j["friction"] = s.friction;
   j["poincare"] = base.poincare;
+  // By content, not as typed: a rerun with its --set reordered or written otherwise (0.10 for
+  // 0.1, 1e-3 for 0.001) walks the same rows (summary.json keeps the text).
+  if (!s.sets.empty()) j["config_overrides"] = setsContent(s.sets);
   return j;
 }
 

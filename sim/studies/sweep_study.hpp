@@ -44,11 +44,18 @@ SweepRow walkSweepPoint(const dynamics::Model& model, const Reference& reference
 nlohmann::ordered_json walkingInterval(const SweepParameter& parameter,
                                        const std::map<std::string, SweepRow>& rows, double nominal);
 
+/// The --set values by content, as a folder is keyed by them: key -> parsed value (numbers as
+/// numbers, so 0.10 is 0.1 and 1e-3 is 0.001), the last value of a key kept, in key order unless
+/// one key lies inside another's value (robot.foot and robot.foot.heel), where the order given
+/// decides the result and is kept.
+nlohmann::ordered_json setsContent(const std::vector<std::string>& sets);
+
 /// What defines a sweep folder's rows (settings.json): every setting of the scenario
 /// (scenarioJson: controller, gains, plant errors, push, contact rules, steps), the friction,
 /// whether Poincare maps are taken, and the contents of every input file (robot, the
-/// reference's trajectory.csv and summary.json, ground) by fingerprint, not by path. A rerun
-/// under other settings would mix two experiments; the grid is added by the caller.
+/// reference's trajectory.csv and summary.json, ground) by fingerprint, not by path, and the
+/// --set values by content (setsContent). A rerun under other settings would mix two
+/// experiments; the grid is added by the caller.
 nlohmann::ordered_json sweepFolderSettings(const ScenarioSettings& settings,
                                            const ReferenceFolder& ref, const Scenario& base);
 

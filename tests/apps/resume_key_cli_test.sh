@@ -134,6 +134,19 @@ STABILITY_FREE=("${COMMON_FREE[@]}"
 prove stability BASE STABILITY_KEYED STABILITY_FREE "0 points to walk (2 done before)"
 [[ $(md5sum <s/sweep_push.csv) == "$rows" ]] || { echo "FAIL stability: the rows changed" && FAILED=1; }
 
+# --set is keyed by content, not by its text: reordered or written otherwise (0.10 for 0.1, 1e-3
+# for 0.001) resumes; another value is refused naming config_overrides.
+SETS=(--reference gait --robot "$ROBOT" --controller sliding_mode --sweep push=0:1:2 --steps 2
+  --no-plots --quiet --out sets)
+run stability "${SETS[@]}" --set robot.foot.heel=0.1 --set ground.time_step=0.001
+[[ $RC -eq 0 ]] || fail "stability --set: $(cat "$TMP/err")"
+run stability "${SETS[@]}" --set ground.time_step=0.001 --set robot.foot.heel=0.1
+resumed "stability --set reordered" "0 points to walk (2 done before)"
+run stability "${SETS[@]}" --set robot.foot.heel=0.10 --set ground.time_step=1e-3
+resumed "stability --set written otherwise" "0 points to walk (2 done before)"
+run stability "${SETS[@]}" --set robot.foot.heel=0.11 --set ground.time_step=0.001
+refused "stability --set another value" config_overrides
+
 # --- library -------------------------------------------------------------------------------------
 sed "s|segments: 25|segments: 8|; s|\.\./|$ROOT/configs/|" "$ROOT/configs/ocp/rabbit_kelly2017.yaml" \
   >base.yaml

@@ -130,5 +130,32 @@ TEST(WithNominal, TheNominalValueIsOnTheGrid) {
   EXPECT_EQ(withNominal(narrow, 1000.0000001), narrow);
 }
 
+// A folder is keyed by what --set sets, not how it is typed (finding 11 of a user tour: a rerun
+// with its --set reordered, or 0.10 for 0.1, 1e-3 for 0.001, was refused).
+TEST(SetsContent, KeyedByContentNotByText) {
+  const auto key = setsContent({"robot.foot.heel=0.1", "ground.time_step=0.001"});
+  EXPECT_EQ(key, setsContent({"ground.time_step=0.001", "robot.foot.heel=0.1"}));
+  EXPECT_EQ(key, setsContent({"robot.foot.heel=0.10", "ground.time_step=1e-3"}));
+  EXPECT_EQ(key.dump(), R"({"ground.time_step":0.001,"robot.foot.heel":0.1})");
+  EXPECT_EQ(setsContent({"robot.foot={toe: 0.15, heel: 0.1}"}),
+            setsContent({"robot.foot={heel: 0.10, toe: 1.5e-1}"}));
+  EXPECT_EQ(setsContent({"robot.links[0].masses=[1, 2.0]"}),
+            setsContent({"robot.links[0].masses=[1.0, 2]"}));
+  // The last value of a key is the one the file gets.
+  EXPECT_EQ(setsContent({"robot.friction=0.3", "robot.friction=0.5"}),
+            setsContent({"robot.friction=0.5"}));
+}
+
+TEST(SetsContent, OtherValuesAndOrdersThatMatterDiffer) {
+  EXPECT_NE(setsContent({"robot.foot.heel=0.1"}), setsContent({"robot.foot.heel=0.11"}));
+  EXPECT_NE(setsContent({"robot.foot.heel=0.1"}), setsContent({"robot.foot.toe=0.1"}));
+  EXPECT_NE(setsContent({"robot.friction=0.5", "robot.friction=0.3"}),
+            setsContent({"robot.friction=0.3", "robot.friction=0.5"}));
+  EXPECT_NE(setsContent({"ground.model=pad"}), setsContent({"ground.model=impedance"}));
+  // A key inside another's value: the later one wins, so the order stays.
+  EXPECT_NE(setsContent({"robot.foot={heel: 0.1, toe: 0.15}", "robot.foot.heel=0.2"}),
+            setsContent({"robot.foot.heel=0.2", "robot.foot={heel: 0.1, toe: 0.15}"}));
+}
+
 }  // namespace
 }  // namespace gaitopt::sim
