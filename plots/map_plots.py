@@ -12,6 +12,7 @@ two heat maps over the grid, a (rows) against b (columns):
 A missing file, column or key, or a malformed value, ends the script with exit code 1.
 """
 import os
+import textwrap
 
 import plot_style as style
 
@@ -95,6 +96,23 @@ class Map:
         return (*edges(self.b_values), *edges(self.a_values))
 
 
+def layout_under_title(fig, text):
+    """The figure's title, wrapped onto as many lines as the figure's width needs (on one line a
+    long headline ran off both sides of a one-panel stability.png), and the panels laid out in
+    the room below it, whatever its number of lines."""
+    title = fig.suptitle(text)
+    renderer = fig.canvas.get_renderer()
+    room = 0.96 * fig.bbox.width
+    width = title.get_window_extent(renderer).width
+    if width > room:
+        title.set_text(textwrap.fill(text, max(20, int(len(text) * room / width))))
+    # The title hangs from y = 0.98 of the figure; the panels start half a line below it.
+    title.set_in_layout(False)
+    below = title.get_window_extent(renderer).height + 0.5 * title.get_fontsize() * fig.dpi / 72
+    fig.tight_layout(rect=(0, 0, 1, title.get_position()[1] - below / fig.bbox.height))
+    return title
+
+
 def mark_nominal_and_rectangle(ax, m):
     ax.plot(m.b["nominal"], m.a["nominal"], "*", color="white", mec="k", ms=14, zorder=4,
             label="nominal")
@@ -148,8 +166,7 @@ def map_figure(m, title):
             percent_ticks(ax.xaxis)
         if is_fraction(m.a):
             percent_ticks(ax.yaxis)
-    fig.suptitle(title)
-    fig.tight_layout(rect=(0, 0, 1, 0.95))
+    layout_under_title(fig, title)
     return fig
 
 

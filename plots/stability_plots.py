@@ -236,8 +236,7 @@ def stability_figure(s, sweeps):
         draw_sweep(ax, sw)
     for ax in axes.flat[len(sweeps):]:
         ax.set_visible(False)
-    fig.suptitle(headline(s))
-    fig.tight_layout(rect=(0, 0, 1, 0.97 if rows > 1 else 0.94))
+    map_plots.layout_under_title(fig, headline(s))
     return fig
 
 

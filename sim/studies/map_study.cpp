@@ -6,11 +6,6 @@
 namespace gaitopt::sim {
 namespace {
 
-/// A grid value as its row key reads it: 0.05, not the 0.050000000000000044 of -0.5 + 11 / 20.
-double keyed(double v) {
-  return std::stod(SweepFile::key(v));
-}
-
 bool walksAll(const SweepRow& r) {
   return !r.fell && r.steps_completed == r.steps_requested;
 }
@@ -29,8 +24,8 @@ nlohmann::ordered_json axisJson(const MapParameter& axis) {
           {"unit", axis.parameter->unit()},
           {"meaning", axis.parameter->meaning},
           {"values", axis.values.size()},
-          {"from", keyed(axis.values.front())},
-          {"to", keyed(axis.values.back())},
+          {"from", keyedValue(axis.values.front())},
+          {"to", keyedValue(axis.values.back())},
           {"nominal", axis.nominal}};
 }
 
@@ -38,7 +33,7 @@ nlohmann::ordered_json rectangleJson(const GridRectangle& r, const MapParameter&
                                      const MapParameter& b) {
   if (r.points() == 0) return nullptr;
   const auto at = [](const MapParameter& axis, int i) {
-    return keyed(axis.values[static_cast<std::size_t>(i)]);
+    return keyedValue(axis.values[static_cast<std::size_t>(i)]);
   };
   return {{"a_from", at(a, r.a_first)},
           {"a_to", at(a, r.a_last)},
@@ -96,12 +91,12 @@ nlohmann::ordered_json walkingRegion(const MapParameter& a, const MapParameter& 
       walks.back().push_back(w);
       walked += w ? 1 : 0;
       if (it != rows.end())
-        line[SweepFile::key(vb)] = {keyed(vb), it->second.steps_completed,
+        line[SweepFile::key(vb)] = {keyedValue(vb), it->second.steps_completed,
                                     it->second.steps_requested, it->second.fell,
                                     it->second.failure};
     }
     const nlohmann::ordered_json interval = walkingInterval(*b.parameter, line, b.nominal);
-    per_row.push_back({{a.parameter->name(), keyed(va)},
+    per_row.push_back({{a.parameter->name(), keyedValue(va)},
                        {"walks_from", interval["walks_from"]},
                        {"walks_to", interval["walks_to"]}});
   }

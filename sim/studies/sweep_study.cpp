@@ -9,7 +9,6 @@
 #include <yaml-cpp/yaml.h>
 
 #include "config/overrides.hpp"
-
 #include "config/quantities.hpp"
 #include "io/settings_record.hpp"
 
@@ -50,6 +49,10 @@ std::vector<double> sweepValues(const SweepParameter& p, const gaits::GridAxis& 
           range, SweepFile::key(values.end()[-2]), SweepFile::key(values.back())));
   }
   return values;
+}
+
+double keyedValue(double value) {
+  return std::stod(SweepFile::key(value));
 }
 
 SweepRow walkSweepPoint(const dynamics::Model& model, const Reference& reference, Scenario scenario,
@@ -104,11 +107,16 @@ nlohmann::ordered_json walkingInterval(const SweepParameter& parameter,
   std::size_t lo = c, hi = c;
   while (lo > 0 && walks(rows[lo - 1])) --lo;
   while (hi + 1 < rows.size() && walks(rows[hi + 1])) ++hi;
-  j["walks_from"] = rows[lo].value;
-  j["walks_to"] = rows[hi].value;
-  if (lo > 0) j["fails_below"] = {{"value", rows[lo - 1].value}, {"failure", rows[lo - 1].failure}};
+  // The grid's values as the CSV shows them: its doubles carry the noise of a + (b - a) k / (n - 1)
+  // (friction 0.30000000000000004 in summary.json, 0.3 in the CSV).
+  j["walks_from"] = keyedValue(rows[lo].value);
+  j["walks_to"] = keyedValue(rows[hi].value);
+  if (lo > 0)
+    j["fails_below"] = {{"value", keyedValue(rows[lo - 1].value)},
+                        {"failure", rows[lo - 1].failure}};
   if (hi + 1 < rows.size())
-    j["fails_above"] = {{"value", rows[hi + 1].value}, {"failure", rows[hi + 1].failure}};
+    j["fails_above"] = {{"value", keyedValue(rows[hi + 1].value)},
+                        {"failure", rows[hi + 1].failure}};
   return j;
 }
 

@@ -33,6 +33,10 @@ std::vector<double> sweepValues(const SweepParameter& parameter, const gaits::Gr
 /// nominal grows from a walked point, not from the grid's nearest one.
 std::vector<double> withNominal(std::vector<double> values, double nominal);
 
+/// A grid value as its row key and the CSV read it (SweepFile::key, 10 digits): 0.3, not the
+/// 0.30000000000000004 of 0.2 + 0.1. What a summary reports of the grid.
+double keyedValue(double value);
+
 /// Walks `scenario` with the parameter `name` set to `value` (model: the reference's robot).
 SweepRow walkSweepPoint(const dynamics::Model& model, const Reference& reference, Scenario scenario,
                         const std::string& name, double value);
@@ -40,7 +44,7 @@ SweepRow walkSweepPoint(const dynamics::Model& model, const Reference& reference
 /// The interval of values around `nominal` (NaN: none) where every row walks all its steps:
 /// unit, meaning, values (rows), nominal, walks_from, walks_to (null when the point nearest
 /// the nominal value does not walk), and fails_below / fails_above (value, failure) where the
-/// interval ends inside the rows.
+/// interval ends inside the rows; the ends as keyedValue gives them.
 nlohmann::ordered_json walkingInterval(const SweepParameter& parameter,
                                        const std::map<std::string, SweepRow>& rows, double nominal);
 

@@ -247,6 +247,23 @@ assert " x its gains" not in sp.headline(dict(s, gain_scale=1.0)), sp.headline(s
 PY
 plot stability_plots.py "$TMP/stab2"
 [[ $RC -eq 0 ]] || fail "(c2) stability_plots.py exited $RC: $(cat "$TMP/err")"
+# (c2') a long headline over one sweep is wrapped inside the figure (it ran off both sides),
+# above the panel's title; every word is kept.
+(cd "$PLOTS" && "$PY" - "$TMP/stab2" <<'PY') || fail "(c2') the title of one sweep"
+import sys
+import stability_plots as sp
+s, (friction, push) = sp.read_sweeps(sys.argv[1])
+s = dict(s, controller="mu_sliding_mode", contact_rules={"cop_limit": "saturate"},
+         robot="mu2004_five_link", ground="rigid", steps_requested=20,
+         reference="results/a_gait_with_a_long_name")
+fig = sp.stability_figure(s, [push])
+fig.canvas.draw()
+renderer = fig.canvas.get_renderer()
+title = fig._suptitle.get_window_extent(renderer)
+assert 0 <= title.x0 and title.x1 <= fig.bbox.width and title.y1 <= fig.bbox.height, title
+assert title.y0 > fig.axes[0].title.get_window_extent(renderer).y1, "the title overlaps the panel"
+assert fig._suptitle.get_text().split() == sp.headline(s).split(), fig._suptitle.get_text()
+PY
 
 # (c3) a 2-D map alone: map_<a>_<b>.png and no stability.png; the failure cause drops the step;
 # a grid of another size than summary.json's is refused.

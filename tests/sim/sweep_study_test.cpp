@@ -102,6 +102,21 @@ TEST(WalkingInterval, IsTheRunOfWalkingValuesAroundTheNominalOne) {
   EXPECT_EQ(j.at("unit"), "N s");
 }
 
+// The ends are the grid's values as the CSV shows them (finding 14 of a user tour: friction
+// walks_from 0.30000000000000004, walks_to 0.9999999999999999, fails_above 0.05000000000000002).
+TEST(WalkingInterval, EndsReadAsTheRowKeysWithoutRoundingNoise) {
+  const double from = 0.1 + 0.2, to = 1 - 1e-16, above = 0.05000000000000002;
+  ASSERT_NE(from, 0.3);
+  const auto j = walkingInterval(
+      kLinear, rows({{0.2, true}, {from, false}, {0.6, false}, {to, false}, {1.2, true}}), 0.6);
+  EXPECT_EQ(j.at("walks_from").dump(), "0.3");
+  EXPECT_EQ(j.at("walks_to").dump(), "1.0");
+  EXPECT_EQ(j.at("fails_above").at("value").dump(), "1.2");
+  const auto k = walkingInterval(kLinear, rows({{0, false}, {above, true}}), 0);
+  EXPECT_EQ(k.at("fails_above").at("value").dump(), "0.05");
+  EXPECT_EQ(keyedValue(above), 0.05);
+}
+
 TEST(WalkingInterval, NoneWhenTheNominalPointFalls) {
   const auto j = walkingInterval(kLinear, rows({{-5, false}, {0, true}, {5, false}}), 0.0);
   EXPECT_TRUE(j.at("walks_from").is_null());
