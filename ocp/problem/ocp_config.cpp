@@ -171,8 +171,8 @@ void readConstraints(const YamlReader& r, OcpConfig& c) {
 
 /// The margins must leave a foot (under half its length, heel + toe) and a friction cone (under
 /// the robot's mu), both read from the robot file.
-void checkMarginsFitTheRobot(const YamlReader& r, const OcpConfig& c) {
-  const dynamics::Model robot = dynamics::loadRobot(c.robot_path);
+void checkMarginsFitTheRobot(const YamlReader& r, const OcpConfig& c,
+                             const dynamics::Model& robot) {
   const dynamics::Foot foot = robot.foot();
   const double half = (foot.heel + foot.toe) / 2;
   if (c.zmp_margin > 0 && !(c.zmp_margin < half))
@@ -321,9 +321,9 @@ namespace {
 
 /// The computed-torque law of the variants (ocp/shape/computed_torque_law.hpp) commands every
 /// joint.
-void checkFeedbackFitsTheRobot(const YamlReader& root, const OcpConfig& c) {
+void checkFeedbackFitsTheRobot(const YamlReader& root, const OcpConfig& c,
+                               const dynamics::Model& robot) {
   if (c.shape.feedback.law != FeedbackGains::Law::kComputedTorque) return;
-  const dynamics::Model robot = dynamics::loadRobot(c.robot_path);
   for (const auto& joint : robot.joints())
     if (!joint.actuated)
       root.map("variant_feedback")
@@ -344,6 +344,7 @@ OcpConfig loadOcpConfig(const std::string& path, const std::vector<config::Overr
   c.name = root.string("name");
   root.stringOr("description", "");
   c.robot_path = fileOfKey(root, "robot", root.string("robot"), path);
+  const dynamics::Model robot = dynamics::loadRobot(c.robot_path);  // for the checks against it
   const std::string guess = root.string("initial_guess");
   if (guess != kStraightLegGuess) c.guess_gait_path = fileOfKey(root, "initial_guess", guess, path);
   c.step_length = root.number("step_length", config::inRange(0.01, 5.0, "[m]"));
@@ -371,7 +372,7 @@ OcpConfig loadOcpConfig(const std::string& path, const std::vector<config::Overr
   if (root.has("mesh_refinement")) c.refinement = readRefinement(root.map("mesh_refinement"));
   if (root.has("constraints")) {
     readConstraints(root.map("constraints"), c);
-    checkMarginsFitTheRobot(root.map("constraints"), c);
+    checkMarginsFitTheRobot(root.map("constraints"), c, robot);
   }
   if (root.has("touchdown")) {
     c.touchdown = readTouchdown(root.map("touchdown"));
@@ -382,7 +383,7 @@ OcpConfig loadOcpConfig(const std::string& path, const std::vector<config::Overr
   }
   if (root.has("solver")) readSolver(root.map("solver"), c.solver);
   c.shape = readShapeConfig(root);  // the problem's shape (ocp/shape/shape_config.hpp)
-  checkFeedbackFitsTheRobot(root, c);
+  checkFeedbackFitsTheRobot(root, c, robot);
   if (root.has("continuation")) readContinuationOf(root, c);
   return c;
 }

@@ -69,14 +69,19 @@ SweepFile::SweepFile(std::string path, std::vector<std::string> coordinates)
     if (const auto row = parseRow(fields, coordinates.size())) rows_[keyOf(*row)] = *row;
 }
 
+void SweepFile::addAt(double a, double b, std::map<std::string, SweepRow>& on_grid) const {
+  const std::string k = map_ ? key(a, b) : key(a);
+  const auto it = rows_.find(k);
+  if (it == rows_.end()) return;
+  SweepRow row = it->second;
+  row.value = a;
+  if (map_) row.value_b = b;
+  on_grid.emplace(k, row);
+}
+
 std::map<std::string, SweepRow> SweepFile::rowsAt(const std::vector<double>& values) const {
   std::map<std::string, SweepRow> on_grid;
-  for (const double v : values)
-    if (const auto it = rows_.find(key(v)); it != rows_.end()) {
-      SweepRow row = it->second;
-      row.value = v;
-      on_grid.emplace(it->first, row);
-    }
+  for (const double v : values) addAt(v, 0, on_grid);
   return on_grid;
 }
 
@@ -84,13 +89,7 @@ std::map<std::string, SweepRow> SweepFile::rowsAt(const std::vector<double>& a,
                                                   const std::vector<double>& b) const {
   std::map<std::string, SweepRow> on_grid;
   for (const double va : a)
-    for (const double vb : b)
-      if (const auto it = rows_.find(key(va, vb)); it != rows_.end()) {
-        SweepRow row = it->second;
-        row.value = va;
-        row.value_b = vb;
-        on_grid.emplace(it->first, row);
-      }
+    for (const double vb : b) addAt(va, vb, on_grid);
   return on_grid;
 }
 

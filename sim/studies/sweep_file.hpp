@@ -50,6 +50,9 @@ class SweepFile {
 
  private:
   std::string keyOf(const SweepRow& row) const;
+  /// The row at grid point (a, b) (b unused in a sweep), if walked, restamped with the grid's
+  /// values into `on_grid`.
+  void addAt(double a, double b, std::map<std::string, SweepRow>& on_grid) const;
 
   bool map_;
   io::RowLog log_;
