@@ -25,6 +25,7 @@
 #include "support/edited_config.hpp"
 #include "support/fixtures.hpp"
 #include "support/nlp_derivatives.hpp"
+#include "support/sample_resimulation.hpp"
 
 namespace gaitopt::ocp {
 namespace {
@@ -214,13 +215,16 @@ TEST(DspChart, DefaultOptimumsDenseExportHoldsTheTipAtThePointsAndBetweenThem) {
   RecordProperty("drift_between_points_m", fmt::format("{:.2e}", between));
   EXPECT_LT(at_points, 1e-6);  // the export contract's DSP tip bound; measured 1e-13 for both
   EXPECT_LT(between, 1e-6);
-  // The export is the pinned chain's motion: E does not accelerate, the equations of motion
-  // hold, the rates and accelerations are the derivatives of the angles and rates (issue 34:
+  // The export is the pinned chain's motion: E does not accelerate, its torques replayed
+  // between the samples reproduce the next sample (sample_resimulation.hpp), the rates and
+  // accelerations are the derivatives of the angles and rates (issue 34:
   // 0.2 % and 1 % of their peaks; measured 0.13 % and 0.91 %), and on the graded mesh the tip
   // force and foot B's CoP keep between the points the bounds they meet at them (on a 10 ms
   // first segment the force left the cone by 1 % and the CoP moved 1.4 cm).
   EXPECT_LT(gaits::maxTipAcceleration(dense, model), 1e-9);
-  EXPECT_LT(gaits::maxDynamicsResidual(dense, model), 1e-9);
+  const test::SampleResimulation replay = test::resimulateSamples(dense, model);
+  RecordProperty("replay_acceleration_error", fmt::format("{:.2e}", replay.acceleration_error));
+  EXPECT_LT(replay.acceleration_error, 3e-3 * test::peakAcceleration(dense));  // 0.58 rad/s^2
   EXPECT_LT(gaits::maxRateMismatch(dense), 2e-3);
   EXPECT_LT(gaits::maxAccelerationMismatch(dense), 1e-2);
   const OcpConfig c = loadOcpConfig(kDir + "mu2004_walk.yaml");

@@ -22,6 +22,7 @@
 #include "ocp/transcription/collocation_interpolation.hpp"
 #include "support/chain_simulation.hpp"
 #include "support/nlp_derivatives.hpp"
+#include "support/sample_resimulation.hpp"
 
 namespace gaitopt::ocp {
 namespace {
@@ -134,7 +135,8 @@ TEST_F(FiveLinkSolution, ContactForcesAreUnilateralAndInsideTheFrictionCones) {
   EXPECT_GE(gaits::minZmpMargin(*traj_, *model_), -1e-6);
 }
 
-TEST_F(FiveLinkSolution, SwingTipStaysAboveTheClearanceProfileBetweenTheNodes) {
+TEST_F(FiveLinkSolution,
+       SwingTipKeepsWithinAThirdOfAMillimetreOfTheClearanceProfileBetweenTheNodes) {
   // The profile h(s) bounds the tip at the collocation points only. Read along the scheme's own
   // polynomials at 1 kHz (the exported trajectory), the tip may cut below h between two points
   // by the cubic's deviation from the chord (measured 1.9e-4 m), and stays above the ground
@@ -153,7 +155,7 @@ TEST_F(FiveLinkSolution, SwingTipStaysAboveTheClearanceProfileBetweenTheNodes) {
   }
   RecordProperty("max_dense_depth_below_profile_m", fmt::format("{:.2e}", below_profile));
   RecordProperty("min_dense_height_for_s_in_0.1_0.9_m", fmt::format("{:.4f}", lowest_inside));
-  EXPECT_LT(below_profile, 5e-4);
+  EXPECT_LT(below_profile, 3e-4);
   EXPECT_GT(lowest_inside, 0.5 * h.at(0.1));
 }
 
@@ -177,9 +179,10 @@ TEST_F(FiveLinkSolution, DspKeepsBothTipsPinnedAndTheCycleCloses) {
 TEST_F(FiveLinkSolution, DenseExportHoldsItsContactsAndIsConsistentBetweenTheNodes) {
   // What a controller receives: trajectory.csv at 1 kHz, not the solver's points. Issue 15:
   // rates within 0.2 % of the finite differences of the angles (the scheme's integrated rates
-  // missed by 2 %), torques that produce the motion (the scheme's quadratic torques missed the
-  // equations of motion by 8 % of the peak torque), and every contact condition at every
-  // sample within 1e-3 relative.
+  // missed by 2 %), torques that produce the motion between the samples (the scheme's quadratic
+  // torques missed the equations of motion by 8 % of the peak torque; replayed, sample to
+  // sample, sample_resimulation.hpp), and every contact condition at every sample within 1e-3
+  // relative.
   const gaits::Trajectory dense = reconstructDense(*problem_, *model_, result_->x, 1000.0);
   const double peak = gaits::peakTorque(dense).maxCoeff();
   const double mu = model_->friction() - config_->friction_margin;
@@ -188,7 +191,15 @@ TEST_F(FiveLinkSolution, DenseExportHoldsItsContactsAndIsConsistentBetweenTheNod
   EXPECT_LT(gaits::maxRateMismatch(dense), 2e-3);
   // Accelerations within 1 % of the rates' differences (issue 34; 3.7e-3 measured).
   EXPECT_LT(gaits::maxAccelerationMismatch(dense), 1e-2);
-  EXPECT_LT(gaits::maxDynamicsResidual(dense, *model_), 1e-2 * peak);
+  const test::SampleResimulation replay = test::resimulateSamples(dense, *model_);
+  const double peak_acceleration = test::peakAcceleration(dense);
+  RecordProperty(
+      "replay_acceleration_error",
+      fmt::format("{:.2e} of {:.1f} rad/s^2", replay.acceleration_error, peak_acceleration));
+  EXPECT_GT(replay.intervals, 600);
+  // Measured 0.67 of 572 rad/s^2 (1.2e-3), after the impact where the forces change fastest;
+  // the torques one sample late would miss by about 10 rad/s^2.
+  EXPECT_LT(replay.acceleration_error, 3e-3 * peak_acceleration);
   EXPECT_GT(gaits::minNormalForce(dense), 0);
   // The margin's cone (mu - 0.15 = 0.45) binds at the points; between the first DSP points,
   // where the reduced coordinates' forces change fastest after the impact, the ratio reaches
