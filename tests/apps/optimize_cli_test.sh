@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# End-to-end checks of `gaitopt optimize`: the RABBIT benchmark, outputs and exit codes.
+# End-to-end checks of `gaitopt optimize`: RABBIT (Kelly 2017's robot), outputs and exit codes.
 # Usage: optimize_cli_test.sh <path to gaitopt binary> <repo root>
 # shellcheck source=tests/apps/cli_test_lib.sh
 source "$(dirname "$0")/cli_test_lib.sh" gaitopt "$@"
@@ -13,6 +13,9 @@ rows=$(($(wc -l <"$TMP/opt/trajectory.csv") - 1))
 [[ $rows -eq 141 ]] || fail "(a) expected 141 rows at 200 Hz over 0.7 s, got $rows"
 check_json "(a) summary" "$TMP/opt/summary.json" <<'PY'
 assert d["status"] == "Solve_Succeeded", d["status"]
+# A regression figure, not a published one: this config's own optimum (0.5 m in 0.7 s), which
+# issue 34 holds at 390.79. Kelly's published 263.70 (a 0.4 m step in 0.6 s) is checked by
+# RabbitKelly2017.ShortStepCostMatchesThePublishedGpopsValue.
 assert abs(d["cost"] - 390.79) < 0.005, d["cost"]
 # 8 iterations with the multipliers started mu-based (13 when started constant); a margin for other BLAS
 assert d["iterations"] <= 10, d["iterations"]

@@ -55,7 +55,7 @@ const WorkAt& shipped() {
   return *solved;
 }
 
-TEST(TorqueRateLimit, TheWorkOptimumsTorquesChangeNoFasterThanTheBoundOnItsExport) {
+TEST(TorqueRateLimit, TheWorkOptimumsTorquesKeepTheRateBoundAtThePointsAndTwiceItOnTheExport) {
   // Nothing smooths the torques here: no rate bound, no jerk bounds, theta in the double support.
   const WorkAt free({{"constraints.torque_rate_limit", "0"},
                      {"constraints.jerk_limit", "0"},

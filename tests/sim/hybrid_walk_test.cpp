@@ -122,7 +122,7 @@ constexpr int kSteps = 20;
 constexpr int kSteps = 2;
 #endif
 
-TEST_F(FiveLinkWalk, BothGaitsWalkTwentyStepsOnAStableCycle) {
+TEST_F(FiveLinkWalk, BothGaitsWalkTwentyStepsOnAStableCycleOnALongHeel) {
   // The planned step: touchdown at 0.6 s, 0.35 m ahead, on both the polynomial gait and the
   // optimum as exported (trajectory.csv at 1 kHz). Both set the swing tip down at rest, so the
   // simulator's contact threshold (1 um above the ground) is reached early: measured 0.67 ms
@@ -149,25 +149,28 @@ TEST_F(FiveLinkWalk, BothGaitsWalkTwentyStepsOnAStableCycle) {
       options.steps = kSteps;
       const WalkResult w = simulateWalk(plant, c, ref, options);
       EXPECT_EQ(w.steps_completed, kSteps) << label << ": " << w.failure;
-      if (kSteps < 20) continue;
-      const PoincareAnalysis p = analysePoincare(plant, c, ref);
-      ASSERT_TRUE(p.ok) << label << ": " << p.failure;
       double touchdown_error = 0, advance_error = 0;
       for (const auto& s : w.steps) {
         EXPECT_EQ(s.impact, "double") << label;
         touchdown_error = std::max(touchdown_error, std::abs(s.ssp_duration - ref.touchdownTime()));
         advance_error = std::max(advance_error, std::abs(s.advance - ref.stepLength()));
       }
-      RecordProperty(label + "_max_multiplier", fmt::format("{:.4f}", p.max_multiplier));
       RecordProperty(label + "_tracking_error", fmt::format("{:.2e}", w.max_tracking_error));
       RecordProperty(label + "_touchdown_error_s", fmt::format("{:.2e}", touchdown_error));
       RecordProperty(label + "_advance_error_m", fmt::format("{:.2e}", advance_error));
       EXPECT_LT(touchdown_error, 2e-3) << label;
       EXPECT_LT(advance_error, 1e-4) << label;
+      if (kSteps < 20) continue;
+      const PoincareAnalysis p = analysePoincare(plant, c, ref);
+      ASSERT_TRUE(p.ok) << label << ": " << p.failure;
+      RecordProperty(label + "_max_multiplier", fmt::format("{:.4f}", p.max_multiplier));
       EXPECT_LT(p.max_multiplier, 1.0) << label;
       EXPECT_LT(p.fixed_point_residual, 1e-6) << label;
     }
   }
+  // Said, not passed in silence: the name's twenty steps and stable cycle were not checked.
+  if (kSteps < 20)
+    GTEST_SKIP() << kSteps << " steps walked; twenty and the Poincare map need an optimised build";
 }
 
 }  // namespace
