@@ -7,7 +7,9 @@
 #include <fmt/format.h>
 
 #include "dynamics/ground.hpp"
+#include "dynamics/kinematics.hpp"
 #include "dynamics/ssp_dynamics.hpp"
+#include "library/contact_projection.hpp"
 #include "library/library_config.hpp"
 
 namespace gaitopt::library {
@@ -127,36 +129,69 @@ std::vector<std::pair<int, double>> cellWeights(const Grid& grid,
   return out;
 }
 
+namespace {
+
+/// The blended knot at phase fraction s of phase `ph` lasting `duration` from t0 (its motion
+/// and swing-tip force: torques and stance force are set later).
+gaits::Knot blendedKnot(const std::vector<Corner>& cs, std::size_t ph, double s, double t0,
+                        double duration) {
+  gaits::Knot k = normalisedKnot(*cs.front().traj, cs.front().spans[ph], s);
+  k.theta.setZero();
+  k.dtheta.setZero();
+  k.ddtheta.setZero();
+  k.force_swing.setZero();
+  for (const auto& c : cs) accumulate(k, normalisedKnot(*c.traj, c.spans[ph], s), c.weight);
+  k.t = t0 + s * duration;
+  k.dtheta /= duration;
+  k.ddtheta /= duration * duration;
+  return k;
+}
+
+/// The corners' swing-tip velocity at the end of their single support, weighted [m/s].
+Vec2d touchdownVelocity(const std::vector<Corner>& cs, const dynamics::Model& model) {
+  Vec2d v = Vec2d::Zero();
+  for (const auto& c : cs) {
+    const gaits::Knot& k = c.traj->knots()[c.spans.front().last_knot];
+    v += c.weight *
+         dynamics::pointVelocity<double>(model.tipWeights(), VecD(k.theta), VecD(k.dtheta));
+  }
+  return v;
+}
+
+}  // namespace
+
+// The knots lie on the step's grid j / rate_hz, with both ends of each phase, as an optimum's
+// dense export (ocp/problem/gait_problem.cpp): the written trajectory.csv is then these knots,
+// not a re-interpolation of them, whose torques would miss the inverse dynamics of the
+// interpolated motion between them.
 gaits::Trajectory interpolateGait(const Grid& grid, const GaitLookup& gait_at,
                                   const dynamics::Model& model, const std::vector<double>& values,
                                   double rate_hz) {
+  if (!(rate_hz > 0)) throw std::invalid_argument("the sample rate must be positive");
   const std::vector<Corner> cs = corners(grid, gait_at, values);
   const double step_time = values[kStepLength] / values[kSpeed];
   double corner_time = 0;  // the corners' weighted step time gives the phases' split
   for (const auto& c : cs) corner_time += c.weight * c.traj->duration();
+  const double gap = 1e-3 / rate_hz;  // no sliver next to a phase's end
   std::vector<gaits::Knot> knots;
   double t0 = 0;
   for (std::size_t ph = 0; ph < cs.front().spans.size(); ++ph) {
     double fraction = 0;
     for (const auto& c : cs) fraction += c.weight * c.spans[ph].duration / corner_time;
     const double duration = fraction * step_time;
-    const int samples = std::max(2, static_cast<int>(std::ceil(duration * rate_hz)));
-    for (int i = 0; i <= samples; ++i) {
-      const double s = static_cast<double>(i) / samples;
-      gaits::Knot k = normalisedKnot(*cs.front().traj, cs.front().spans[ph], s);
-      k.theta.setZero();
-      k.dtheta.setZero();
-      k.ddtheta.setZero();
-      k.force_swing.setZero();
-      for (const auto& c : cs) accumulate(k, normalisedKnot(*c.traj, c.spans[ph], s), c.weight);
-      k.t = t0 + s * duration;
-      k.dtheta /= duration;
-      k.ddtheta /= duration * duration;
-      inverseDynamics(model, k);
-      knots.push_back(std::move(k));
+    knots.push_back(blendedKnot(cs, ph, 0.0, t0, duration));
+    for (auto j = static_cast<long>(std::floor(t0 * rate_hz)) + 1;; ++j) {
+      const double t = static_cast<double>(j) / rate_hz;
+      if (t > t0 + duration - gap) break;
+      if (t <= t0 + gap) continue;
+      knots.push_back(blendedKnot(cs, ph, (t - t0) / duration, t0, duration));
+      knots.back().t = t;  // exactly on the grid, not an ulp off it
     }
+    knots.push_back(blendedKnot(cs, ph, 1.0, t0, duration));
     t0 += duration;
   }
+  holdBlendContacts(knots, model, values[kStepLength], touchdownVelocity(cs, model));
+  for (gaits::Knot& k : knots) inverseDynamics(model, k);
   return gaits::Trajectory(cs.front().traj->robot(), values[kStepLength], std::move(knots));
 }
 

@@ -5,8 +5,9 @@
 /// phase-normalised time s = t / T_phase. Angles, their s-derivatives (dtheta T, ddtheta T^2)
 /// and the swing-tip force are blended with the corners' weights, the rates are turned back to
 /// time with the query's own durations (T = step_length / speed, the corners' SSP/DSP split),
-/// and the torques and stance force follow from the blended motion by inverse dynamics. The
-/// blend is not a solution of the problem; interpolation_test.cpp measures how far off it is.
+/// the blend is put back on its contacts (contact_projection.hpp), and the torques and stance
+/// force follow from that motion by inverse dynamics. The blend is not a solution of the
+/// problem; interpolation_test.cpp measures how far off it is.
 #include <array>
 #include <functional>
 
@@ -25,7 +26,7 @@ using GaitLookup = std::function<const gaits::Trajectory*(int point)>;
 std::vector<std::pair<int, double>> cellWeights(const Grid& grid,
                                                 const std::vector<double>& values);
 
-/// The interpolated step sampled at `rate_hz`.
+/// The interpolated step on the grid j / rate_hz, with both ends of each phase.
 /// @throws std::domain_error outside the grid or when a corner has no solved gait,
 ///         std::invalid_argument when the corners' phases differ.
 gaits::Trajectory interpolateGait(const Grid& grid, const GaitLookup& gait_at,

@@ -6,10 +6,12 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <set>
 
 #include <fmt/format.h>
 
 #include "apps/command_runner.hpp"
+#include "apps/export_warnings.hpp"
 #include "apps/output_options.hpp"
 #include "config/config_error.hpp"
 #include "config/overrides.hpp"
@@ -28,17 +30,22 @@ namespace {
 struct InterpolateOptions {
   std::string library_dir;
   std::array<double, library::kWalkAxes> walk{};
-  bool has_slope = false;
-  std::vector<std::string> at;  ///< KEY=VALUE on the library's config axes
+  std::array<bool, library::kWalkAxes> given{};  ///< --speed, --step-length, --slope given
+  std::vector<std::string> at;                   ///< KEY=VALUE on the library's config axes
   OutputOptions output;
 };
 
 /// The query's value on every config axis: --at KEY=VALUE, or the axis' only value.
-/// @throws config::ConfigError naming --at for a key the library does not sweep, a value that is
-///         not a number, or a swept key left out.
+/// @throws config::ConfigError naming --at for a text that is no KEY=VALUE, a key the library
+///         does not sweep or given twice, a value that is not a number, or a swept key left out.
 std::vector<double> configValues(const library::Grid& grid, const std::vector<std::string>& at) {
+  const std::vector<config::Override> overrides = config::parseOverrides(at, "--at");
+  std::set<std::string> keys;
+  for (const config::Override& o : overrides)
+    if (!keys.insert(o.key).second)
+      throw config::ConfigError("--at", o.key, 0, "given twice: one value per key");
   std::map<std::string, double> given;
-  for (const config::Override& o : config::parseOverrides(at)) {
+  for (const config::Override& o : overrides) {
     const auto& axes = grid.configAxes();
     if (std::none_of(axes.begin(), axes.end(), [&](const auto& a) { return a.key == o.key; }))
       throw config::ConfigError("--at", o.key, 0, "the library has no config axis of that key");
@@ -93,16 +100,44 @@ void warnOfABlendThatIsNoGait(const nlohmann::ordered_json& summary) {
                periodicity);
 }
 
+/// The point asked for, by axis: the walk's and each config key's (--at, or its one value).
+nlohmann::ordered_json queryJson(const library::Grid& grid, const std::vector<double>& values) {
+  nlohmann::ordered_json q = {{"speed", values[library::kSpeed]},
+                              {"step_length", values[library::kStepLength]},
+                              {"slope", values[library::kSlope]}};
+  for (std::size_t a = 0; a < grid.configAxes().size(); ++a)
+    q[grid.configAxes()[a].key] = values[library::kWalkAxes + a];
+  return q;
+}
+
+/// As a config axis of one value may be left out (configValues), so may a walk axis of one
+/// value; a slope left out is the library's one, or its base problem's.
+/// @throws config::ConfigError naming the option of a walk axis of several values left out.
+void fillWalkValues(const library::LibraryFolder& lib, InterpolateOptions& o) {
+  const std::array<const char*, library::kWalkAxes> option = {"--speed", "--step-length",
+                                                              "--slope"};
+  for (int a = 0; a < library::kWalkAxes; ++a) {
+    const std::vector<double>& axis = lib.grid.axes()[a];
+    if (o.given[a]) continue;
+    if (axis.size() == 1)
+      o.walk[a] = axis.front();
+    else if (a == library::kSlope)
+      o.walk[a] = library::basePoint(lib.base)[a];
+    else
+      throw config::ConfigError(option[a], "", 0,
+                                fmt::format("the library has {} values of it, from {:g} to {:g}: "
+                                            "give the query's",
+                                            axis.size(), axis.front(), axis.back()));
+  }
+}
+
 void runInterpolate(InterpolateOptions o) {
   io::refuseInputs(o.output.out_dir, {o.library_dir}, "--out");  // before reading it
   const library::LibraryFolder lib = library::readLibraryFolder(o.library_dir);
   std::vector<std::string> inputs = ocp::ocpInputs(lib.base);
   inputs.push_back(o.library_dir);
   const io::OutputFolder out(o.output.out_dir, inputs);
-  // As a config axis of one value may be left out (configValues), so may a slope of one.
-  if (const auto& slopes = lib.grid.axes()[library::kSlope]; !o.has_slope)
-    o.walk[library::kSlope] =
-        slopes.size() == 1 ? slopes.front() : library::basePoint(lib.base)[library::kSlope];
+  fillWalkValues(lib, o);
   std::vector<double> values(o.walk.begin(), o.walk.end());
   const std::vector<double> keyed = configValues(lib.grid, o.at);
   values.insert(values.end(), keyed.begin(), keyed.end());
@@ -113,6 +148,10 @@ void runInterpolate(InterpolateOptions o) {
       library::interpolateGait(lib.grid, solved.lookup(), model, values, o.output.rate_hz);
   auto summary = gaits::gaitSummary(traj, model, {o.library_dir, "interpolated", 0, 0, 0});
   summary["unactuated_torque_Nm"] = unactuatedTorque(traj, model);
+  // The export contract, judged as optimize and poly judge theirs: a blend of angles keeps no
+  // contact by construction (the double support's pinned tip, for one, moves).
+  summary["between_nodes"] = ocp::betweenNodeMetrics(traj, model, o.output.rate_hz);
+  summary["query"] = queryJson(lib.grid, values);
   auto& corners = summary["library_corners"] = nlohmann::ordered_json::array();
   for (const auto& [p, w] : library::cellWeights(lib.grid, values))
     corners.push_back({{"point", lib.grid.point(p).name}, {"weight", w}});
@@ -126,6 +165,7 @@ void runInterpolate(InterpolateOptions o) {
       io::counted(corners.size(), "corner"), summary["max_defect"].get<double>(),
       summary["periodicity_error"].get<double>(), out.path());
   warnOfABlendThatIsNoGait(summary);
+  warnOfBreaches("interpolate", summary["between_nodes"]);
 }
 
 }  // namespace
@@ -137,12 +177,13 @@ void registerInterpolateCommand(CLI::App& app) {
   cmd->add_option("--library", o->library_dir, "Library folder (from gaitopt library)")
       ->required()
       ->option_text("DIR");
-  cmd->add_option("--speed", o->walk[library::kSpeed], "Walking speed [m/s]")
-      ->required()
-      ->check(CLI::Range(1e-3, 20.0));
-  cmd->add_option("--step-length", o->walk[library::kStepLength], "Step length [m]")
-      ->required()
-      ->check(CLI::Range(1e-3, 10.0));
+  CLI::Option* speed =
+      cmd->add_option("--speed", o->walk[library::kSpeed],
+                      "Walking speed [m/s] (may be left out when the library has one)")
+          ->check(CLI::Range(1e-3, 20.0));
+  CLI::Option* step = cmd->add_option("--step-length", o->walk[library::kStepLength],
+                                      "Step length [m] (may be left out when the library has one)")
+                          ->check(CLI::Range(1e-3, 10.0));
   CLI::Option* slope =
       cmd->add_option(
              "--slope", o->walk[library::kSlope],
@@ -158,8 +199,8 @@ void registerInterpolateCommand(CLI::App& app) {
   cmd->footer(
       "Exit codes: 0 ok, 2 bad input, 3 outside the library's grid or a corner not "
       "solved, 1 other failure.");
-  cmd->callback([o, slope] {
-    o->has_slope = slope->count() > 0;
+  cmd->callback([o, speed, step, slope] {
+    o->given = {speed->count() > 0, step->count() > 0, slope->count() > 0};
     runSubcommand([&] { runInterpolate(*o); });
   });
 }

@@ -6,6 +6,7 @@
 
 #include "dynamics/kinematics.hpp"
 #include "gaits/export/consistency.hpp"
+#include "gaits/export/export_checks.hpp"
 #include "gaits/polynomial/retime.hpp"
 #include "library/interpolation.hpp"
 #include "library/point_problem.hpp"
@@ -96,7 +97,10 @@ TEST(Interpolation, BlendErrorFallsWithTheSquareOfTheGridSpacing) {
         "blend at %.2f m/s from %.3f/%.3f: max angle error %.3g rad; DSP tip off its "
         "point by %.3g m (solved corner %.3g m)\n",
         v, v - h / 2, v + h / 2, errors.back(), miss, corner_miss);
-    EXPECT_LT(miss, 2e-3);
+    // The blend is put back on its contacts (contact_projection.hpp): blended angles alone left
+    // the tip 0.05 to 1.1 mm off its point and the swing tip landing above the ground.
+    EXPECT_LT(miss, 1e-9);
+    EXPECT_LT(gaits::maxDspTipDrift(blend, model), 1e-9);
   }
   EXPECT_GT(errors[0], 0);  // a blend is not the solution
   EXPECT_GT(errors[0] / errors[1], 2.5) << "linear interpolation is second order: ratio 4";
