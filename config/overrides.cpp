@@ -72,17 +72,18 @@ bool literalKeyAt(const YAML::Node& node, const std::vector<Step>& steps, std::s
 
 }  // namespace
 
-Override parseOverride(const std::string& text) {
+Override parseOverride(const std::string& text, const std::string& option) {
   const std::size_t eq = text.find('=');
   if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
-    throw ConfigError("--set", text, 0,
-                      "expected KEY=VALUE, e.g. --set constraints.friction_margin=0.2");
+    throw ConfigError(option, text, 0,
+                      "expected KEY=VALUE, e.g. " + option + " constraints.friction_margin=0.2");
   return {text.substr(0, eq), text.substr(eq + 1)};
 }
 
-std::vector<Override> parseOverrides(const std::vector<std::string>& texts) {
+std::vector<Override> parseOverrides(const std::vector<std::string>& texts,
+                                     const std::string& option) {
   std::vector<Override> overrides;
-  for (const std::string& text : texts) overrides.push_back(parseOverride(text));
+  for (const std::string& text : texts) overrides.push_back(parseOverride(text, option));
   return overrides;
 }
 

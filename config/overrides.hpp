@@ -19,11 +19,12 @@ struct Override {
   std::string text() const { return scope + key + "=" + value; }
 };
 
-/// KEY=VALUE. @throws ConfigError naming --set when there is no '=', no key or no value.
-Override parseOverride(const std::string& text);
+/// KEY=VALUE. @throws ConfigError naming `option` when there is no '=', no key or no value.
+Override parseOverride(const std::string& text, const std::string& option = "--set");
 
-/// parseOverride of each text, in order (a command's repeated --set).
-std::vector<Override> parseOverrides(const std::vector<std::string>& texts);
+/// parseOverride of each text, in order (a command's repeated --set, or `option`).
+std::vector<Override> parseOverrides(const std::vector<std::string>& texts,
+                                     const std::string& option = "--set");
 
 /// The overrides of one of a command's several files: "robot.foot.heel=0.3" is key "foot.heel"
 /// of the file of scope "robot". @throws ConfigError naming --set and the scopes when a text

@@ -42,20 +42,20 @@ nlohmann::ordered_json lastRun(const std::string& path, const RunStats& s) {
           {"points_per_second", s.wall_time_s > 0 ? s.points / s.wall_time_s : 0.0}};
 }
 
-/// A point's gait is what the grid says it is: a gait of this robot (gaits::requireGaitOf) with
-/// its summary.json present, of the point's slope, step length and step time. A folder copied
-/// over another point's, another robot's point or a lost summary otherwise blended in unseen.
+/// @throws config::ConfigError naming `file`, `why` it is no point's gait, and the remedy.
+[[noreturn]] void refuseDamaged(const std::string& file, const std::string& why) {
+  throw config::ConfigError(file, "", 0,
+                            why +
+                                ": the library folder was edited or damaged; rerun gaitopt "
+                                "library on it to solve the point again");
+}
+
+/// A point's gait is what the grid says it is: a gait of this robot (gaits::requireGaitOf) of
+/// the point's slope, step length and step time. A folder copied over another point's or another
+/// robot's point otherwise blended in unseen.
 void checkPointGait(const std::string& point_dir, const gaits::Trajectory& traj,
                     const GridPoint& point, const dynamics::Model& model) {
   const std::string summary = point_dir + "/summary.json";
-  const auto refuse = [&](const std::string& file, const std::string& why) {
-    throw config::ConfigError(file, "", 0,
-                              why +
-                                  ": the library folder was edited or damaged; rerun gaitopt "
-                                  "library on it to solve the point again");
-  };
-  if (!std::filesystem::is_regular_file(summary))
-    refuse(summary, "missing beside its trajectory.csv");
   gaits::requireGaitOf(point_dir, model);
   const double slope_rad = io::readStrictJson(summary).value("slope_rad", 0.0);
   const auto [speed, length, slope] = point.walk();
@@ -63,10 +63,11 @@ void checkPointGait(const std::string& point_dir, const gaits::Trajectory& traj,
   if (std::abs(traj.stepLength() - length) > 1e-9 * length ||
       std::abs(traj.duration() - step_time) > 1e-6 * step_time ||
       std::abs(slope_rad - slope) > 1e-9)
-    refuse(point_dir + "/trajectory.csv",
-           fmt::format("a step of {:g} m in {:g} s on slope {:g}, not the point's {:g} m in {:g} "
-                       "s on {:g}",
-                       traj.stepLength(), traj.duration(), slope_rad, length, step_time, slope));
+    refuseDamaged(
+        point_dir + "/trajectory.csv",
+        fmt::format("a step of {:g} m in {:g} s on slope {:g}, not the point's {:g} m in {:g} "
+                    "s on {:g}",
+                    traj.stepLength(), traj.duration(), slope_rad, length, step_time, slope));
 }
 
 /// The files the points were solved from, as they are now against the fingerprints the library
@@ -110,6 +111,9 @@ GaitLookup FolderGaits::lookup() {
     const std::string point = dir_ + "/points/" + grid_->point(p).name;
     const std::string csv = point + "/trajectory.csv";
     if (std::filesystem::exists(csv)) {
+      // Before the CSV: its rows need the phase switches the summary holds.
+      if (!std::filesystem::is_regular_file(point + "/summary.json"))
+        refuseDamaged(point + "/summary.json", "missing beside its trajectory.csv");
       auto gait = std::make_unique<gaits::Trajectory>(gaits::readTrajectoryCsv(csv, *model_));
       checkPointGait(point, *gait, grid_->point(p), *model_);
       slot = std::move(gait);
@@ -117,9 +121,7 @@ GaitLookup FolderGaits::lookup() {
     }
     // A solved point's folder without its gait is a damaged library, not an unsolved point.
     if (std::filesystem::exists(point + "/summary.json"))
-      throw config::ConfigError(csv, "", 0,
-                                "missing beside its summary.json: the library folder was edited "
-                                "or damaged; rerun gaitopt library on it to solve the point again");
+      refuseDamaged(csv, "missing beside its summary.json");
     return nullptr;  // not solved
   };
 }

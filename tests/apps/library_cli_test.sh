@@ -105,10 +105,14 @@ PY
 cp "$L/index.csv" "$TMP/index_a.csv"
 
 # (a') interpolate: halfway between two solved speeds the corners weigh 1/2 each and the step
-# lasts step_length / speed; outside the grid exits 3; a folder that is no library exits 2.
-run interpolate --library "$L" --speed 0.65 --step-length 0.5 --out "$TMP/mid" --no-plots
+# lasts step_length / speed; outside the grid exits 3; a folder that is no library exits 2. The
+# library's one step length may be left out; the query and the export contract's verdict are
+# recorded.
+run interpolate --library "$L" --speed 0.65 --out "$TMP/mid" --no-plots
 [[ $RC -eq 0 ]] || fail "(a') interpolate exited $RC: $(cat "$TMP/err")"
 check_json "(a') interpolate" "$TMP/mid/summary.json" <<'PY'
+assert d["query"] == {"speed": 0.65, "step_length": 0.5, "slope": 0.0}, d["query"]
+assert "breaches" in d["between_nodes"], d["between_nodes"]
 w = sorted((c["point"], c["weight"]) for c in d["library_corners"])
 assert [p for p, _ in w] == ["v0.600_L0.500_s+0.000", "v0.700_L0.500_s+0.000"], w
 assert all(abs(x - 0.5) < 1e-12 for _, x in w), w
@@ -121,6 +125,15 @@ grep -q "warning: the blend needs .* N m at a joint without an actuator" "$TMP/e
   fail "(a') no warning of the loaded passive ankle: $(cat "$TMP/err")"
 grep -q "warning: the blended step does not close on itself" "$TMP/err" ||
   fail "(a') no warning of the open step: $(cat "$TMP/err")"
+run interpolate --library "$L" --step-length 0.5 --out "$TMP/nospeed" --no-plots
+[[ $RC -eq 2 ]] && grep -q -- "--speed: the library has 3 values of it, from 0.6 to 0.8" "$TMP/err" ||
+  fail "(a') a speed left out of a library of three exited $RC: $(cat "$TMP/err")"
+run interpolate --library "$L" --speed 0.65 --at foo --out "$TMP/atfoo" --no-plots
+[[ $RC -eq 2 ]] && grep -q -- "--at: key 'foo': expected KEY=VALUE, e.g. --at" "$TMP/err" ||
+  fail "(a') --at without '=' exited $RC: $(cat "$TMP/err")"
+run interpolate --library "$L" --speed 0.65 --at a.b=1 --at a.b=2 --out "$TMP/attwice" --no-plots
+[[ $RC -eq 2 ]] && grep -q "given twice" "$TMP/err" ||
+  fail "(a') a key given twice to --at exited $RC: $(cat "$TMP/err")"
 run interpolate --library "$L" --speed 0.9 --step-length 0.5 --out "$TMP/far" --no-plots
 [[ $RC -eq 3 ]] || fail "(a') outside the grid exited $RC: $(cat "$TMP/err")"
 grep -q "speed 0.9 is outside the library's range \[0.6, 0.8\]" "$TMP/err" || fail "(a') $(cat "$TMP/err")"
