@@ -1,6 +1,6 @@
-"""Gaits from Python: the polynomial gait's boundary conditions (Mu ch. 3), an OCP solve whose
-cost equals the CLI's on the same config, a closed-loop walk that stays on its reference, and
-the CLI's exit codes as exception types."""
+"""Gaits from Python: the polynomial gait's boundary conditions and work-energy balance (Mu
+ch. 3), an OCP solve whose cost equals the CLI's on the same config, a closed-loop walk that
+stays on its reference, and the CLI's exit codes as exception types."""
 import json
 import subprocess
 
@@ -31,10 +31,22 @@ def test_poly_gait_boundary_conditions(robot, poly_gait):
     expected = theta[0][[4, 3, 2, 1, 0]] + np.pi * np.array([1, 1, 0, 1, 1])
     wrapped = np.angle(np.exp(1j * (theta[-1] - expected)))
     np.testing.assert_allclose(wrapped, 0, atol=1e-6)
-    # The torques are the inverse dynamics of the motion in single support.
-    k = 5
-    np.testing.assert_allclose(
-        robot.inverse_dynamics(theta[k], g.dtheta[k], g.ddtheta[k]), g.tau[k], atol=1e-6)
+
+
+def test_poly_gait_torques_do_the_work_the_energy_changes_by(robot, poly_gait):
+    # Work-energy theorem in single support, B pinned (the ground does no work): the joints' work,
+    # the integral of tau . qdot with qdot = M dtheta the joint rates (Mu 2.41-2.43), is the
+    # change of K + P (Mu 2.3, 2.4), a law the torques keep only if the dynamics that made them
+    # derive from K and P. Trapezoid over the 1 kHz samples, O(h^2): measured 7.1e-5 J (2.8e-4 J
+    # at 500 Hz) of the 8.3 J the joints exchange; tau . dtheta in place of tau . qdot is 5.2 J off.
+    g = poly_gait
+    ssp = slice(0, g.phase.index("DSP"))  # up to the touchdown, the last SSP knot
+    theta, dtheta = g.theta[ssp], g.dtheta[ssp]
+    qdot = np.column_stack([dtheta[:, 0], dtheta[:, :-1] - dtheta[:, 1:]])
+    work = np.trapz(np.einsum("ij,ij->i", g.tau[ssp], qdot), g.t[ssp])
+    energy = [robot.kinetic_energy(th, d) + robot.potential_energy(th)
+              for th, d in zip(theta, dtheta)]
+    assert work == pytest.approx(energy[-1] - energy[0], abs=3e-4)
 
 
 def test_written_folder_is_on_one_grid_and_reads_back(robot, poly_gait, tmp_path):
