@@ -3,9 +3,11 @@
 
 Usage: map_plots.py RESULT_DIR
 Reads RESULT_DIR/summary.json (key `maps`: per map its two parameters `a` and `b` with name,
-unit, values, nominal, and the largest walking rectangle around the nominal point) and
+unit, values, nominal, geometric (optional), and the largest walking rectangle around the nominal point) and
 RESULT_DIR/map_<a>_<b>.csv, and writes RESULT_DIR/map_<a>_<b>.png per map, printing its path:
-two heat maps over the grid, a (rows) against b (columns):
+two heat maps over the grid, a (rows) against b (columns), each cell centred on its value with
+its edges midway between neighbours (an axis with the nominal inserted is uneven), a geometric
+parameter (`geometric`: the stiffness) on a log axis:
   left:  steps completed, the nominal point starred and the largest walking rectangle around
          it framed;
   right: how each point ended: walked, or the failure's cause (the text after "step k: ").
@@ -36,7 +38,29 @@ def read_axis(path, entry, key):
     plot_io.require_type(path, axis, "name", str, "a string", f"{key}.")
     plot_io.require_type(path, axis, "unit", str, "a string", f"{key}.")
     plot_io.require_numbers(path, axis, ["values", "nominal"], prefix=f"{key}.")
+    if "geometric" in axis:
+        plot_io.require_type(path, axis, "geometric", bool, "true or false", f"{key}.")
     return axis
+
+
+def is_geometric(axis, values):
+    """Whether an axis is drawn on a log scale: a parameter spaced by a ratio (summary.json's
+    `geometric`; in summaries written before it, the stiffness), with positive values."""
+    return bool(axis.get("geometric", axis["name"] == "stiffness")) and bool(np.all(values > 0))
+
+
+def cell_edges(values, log):
+    """The edges of the cells centred on grid values: midway between neighbours (in log space on
+    a log axis), the end cells as wide as their neighbours. An uneven axis (the nominal inserted
+    into a range, a geometric stiffness) is drawn where its points were walked; evenly spread
+    cells put rows at values that never were."""
+    x = np.log(values) if log else np.asarray(values, dtype=float)
+    if len(x) == 1:
+        half = np.array([0.5 if log or x[0] == 0 else 0.5 * abs(x[0])])
+    else:
+        half = np.diff(x) / 2
+    edges = np.concatenate([[x[0] - half[0]], x[:-1] + half[:len(x) - 1], [x[-1] + half[-1]]])
+    return np.exp(edges) if log else edges
 
 
 def cause(failure):
@@ -82,18 +106,20 @@ class Map:
             self.steps[i, j] = s
             self.outcome[i, j] = WALKED if w else cause(f)
         self.requested = float(np.max(cols["steps_requested"]))
+        self.a_log = is_geometric(self.a, self.a_values)
+        self.b_log = is_geometric(self.b, self.b_values)
+        self.a_edges = cell_edges(self.a_values, self.a_log)
+        self.b_edges = cell_edges(self.b_values, self.b_log)
 
     def label(self, axis):
         if is_fraction(axis):
             return f"{axis['name'].replace('_', ' ')} [%]"
         return f"{axis['name']} [{axis['unit']}]" if axis["unit"] else axis["name"]
 
-    def extent(self):
-        """imshow extent with each cell centred on its grid value (b across, a up)."""
-        def edges(v):
-            h = (v[-1] - v[0]) / (len(v) - 1) / 2
-            return v[0] - h, v[-1] + h
-        return (*edges(self.b_values), *edges(self.a_values))
+    def grid(self, ax, values, **kw):
+        """Draws `values` (indexed [a][b]) as cells between the edges (b across, a up)."""
+        return ax.pcolormesh(self.b_edges, self.a_edges, np.ma.masked_invalid(values),
+                             shading="flat", **kw)
 
 
 def layout_under_title(fig, text):
@@ -118,18 +144,35 @@ def mark_nominal_and_rectangle(ax, m):
             label="nominal")
     r = m.rectangle
     if r:
-        hb = (m.b_values[-1] - m.b_values[0]) / (len(m.b_values) - 1) / 2
-        ha = (m.a_values[-1] - m.a_values[0]) / (len(m.a_values) - 1) / 2
+        # Its cells' own edges: the frame holds exactly the walking cells.
+        def span(edges, values, first, last):
+            i, k = (int(np.argmin(np.abs(values - v))) for v in (first, last))
+            return edges[i], edges[k + 1]
+        b0, b1 = span(m.b_edges, m.b_values, r["b_from"], r["b_to"])
+        a0, a1 = span(m.a_edges, m.a_values, r["a_from"], r["a_to"])
         ax.add_patch(matplotlib.patches.Rectangle(
-            (r["b_from"] - hb, r["a_from"] - ha), r["b_to"] - r["b_from"] + 2 * hb,
-            r["a_to"] - r["a_from"] + 2 * ha, fill=False, ec=style.OK, lw=2.5, zorder=3,
+            (b0, a0), b1 - b0, a1 - a0, fill=False, ec=style.OK, lw=2.5, zorder=3,
             label=f"walking rectangle around nominal ({r['points']} point"
                   f"{'' if r['points'] == 1 else 's'})"))
 
 
+def scale_axis(ax, which, axis, values, log):
+    """A log scale for a geometric axis; ticks at the grid's values where they are few, so an
+    uneven axis shows which values were walked."""
+    axis_artist = ax.xaxis if which == "x" else ax.yaxis
+    if log:
+        (ax.set_xscale if which == "x" else ax.set_yscale)("log")
+    if len(values) <= 12:
+        axis_artist.set_major_locator(matplotlib.ticker.FixedLocator(values))
+        axis_artist.set_minor_locator(matplotlib.ticker.NullLocator())
+        axis_artist.set_major_formatter(matplotlib.ticker.FuncFormatter(
+            (lambda v, _: f"{v:.4g}") if log else (lambda v, _: f"{v:g}")))
+    if is_fraction(axis):
+        percent_ticks(axis_artist)
+
+
 def draw_steps(ax, fig, m):
-    image = ax.imshow(m.steps, origin="lower", aspect="auto", extent=m.extent(),
-                      cmap="viridis", vmin=0, vmax=m.requested, interpolation="nearest")
+    image = m.grid(ax, m.steps, cmap="viridis", vmin=0, vmax=m.requested)
     bar = fig.colorbar(image, ax=ax, label="steps completed")
     bar.locator = matplotlib.ticker.MaxNLocator(integer=True)  # steps are whole: no 2.5
     bar.update_ticks()
@@ -146,9 +189,8 @@ def draw_causes(ax, m):
     colours = [style.OK if n == WALKED else CAUSE_COLOURS[i % len(CAUSE_COLOURS)]
                for i, n in enumerate(names)]
     index = np.vectorize(names.index)(m.outcome)
-    ax.imshow(index, origin="lower", aspect="auto", extent=m.extent(),
-              cmap=matplotlib.colors.ListedColormap(colours), vmin=-0.5,
-              vmax=len(names) - 0.5, interpolation="nearest")
+    m.grid(ax, index, cmap=matplotlib.colors.ListedColormap(colours), vmin=-0.5,
+           vmax=len(names) - 0.5)
     handles = [matplotlib.patches.Patch(color=c, label=n) for n, c in zip(names, colours)]
     mark_nominal_and_rectangle(ax, m)
     ax.legend(handles=handles, fontsize=7, loc="upper right")
@@ -160,12 +202,10 @@ def map_figure(m, title):
     draw_steps(axes[0], fig, m)
     draw_causes(axes[1], m)
     for ax in axes:
-        ax.set_xlabel(m.label(m.b))
-        ax.set_ylabel(m.label(m.a))
-        if is_fraction(m.b):
-            percent_ticks(ax.xaxis)
-        if is_fraction(m.a):
-            percent_ticks(ax.yaxis)
+        ax.set_xlabel(m.label(m.b) + (" (log scale)" if m.b_log else ""))
+        ax.set_ylabel(m.label(m.a) + (" (log scale)" if m.a_log else ""))
+        scale_axis(ax, "x", m.b, m.b_values, m.b_log)
+        scale_axis(ax, "y", m.a, m.a_values, m.a_log)
     layout_under_title(fig, title)
     return fig
 

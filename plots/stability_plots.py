@@ -49,6 +49,8 @@ def read_sweep_entry(path, name, entry):
         raise InputError(f"{path}: key 'sweeps.{name}': expected an object with unit, values, "
                          f"walks_from, walks_to, nominal")
     plot_io.require_type(path, entry, "unit", str, "a string", prefix)
+    if "geometric" in entry:
+        plot_io.require_type(path, entry, "geometric", bool, "true or false", prefix)
     plot_io.require_numbers(path, entry, ["values", "nominal"], prefix=prefix)
     plot_io.require_numbers(path, entry, ["walks_from", "walks_to"], nullable=True,
                             prefix=prefix)
@@ -96,6 +98,7 @@ class Sweep:
     def __init__(self, result_dir, name, entry):
         self.name = name
         self.unit = entry["unit"]
+        self.geometric = entry.get("geometric")  # None in summaries written before the key
         self.nominal = entry["nominal"]
         self.walks = (None if entry["walks_from"] is None
                       else (entry["walks_from"], entry["walks_to"]))
@@ -105,10 +108,16 @@ class Sweep:
                                            >= self.col["steps_requested"])
 
     def log_spaced(self):
-        """True for positive values with a constant ratio (a geometric sweep, such as the
-        ground stiffness), drawn on a log axis."""
+        """True for a geometric sweep (the ground stiffness), drawn on a log axis: summary.json's
+        `geometric`, which holds where the nominal inserted breaks the constant ratio (a pad's
+        3e5 in 1e5:1e7:3); in summaries written before it, positive values with a constant
+        ratio."""
         v = self.value
-        if len(v) < 3 or np.any(v <= 0):
+        if np.any(v <= 0):
+            return False
+        if self.geometric is not None:
+            return self.geometric
+        if len(v) < 3:
             return False
         ratios = v[1:] / v[:-1]
         return bool(np.all(ratios > 1.5) and np.ptp(np.log(ratios)) < 1e-6 * np.log(ratios[0]) + 1e-9)

@@ -23,6 +23,8 @@ nlohmann::ordered_json axisJson(const MapParameter& axis) {
   return {{"name", axis.parameter->name()},
           {"unit", axis.parameter->unit()},
           {"meaning", axis.parameter->meaning},
+          // Spaced by a constant ratio (stiffness): the picture draws it on a log axis.
+          {"geometric", axis.parameter->geometric},
           {"values", axis.values.size()},
           {"from", keyedValue(axis.values.front())},
           {"to", keyedValue(axis.values.back())},

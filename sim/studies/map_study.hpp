@@ -39,11 +39,11 @@ GridRectangle largestWalkingRectangle(const std::vector<std::vector<bool>>& walk
                                       int b_index = -1);
 
 /// The region of the grid a x b where every point walks all its steps (rows keyed as
-/// SweepFile::key(a, b); a missing row counts as not walking): parameters (name, unit, values,
-/// nominal), points, points_walked, nominal_walks (the grid point nearest the nominal one),
-/// per_row (for every value of a, walkingInterval of b around b's nominal value),
-/// largest_rectangle and largest_rectangle_around_nominal ({a_from, a_to, b_from, b_to, points}
-/// or null).
+/// SweepFile::key(a, b); a missing row counts as not walking): parameters (name, unit,
+/// meaning, geometric, values, from, to, nominal), points, points_walked, nominal_walks (the grid
+/// point nearest the nominal one), per_row (for every value of a, walkingInterval of b around b's
+/// nominal value), largest_rectangle and largest_rectangle_around_nominal ({a_from, a_to, b_from,
+/// b_to, points} or null).
 nlohmann::ordered_json walkingRegion(const MapParameter& a, const MapParameter& b,
                                      const std::map<std::string, SweepRow>& rows);
 

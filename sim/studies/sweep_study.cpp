@@ -91,6 +91,9 @@ nlohmann::ordered_json walkingInterval(const SweepParameter& parameter,
   };
   nlohmann::ordered_json j{{"unit", parameter.unit()},
                            {"meaning", parameter.meaning},
+                           // A geometric parameter is drawn on a log axis, also where the
+                           // nominal inserted breaks its constant ratio.
+                           {"geometric", parameter.geometric},
                            {"values", rows.size()},
                            {"nominal", std::isfinite(nominal) ? nlohmann::ordered_json(nominal)
                                                               : nlohmann::ordered_json()},

@@ -42,9 +42,9 @@ SweepRow walkSweepPoint(const dynamics::Model& model, const Reference& reference
                         const std::string& name, double value);
 
 /// The interval of values around `nominal` (NaN: none) where every row walks all its steps:
-/// unit, meaning, values (rows), nominal, walks_from, walks_to (null when the point nearest
-/// the nominal value does not walk), and fails_below / fails_above (value, failure) where the
-/// interval ends inside the rows; the ends as keyedValue gives them.
+/// unit, meaning, geometric (spaced by a ratio), values (rows), nominal, walks_from, walks_to (null
+/// when the point nearest the nominal value does not walk), and fails_below / fails_above (value,
+/// failure) where the interval ends inside the rows; the ends as keyedValue gives them.
 nlohmann::ordered_json walkingInterval(const SweepParameter& parameter,
                                        const std::map<std::string, SweepRow>& rows, double nominal);
 

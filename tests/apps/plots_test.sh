@@ -244,6 +244,15 @@ assert sp.headline(s).startswith("Stability sweeps: gait gait_x, computed_torque
 s2 = dict(s, gain_scale=0.3, contact_rules={"cop_limit": "fail"})
 assert "computed_torque controller at 0.3 x its gains, CoP limit: fail" in sp.headline(s2), sp.headline(s2)
 assert " x its gains" not in sp.headline(dict(s, gain_scale=1.0)), sp.headline(s)
+# summary.json's `geometric` decides the axis, also where the nominal inserted breaks the ratio
+# (a pad's 3e5 in stiffness=1e5:1e7:3, drawn linear by the ratio test).
+import numpy as np
+friction.value = np.array([1e5, 3e5, 1e6, 1e7])
+assert not friction.log_spaced()  # no `geometric`: by the ratio
+friction.geometric = True
+assert friction.log_spaced()
+friction.geometric, friction.value = False, np.array([0.1, 0.3, 0.9])
+assert not friction.log_spaced()
 PY
 plot stability_plots.py "$TMP/stab2"
 [[ $RC -eq 0 ]] || fail "(c2) stability_plots.py exited $RC: $(cat "$TMP/err")"
@@ -314,6 +323,56 @@ assert ax.xaxis.get_major_formatter()(0.05, 0) == "5"
 bar = fig.axes[-1]  # the colour bar
 ticks = [t for t in bar.get_yticks() if 0 <= t <= m.requested]
 assert all(float(t).is_integer() for t in ticks), ticks
+PY
+# (c3'') an uneven axis is drawn as walked: cell edges midway between the values (the nominal 0
+# inserted into push=-6:-5:2 made rows -6, -5, 0, drawn evenly over -7.5 .. 1.5), a geometric
+# axis (stiffness) on a log scale, also in a summary written before `geometric`; ticks at the
+# values; the walking rectangle framed on its cells' edges.
+mkdir -p "$TMP/umap"
+cat >"$TMP/umap/summary.json" <<'JSON'
+{"controller": "computed_torque", "steps_requested": 10, "maps": {"push_stiffness": {
+ "a": {"name": "push", "unit": "N s", "values": 3, "nominal": 0, "geometric": false},
+ "b": {"name": "stiffness", "unit": "N/m^n", "values": 3, "nominal": 1e7, "geometric": true},
+ "largest_rectangle_around_nominal": {"a_from": -5, "a_to": 0, "b_from": 1e6, "b_to": 1e7,
+                                      "points": 4}}}}
+JSON
+"$PY" - "$TMP/umap/map_push_stiffness.csv" <<'PY'
+import sys
+rows = ["push,stiffness,steps_completed,steps_requested,fell,failure,max_tracking_error,"
+        "max_multiplier,mean_advance,wall_time_s"]
+for a in (-6, -5, 0):
+    for b in (1e5, 1e6, 1e7):
+        walks = a > -6 and b > 1e5
+        rows.append(f"{a},{b:g},{10 if walks else 2},10,{0 if walks else 1},"
+                    f"{'' if walks else 'step 3: slip'},0.01,,0.35,0.1")
+open(sys.argv[1], "w").write("\n".join(rows) + "\n")
+PY
+plot stability_plots.py "$TMP/umap"
+[[ $RC -eq 0 && -s "$TMP/umap/map_push_stiffness.png" ]] || fail "(c3'') exited $RC: $(cat "$TMP/err")"
+(cd "$PLOTS" && "$PY" - "$TMP/umap" <<'PY') || fail "(c3'') uneven axes"
+import sys, json
+import numpy as np
+import map_plots as mp
+s = json.load(open(sys.argv[1] + "/summary.json"))
+for old in (False, True):  # with `geometric`, and as written before it
+    entry = json.loads(json.dumps(s["maps"]["push_stiffness"]))
+    if old:
+        for axis in ("a", "b"):
+            del entry[axis]["geometric"]
+    m = mp.Map(sys.argv[1], "push_stiffness", entry)
+    assert np.allclose(m.a_edges, [-6.5, -5.5, -2.5, 2.5]), m.a_edges
+    assert np.allclose(np.log10(m.b_edges), [4.5, 5.5, 6.5, 7.5]), m.b_edges
+    fig = mp.map_figure(m, "t")
+    for ax in fig.axes[:2]:
+        assert ax.get_xscale() == "log" and ax.get_yscale() == "linear"
+        xy = ax.collections[0].get_coordinates()  # the cells' corners, [a edge][b edge]
+        assert np.allclose(xy[:, 0, 1], m.a_edges) and np.allclose(xy[0, :, 0], m.b_edges), xy
+        assert list(ax.get_yticks()) == [-6, -5, 0], ax.get_yticks()
+        assert np.allclose(ax.get_xticks(), [1e5, 1e6, 1e7]), ax.get_xticks()
+    frame = [p for p in fig.axes[0].patches if p.get_label().startswith("walking rectangle")][0]
+    assert np.allclose([frame.get_x(), frame.get_y()], [10 ** 5.5, -5.5]), frame
+    assert np.isclose(frame.get_x() + frame.get_width(), 10 ** 7.5), frame
+    assert np.isclose(frame.get_y() + frame.get_height(), 2.5), frame
 PY
 edit "$TMP/map/summary.json" "text = text.replace('\"values\": 3', '\"values\": 4')"
 expect_error "(c3) grid size" stability_plots.py "$TMP/map" "$TMP/map/map_push_friction.csv: a 2 x 3 grid, summary.json says 2 x 4"

@@ -63,6 +63,7 @@ TEST(WalkingRegion, CountsPointsAndGivesEachRowItsInterval) {
       rows[SweepFile::key(a.values[i], b.values[j])] = row(a.values[i], b.values[j], walks[i][j]);
   const auto j = walkingRegion(a, b, rows);
   EXPECT_EQ(j.at("points"), 9);
+  EXPECT_EQ(j.at("a").at("geometric"), false);  // the picture's axis: linear, or log if true
   EXPECT_EQ(j.at("points_walked"), 4);
   EXPECT_TRUE(j.at("nominal_walks"));
   EXPECT_TRUE(j.at("per_row")[0].at("walks_from").is_null());

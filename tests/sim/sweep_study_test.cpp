@@ -100,6 +100,12 @@ TEST(WalkingInterval, IsTheRunOfWalkingValuesAroundTheNominalOne) {
   EXPECT_EQ(j.at("fails_above").at("failure"), "fall");
   EXPECT_EQ(j.at("values"), 5);
   EXPECT_EQ(j.at("unit"), "N s");
+  // The picture's axis: a geometric parameter on a log axis even where the nominal inserted
+  // breaks the constant ratio.
+  EXPECT_EQ(j.at("geometric"), false);
+  EXPECT_EQ(walkingInterval(kGeometric, rows({{1e5, false}, {3e5, false}, {1e7, false}}), 3e5)
+                .at("geometric"),
+            true);
 }
 
 // The ends are the grid's values as the CSV shows them (finding 14 of a user tour: friction
