@@ -84,7 +84,7 @@ void record(const LibrarySetup& setup, const PointProblem& pp, const Attempts& a
     row.message = ocp::writeFailedResult(options, pp.model, pp.config, s, dir + ".failed");
     return;
   }
-  io::OutputFolder(dir, {}).write([&](const std::string& staging) {
+  io::OutputFolder(dir, {}, "--out", "gait").write([&](const std::string& staging) {
     const auto summary = ocp::writeGaitResult(options, pp.model, pp.config, s, nullptr, staging);
     row.cost_of_transport = summary.at("cost_of_transport").get<double>();
   });

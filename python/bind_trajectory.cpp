@@ -65,7 +65,7 @@ size_t writeFolder(const Trajectory& traj, const dynamics::Model& robot,
   config::requireInRange(config::kSampleRate, rate_hz, "rate_hz");
   requireTrajectoryOf(traj, robot);
   size_t samples = 0;
-  io::OutputFolder(dir.string(), {}, "dir").write([&](const std::string& staging) {
+  io::OutputFolder(dir.string(), {}, "dir", "gait").write([&](const std::string& staging) {
     samples = gaits::writeGaitExport(staging, traj, robot, rate_hz,
                                      gaits::gaitSummary(traj, robot, {"", "exported"}));
   });

@@ -24,7 +24,7 @@ void requireResultFolder(const std::string& dir) {
 }  // namespace
 
 void runCompare(const CompareOptions& o) {
-  const io::OutputFolder out(o.out_dir, o.dirs);
+  const io::OutputFolder out(o.out_dir, o.dirs, "--out", "comparison");
   for (const std::string& dir : o.dirs) requireResultFolder(dir);
   // The report is the script's whole job: without matplotlib there is nothing to write.
   out.write([&](const std::string& dir) {

@@ -67,7 +67,7 @@ void printResult(const nlohmann::ordered_json& summary) {
 
 void runImpactMap(const ImpactMapOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const io::OutputFolder out(options.out_dir, {options.robot_path});
+  const io::OutputFolder out(options.out_dir, {options.robot_path}, "--out", "impact map");
   const dynamics::Model model = dynamics::loadRobot(options.robot_path);
   const gaits::ImpactGrid grid = parseGrid(options, model);
   const int jobs =

@@ -136,7 +136,7 @@ void runInterpolate(InterpolateOptions o) {
   const library::LibraryFolder lib = library::readLibraryFolder(o.library_dir);
   std::vector<std::string> inputs = ocp::ocpInputs(lib.base);
   inputs.push_back(o.library_dir);
-  const io::OutputFolder out(o.output.out_dir, inputs);
+  const io::OutputFolder out(o.output.out_dir, inputs, "--out", "gait");
   fillWalkValues(lib, o);
   std::vector<double> values(o.walk.begin(), o.walk.end());
   const std::vector<double> keyed = configValues(lib.grid, o.at);

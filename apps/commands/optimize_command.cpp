@@ -61,7 +61,7 @@ void runOptimize(const OptimizeOptions& o) {
   ocp::OcpConfig config = ocp::loadOcpConfig(o.config_path, config::parseOverrides(o.sets));
   std::vector<std::string> inputs = ocp::ocpInputs(config);
   inputs.insert(inputs.end(), {o.config_path, o.warm_start});
-  const io::OutputFolder out(o.output.out_dir, inputs);
+  const io::OutputFolder out(o.output.out_dir, inputs, "--out", "gait");
   const dynamics::Model model = ocp::problemModel(config);  // the robot on the config's slope
   ocp::requireReachable(model, config, o.config_path);
   gaits::requireExportRate(ocp::shortestStep(config), o.output.rate_hz);  // before, not after

@@ -24,7 +24,8 @@ namespace gaitopt::apps {
 
 void runPoly(const PolyOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const io::OutputFolder out(options.output.out_dir, {options.robot_path, options.gait_path});
+  const io::OutputFolder out(options.output.out_dir, {options.robot_path, options.gait_path},
+                             "--out", "gait");
   const gaits::GaitParams params =
       gaits::loadGait(options.gait_path, config::parseOverrides(options.sets));
   // The gait's ground slope rotates gravity (dynamics/model.hpp).

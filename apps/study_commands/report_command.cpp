@@ -8,6 +8,7 @@
 #include "apps/shipped_file.hpp"
 #include "config/config_error.hpp"
 #include "io/output/checked_write.hpp"
+#include "io/output/output_folder.hpp"
 #include "io/terminal_text.hpp"
 #include "report/plot_script.hpp"
 #include "report/report_folder.hpp"
@@ -23,11 +24,14 @@ void runReport(const ReportOptions& o) {
   const report::ReportContent content = report::collectReport(o.dir, o.robot_path);
   const std::string out = o.out.empty() ? o.dir + "/report.html" : o.out;
   io::writeFileAtomically(out, report::renderReportPage(content));
+  if (o.out.empty()) io::addWrittenFile(o.dir, "report.html");
   fmt::print("report: wrote {} ({} result, {})\n", out, content.kind,
              io::counted(content.charts.size(), "chart"));
   if (o.gif && content.kind == "walk" &&
-      report::runPlotScript("walk_gif.py", {o.dir}, io::Output::kErrors))
+      report::runPlotScript("walk_gif.py", {o.dir}, io::Output::kErrors)) {
+    io::addWrittenFile(o.dir, "walk.gif");
     fmt::print("report: wrote {}/walk.gif\n", o.dir);
+  }
 }
 
 void registerReportCommand(CLI::App& app) {

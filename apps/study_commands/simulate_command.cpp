@@ -67,7 +67,8 @@ void printOutcome(const sim::ScenarioResult& r, int steps) {
 void runSimulate(const SimulateOptions& o) {
   const sim::ReferenceFolder ref = sim::loadReferenceFolder(
       o.scenario.reference_dir, o.scenario.robot_path, sim::robotOverrides(o.scenario));
-  const io::OutputFolder out(o.output.out_dir, sim::scenarioInputs(o.scenario, ref));
+  const io::OutputFolder out(o.output.out_dir, sim::scenarioInputs(o.scenario, ref), "--out",
+                             "walk");
   sim::requireControllerFits(o.scenario, ref.model);
   sim::Scenario scenario = sim::makeScenario(o.scenario);
   scenario.poincare = o.poincare && !scenario.push;  // a pushed walk has no periodic cycle

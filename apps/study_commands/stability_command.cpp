@@ -1,9 +1,7 @@
 #include "apps/study_commands/stability_command.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <filesystem>
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -16,7 +14,6 @@
 #include "config/config_error.hpp"
 #include "gaits/export/gait_summary.hpp"
 #include "gaits/impact/grid_range.hpp"
-#include "io/output/checked_write.hpp"
 #include "io/output/output_folder.hpp"
 #include "io/settings_record.hpp"
 #include "parallel/progress_bar.hpp"
@@ -174,35 +171,6 @@ void openFiles(Grids& grids, const std::string& out_dir) {
         std::vector<std::string>{m.a.parameter->name(), m.b.parameter->name()});
 }
 
-/// The --out folder, claimed (io::ResumableFolder). Where no folder can be made at all (a
-/// virtual or read-only file system such as /proc, a folder the user may not write) the value
-/// of --out is what is wrong: exit 2 naming --out, not exit 1 naming OUT.lock, a file the user
-/// never gave. A full disk stays a failure of the run (exit 1), as every other write.
-io::ResumableFolder claimFolder(const std::string& out, const std::vector<std::string>& inputs) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const bool existed = fs::exists(fs::symlink_status(out, ec));
-  const auto refuse = [&](const std::string& reason) {
-    if (existed || reason == io::errnoText(ENOSPC) || reason == io::errnoText(EDQUOT)) return;
-    throw config::ConfigError(
-        "--out", "", 0,
-        fmt::format("'{}' cannot be created: {}; choose a folder where you may write", out,
-                    reason));
-  };
-  try {
-    return io::ResumableFolder(out, inputs, kSettingsFile);
-  } catch (const io::WriteError& e) {
-    // "PATH: cannot create: REASON"
-    const std::string what = e.what();
-    const std::size_t at = what.rfind(": ");
-    refuse(at == std::string::npos ? what : what.substr(at + 2));
-    throw;
-  } catch (const fs::filesystem_error& e) {
-    refuse(e.code().message());
-    throw;
-  }
-}
-
 void printInterval(const std::string& name, const nlohmann::ordered_json& j) {
   if (j["walks_from"].is_null()) {
     fmt::print("stability: {}: no walking interval around the nominal value\n", name);
@@ -248,7 +216,7 @@ void runStability(const StabilityOptions& o) {
                                           sim::groundName(base.ground)));
   checkControllerFitsReference(ref, reference, base);
   Grids grids = parseGrids(o, base, ref.model);
-  const io::ResumableFolder folder = claimFolder(o.out_dir, sim::scenarioInputs(o.scenario, ref));
+  const io::ResumableFolder folder(o.out_dir, sim::scenarioInputs(o.scenario, ref), kSettingsFile);
   const std::string& out_dir = folder.path();
   nlohmann::ordered_json key = sim::sweepFolderSettings(o.scenario, ref, base);
   key.update(gridKey(grids));

@@ -3,11 +3,13 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -95,6 +97,32 @@ std::string checkedPath(const std::string& out, const std::vector<std::string>& 
   return path;
 }
 
+/// The lock of `path`. @throws config::ConfigError naming `option` when the folder cannot be made
+/// there (a path under /proc, a folder without write permission): a bad --out, not a failure of
+/// the run; a full disk stays a WriteError.
+FolderLock lockOrRefuse(const std::string& path, const std::string& option) {
+  std::error_code ec;
+  const bool existed = fs::exists(fs::symlink_status(path, ec));
+  const auto refuse = [&](const std::string& reason) {
+    if (existed || reason == errnoText(ENOSPC) || reason == errnoText(EDQUOT)) return;
+    throw config::ConfigError(
+        option, "", 0,
+        fmt::format("'{}' cannot be created: {}; choose a folder where you may write", path,
+                    reason));
+  };
+  try {
+    return FolderLock(path);
+  } catch (const WriteError& e) {
+    const std::string what = e.what();  // "PATH: cannot create: REASON"
+    const std::size_t at = what.rfind(": ");
+    refuse(at == std::string::npos ? what : what.substr(at + 2));
+    throw;
+  } catch (const fs::filesystem_error& e) {
+    refuse(e.code().message());
+    throw;
+  }
+}
+
 /// The marker's second line in a resumable run's folder.
 constexpr const char* kResumableLine = "It holds a resumable run's points, written in place.\n";
 
@@ -103,6 +131,38 @@ bool markedResumable(const fs::path& marker) {
   std::ifstream in(marker);
   const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   return text.find(kResumableLine) != std::string::npos;
+}
+
+/// The marker's lines that start with `key`, the rest of each.
+std::vector<std::string> markerLines(const fs::path& marker, const std::string& key) {
+  std::ifstream in(marker);
+  std::vector<std::string> values;
+  for (std::string line; std::getline(in, line);)
+    if (line.compare(0, key.size(), key) == 0) values.push_back(line.substr(key.size()));
+  return values;
+}
+
+/// The marker's lines naming the result's kind and each file it wrote.
+constexpr const char* kKindLine = "kind: ";
+constexpr const char* kWrittenLine = "written: ";
+
+/// The files under `dir` (relative, generic form), the marker left out.
+std::vector<std::string> filesUnder(const fs::path& dir) {
+  std::vector<std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+    if (!entry.is_directory() && entry.path().filename() != kMarker)
+      files.push_back(entry.path().lexically_relative(dir).generic_string());
+  return files;
+}
+
+/// The first file under `dir` that its marker does not list as written by gaitopt ("" if none,
+/// or if the marker lists none: a folder written before markers listed their files).
+std::string unlistedFile(const fs::path& dir) {
+  const std::vector<std::string> written = markerLines(dir / kMarker, kWrittenLine);
+  if (written.empty()) return "";
+  for (const std::string& f : filesUnder(dir))
+    if (std::find(written.begin(), written.end(), f) == written.end()) return f;
+  return "";
 }
 
 /// Whether `dir` holds anything besides the marker and `claim`, while `claim` is missing.
@@ -115,7 +175,7 @@ bool holdsAnotherResult(const fs::path& dir, const std::string& claim) {
 }
 
 /// Creates the staging folder `staging` afresh, marked as gaitopt's.
-void makeStaging(const fs::path& staging) {
+void makeStaging(const fs::path& staging, const std::string& kind) {
   // A run of an earlier process with our pid (reused) left it: ours only if removable.
   if (fs::exists(fs::symlink_status(staging))) {
     if (!removable(staging))
@@ -129,7 +189,7 @@ void makeStaging(const fs::path& staging) {
   if (!fs::create_directory(staging))
     throw WriteError(fmt::format("{}: cannot create: it appeared meanwhile", staging.string()));
   try {
-    writeMarker(staging.string());
+    writeMarker(staging.string(), false, kind);
   } catch (const WriteError&) {  // a full disk: nothing may be left behind
     std::error_code ignored;
     fs::remove_all(staging, ignored);
@@ -193,6 +253,20 @@ void requireOurs(const std::string& dir, const std::string& option) {
   if (!fs::is_directory(s)) refuse("is a file, not a folder");
   if (!fs::is_empty(dir) && !fs::exists(fs::path(dir) / kMarker))
     refuse("holds files that gaitopt did not write");
+  // A file added to a result since (notes, a robot file kept beside the walk) went with it.
+  if (const std::string added = unlistedFile(dir); !added.empty())
+    refuse(fmt::format("holds '{}', which gaitopt did not write", added));
+}
+
+/// @throws config::ConfigError when `dir` holds a gaitopt result of another kind than `kind`
+/// (its marker says which): a walk written over an optimised gait took the gait with it.
+void refuseOtherKind(const std::string& dir, const std::string& kind, const std::string& option) {
+  const std::vector<std::string> kinds = markerLines(fs::path(dir) / kMarker, kKindLine);
+  if (kind.empty() || kinds.empty() || kinds.front() == kind) return;
+  throw config::ConfigError(option, "", 0,
+                            fmt::format("'{}' holds a gaitopt {} result, which a {} result does "
+                                        "not replace: choose another {} or remove it yourself",
+                                        dir, kinds.front(), kind, option));
 }
 
 void refuseInsideResult(const std::string& out, const std::string& option) {
@@ -209,11 +283,32 @@ void refuseInsideResult(const std::string& out, const std::string& option) {
   }
 }
 
-void writeMarker(const std::string& dir, bool resumable) {
-  writeFile((fs::path(dir) / kMarker).string(),
-            std::string("This folder was written by gaitopt; the next gaitopt run writing here "
-                        "replaces it.\n") +
-                (resumable ? kResumableLine : ""));
+void writeMarker(const std::string& dir, bool resumable, const std::string& kind) {
+  std::string text = std::string(
+                         "This folder was written by gaitopt; the next gaitopt run writing here "
+                         "replaces it.\n") +
+                     (resumable ? kResumableLine : "");
+  if (!kind.empty()) text += kKindLine + kind + "\n";
+  writeFile((fs::path(dir) / kMarker).string(), text);
+}
+
+void addWrittenFile(const std::string& dir, const std::string& file) {
+  const fs::path marker = fs::path(dir) / kMarker;
+  std::error_code ec;
+  if (!fs::is_regular_file(marker, ec)) return;
+  const std::vector<std::string> written = markerLines(marker, kWrittenLine);
+  if (written.empty() || std::find(written.begin(), written.end(), file) != written.end()) return;
+  std::ifstream in(marker);
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  writeFile(marker.string(), text + kWrittenLine + file + "\n");
+}
+
+void listWrittenFiles(const std::string& dir) {
+  const fs::path marker = fs::path(dir) / kMarker;
+  std::ifstream in(marker);
+  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  for (const std::string& f : filesUnder(dir)) text += kWrittenLine + f + "\n";
+  writeFile(marker.string(), text);
 }
 
 void removeIfOurs(const std::string& dir) {
@@ -247,10 +342,13 @@ void cleanLeftovers(const std::string& out) {
 }
 
 OutputFolder::OutputFolder(const std::string& out, const std::vector<std::string>& inputs,
-                           const std::string& option)
-    : path_(checkedPath(out, inputs, option)), lock_(path_) {
+                           const std::string& option, std::string kind)
+    : path_(checkedPath(out, inputs, option)),
+      lock_(lockOrRefuse(path_, option)),
+      kind_(std::move(kind)) {
   cleanLeftovers(path_);
   requireOurs(path_, option);
+  refuseOtherKind(path_, kind_, option);
   // A library, study or stability folder holds a run's rows and whatever was written into it
   // in place (its marker says so); replaced whole by another command's result, all of it went.
   std::error_code ec;
@@ -268,9 +366,10 @@ void OutputFolder::write(const std::function<void(const std::string&)>& fill) co
   const fs::path target(path_);
   const fs::path staging = stagingName(path_, ".tmp-"), old = stagingName(path_, ".old-");
   if (target.has_parent_path()) fs::create_directories(target.parent_path());
-  makeStaging(staging);
+  makeStaging(staging, kind_);
   try {
     fill(staging.string());
+    listWrittenFiles(staging.string());
   } catch (...) {
     std::error_code ignored;
     fs::remove_all(staging, ignored);
@@ -284,7 +383,7 @@ void OutputFolder::write(const std::function<void(const std::string&)>& fill) co
 
 ResumableFolder::ResumableFolder(const std::string& dir, const std::vector<std::string>& inputs,
                                  const std::string& claim, const std::string& option)
-    : path_(checkedPath(dir, inputs, option)), lock_(path_) {
+    : path_(checkedPath(dir, inputs, option)), lock_(lockOrRefuse(path_, option)) {
   requireOurs(path_, option);
   if (holdsAnotherResult(path_, claim))
     throw config::ConfigError(

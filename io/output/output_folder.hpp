@@ -8,7 +8,9 @@
 ///   whole, unless that result is a resumable run's folder (ResumableFolder), which holds its
 ///   points in place;
 /// - an existing OUT is replaced only when it is a gaitopt folder (the marker file kMarker) or
-///   empty, never a regular file, a link or a folder of someone else's files;
+///   empty, never a regular file, a link or a folder of someone else's files; the marker lists
+///   the files the run wrote, and a folder holding others since (a user's notes) is refused, as
+///   is one holding a result of another kind (a walk over an optimised gait);
 /// - one writer at a time (FolderLock, OUT.lock); OUT.tmp-PID and OUT.old-PID left by killed
 ///   runs are removed, and an OUT.old-PID without OUT (a kill between the two renames) is
 ///   restored first, but only when gaitopt made them: folders (not links) holding the marker,
@@ -32,7 +34,8 @@ std::string normaliseOutPath(const std::string& text, const std::string& option)
 void refuseInputs(const std::string& out, const std::vector<std::string>& inputs,
                   const std::string& option);
 
-/// @throws config::ConfigError unless `dir` is absent, an empty folder or a gaitopt folder.
+/// @throws config::ConfigError unless `dir` is absent, an empty folder or a gaitopt folder
+/// holding only the files its marker lists (when it lists them).
 void requireOurs(const std::string& dir, const std::string& option);
 
 /// @throws config::ConfigError when `out` lies inside a gaitopt result folder other than a
@@ -40,8 +43,17 @@ void requireOurs(const std::string& dir, const std::string& option);
 void refuseInsideResult(const std::string& out, const std::string& option);
 
 /// Writes the marker into `dir`; `resumable` marks a folder that others may be written into (a
-/// library's points). @throws WriteError.
-void writeMarker(const std::string& dir, bool resumable = false);
+/// library's points); `kind` names the result ("gait", "walk", ...; "" for none).
+/// @throws WriteError.
+void writeMarker(const std::string& dir, bool resumable = false, const std::string& kind = "");
+
+/// Adds to `dir`'s marker the list of the files `dir` holds, the ones gaitopt wrote: a folder
+/// holding any other is not replaced (requireOurs). @throws WriteError.
+void listWrittenFiles(const std::string& dir);
+
+/// Adds `file` (relative to `dir`) to the files `dir`'s marker lists, when it lists them: a
+/// command that writes into a result (report's page) keeps it replaceable. @throws WriteError.
+void addWrittenFile(const std::string& dir, const std::string& file);
 
 /// Removes `dir` when it is a gaitopt folder or empty (e.g. OUT.failed of an earlier failed
 /// solve); anything else, a link included, is left alone.
@@ -55,9 +67,10 @@ void cleanLeftovers(const std::string& out);
 /// replaces OUT by two renames. Checked and locked from construction to destruction.
 class OutputFolder {
  public:
-  /// Checks `out` against the rules above and locks it. @throws config::ConfigError (exit 2).
+  /// Checks `out` against the rules above and locks it; a result of `kind` ("gait", "walk", ...;
+  /// "" for any) replaces only a folder of no other kind. @throws config::ConfigError (exit 2).
   OutputFolder(const std::string& out, const std::vector<std::string>& inputs,
-               const std::string& option = "--out");
+               const std::string& option = "--out", std::string kind = "");
 
   const std::string& path() const { return path_; }
 
@@ -68,6 +81,7 @@ class OutputFolder {
  private:
   std::string path_;
   FolderLock lock_;
+  std::string kind_;
 };
 
 }  // namespace gaitopt::io

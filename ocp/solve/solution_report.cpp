@@ -356,7 +356,7 @@ std::string writeFailedResult(const GaitResultOptions& o, const dynamics::Model&
   const FailureReport report = failureReport(solution, failed_dir);
   std::vector<std::string> inputs = ocpInputs(config);
   inputs.insert(inputs.end(), {o.config_path, o.warm_start});
-  io::OutputFolder(failed_dir, inputs).write([&](const std::string& dir) {
+  io::OutputFolder(failed_dir, inputs, "--out", "gait").write([&](const std::string& dir) {
     writeGaitResult(o, model, config, solution, report.summary, dir);
     writeFailedNote(dir + "/FAILED.txt", report.message);
   });

@@ -48,6 +48,48 @@ TEST_F(OutputFolderTest, OwnResultIsReplacedButForeignFolderAndFileAreRefused) {
   EXPECT_EQ(slurp(path("file")), "data");
 }
 
+// A result is replaced whole, so what a user put into it since (notes beside a walk) would go
+// with it; the marker lists what gaitopt wrote, and a command writing into a result (report's
+// page) adds its file to the list.
+TEST_F(OutputFolderTest, AResultHoldingAFileGaitoptDidNotWriteIsRefused) {
+  OutputFolder(path("res"), {}).write([](const std::string& d) { fillWith(d, "one"); });
+  put(path("res/notes.md"), "my notes");
+  EXPECT_THROW(OutputFolder(path("res"), {}), config::ConfigError);
+  EXPECT_EQ(slurp(path("res/notes.md")), "my notes");
+  fs::remove(path("res/notes.md"));
+  put(path("res/report.html"), "page");
+  addWrittenFile(path("res"), "report.html");
+  OutputFolder(path("res"), {}).write([](const std::string& d) { fillWith(d, "two"); });
+  EXPECT_EQ(slurp(path("res/result.txt")), "two");
+  EXPECT_FALSE(fs::exists(path("res/report.html")));
+}
+
+// A walk written over an optimised gait took the gait with it: a result replaces only one of
+// its own kind (or of none: a folder written before markers named kinds).
+TEST_F(OutputFolderTest, AResultOfAnotherKindIsRefused) {
+  OutputFolder(path("gait"), {}, "--out", "gait").write([](const std::string& d) {
+    fillWith(d, "gait");
+  });
+  EXPECT_THROW(OutputFolder(path("gait"), {}, "--out", "walk"), config::ConfigError);
+  EXPECT_EQ(slurp(path("gait/result.txt")), "gait");
+  OutputFolder(path("gait"), {}, "--out", "gait").write([](const std::string& d) {
+    fillWith(d, "again");
+  });
+  EXPECT_EQ(slurp(path("gait/result.txt")), "again");
+}
+
+TEST_F(OutputFolderTest, AnOutWhereNoFolderCanBeMadeIsABadOption) {
+  if (!fs::is_directory("/proc/self")) GTEST_SKIP() << "no /proc";
+  try {
+    OutputFolder("/proc/gaitopt_no_folder", {});
+    FAIL() << "no error";
+  } catch (const config::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("--out: '/proc/gaitopt_no_folder' cannot be created"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST_F(OutputFolderTest, InputsOfTheCommandAreRefusedByRealPath) {
   put(path("config.yaml"), "x");
   fs::create_directories(path("ref"));
