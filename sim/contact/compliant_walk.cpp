@@ -1,11 +1,10 @@
 #include "sim/contact/compliant_walk.hpp"
 
 #include <cmath>
+#include <string>
 
-#include <fmt/format.h>
 #include <Eigen/Cholesky>
 
-#include "dynamics/energy.hpp"
 #include "dynamics/floating_base_dynamics.hpp"
 #include "sim/walk/event_integrator.hpp"
 
@@ -32,16 +31,6 @@ CompliantForces contactForces(const dynamics::Model& plant, const ImpedanceGroun
                           dynamics::floatingSwingTipVelocity(plant, q, v), anchor(1));
   return {{Vec2d(b.tangential, b.normal), Vec2d(e.tangential, e.normal)},
           Vec2d(b.anchor, e.anchor)};
-}
-
-/// Kinetic plus potential energy of the robot (Mu 2.3-2.4 with the base at (x_b, y_b); on a
-/// slope the base term is -m g_vec . (x_b, y_b) in the ground frame) [J].
-double energy(const dynamics::Model& plant, const FreeBaseState& s) {
-  const int n = plant.nLinks();
-  const VecD theta = s.q.tail(n), dtheta = s.v.tail(n);
-  return dynamics::kineticEnergy<double>(plant, theta, dtheta, Vec2d(s.v.head<2>())) +
-         dynamics::potentialEnergy<double>(plant, theta) -
-         plant.totalMass() * plant.gravityAcceleration().dot(s.q.head<2>());
 }
 
 ImpedanceGround withPlantFriction(const dynamics::Model& plant, const CompliantGround& ground) {
@@ -80,11 +69,10 @@ ContactStep compliantContactStep(const dynamics::Model& plant, const CompliantGr
   ContactStep out{{x.head(nq), x.segment(nq, nq), s.anchor}, {}, ""};
   // Energy the integrator made: an unstable explicit step creates it exponentially, long
   // before the state overflows (and often first as a tip launched off the ground).
-  const double created = energy(plant, out.next) - energy(plant, s) - x(2 * nq);
-  if (!(created <= kMaxCreatedEnergy))
-    out.failure =
-        fmt::format("diverged: an RK4 step of {:g} s created {:.3g} J (too long for this ground)",
-                    ground.time_step, created);
+  const double created =
+      freeBaseEnergy(plant, out.next.q, out.next.v) - freeBaseEnergy(plant, s.q, s.v) - x(2 * nq);
+  if (std::string why = divergedStep(ground.time_step, created); !why.empty())
+    out.failure = why + " (too long for this ground)";
   const CompliantForces end = contactForces(plant, g, out.next.q, out.next.v, s.anchor);
   out.force = end.force;
   out.next.anchor = end.anchor;

@@ -11,16 +11,11 @@
 
 namespace gaitopt::sim {
 
-/// Largest energy one RK4 step may create [J]: the change of kinetic plus potential energy
-/// minus the work of torques and ground forces, integrated alongside the state. Well-resolved
-/// steps of the five-link walk on configs/grounds/impedance.yaml make < 3e-5 J; a step beyond
-/// the stability limit makes > 0.05 J within a few steps and then grows exponentially.
-inline constexpr double kMaxCreatedEnergy = 0.01;
-
 /// One RK4 step of length ground.time_step: every stage evaluates the contact forces with the
 /// anchors of `s` (the last accepted state); the new anchors and the reported forces come from
 /// the contact law at the accepted end state. ground.contact.friction is replaced by the
-/// plant's. failure = "diverged: ..." when the step created more than kMaxCreatedEnergy.
+/// plant's. failure = "diverged: ..." when the step created more than kMaxCreatedEnergy
+/// (free_base_walk.hpp divergedStep).
 ContactStep compliantContactStep(const dynamics::Model& plant, const CompliantGround& ground,
                                  const FreeBaseState& s, const TorqueFeedback& torque);
 

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "dynamics/energy.hpp"
 #include "dynamics/floating_base_dynamics.hpp"
 #include "dynamics/impact/relabel.hpp"
 #include "dynamics/kinematics.hpp"
@@ -110,12 +111,17 @@ struct Walker {
                                             anglesOf(plant, before.v), k, run.memory);
   }
 
+  /// "diverged: ..." for a state no contact law should reach, else "".
+  std::string diverged(const FreeBaseState& s) const {
+    if (!s.q.allFinite() || !s.v.allFinite() || -s.q(1) > kMaxPenetration ||
+        -dynamics::floatingSwingTip(plant, s.q)(1) > kMaxPenetration)
+      return "diverged: non-finite state or a tip deeper than 5 cm";
+    return "";
+  }
+
   /// Why the walk cannot go on after this time step ("" while it can).
   std::string failure(const StepRun& run) const {
     const Eigen::VectorXd& q = run.s.q;
-    const double e_y = dynamics::floatingSwingTip(plant, q)(1);
-    if (!q.allFinite() || !run.s.v.allFinite() || -q(1) > kMaxPenetration || -e_y > kMaxPenetration)
-      return "diverged: non-finite state or a tip deeper than 5 cm";
     const VecD theta = anglesOf(plant, q);
     if (q(1) + dynamics::hip<double>(plant, theta)(1) < rules.min_hip_height * legLength(plant))
       return kFallHip;
@@ -187,10 +193,9 @@ struct Walker {
   /// One time step; false when the step has ended (normally or not).
   bool tick(StepRun& run, double t0, int index, StepResult& r) const {
     const ContactStep cs = ground.step(run.s, feedback(run));
-    if (!cs.failure.empty()) {
-      r.failure = cs.failure;
-      return false;
-    }
+    // A diverged state is neither logged nor measured: the walk ends at the last valid one.
+    r.failure = cs.failure.empty() ? diverged(cs.next) : cs.failure;
+    if (!r.failure.empty()) return false;
     const double h = ground.time_step;
     advanceMemory(run, run.s, h);
     run.s = cs.next;
@@ -282,6 +287,20 @@ Eigen::VectorXd hipForce(const dynamics::Model& plant, const Eigen::VectorXd& q,
   if (force.isZero()) return Eigen::VectorXd::Zero(q.size());
   return dynamics::floatingJacobian(plant.hipWeights(), VecD(q.tail(plant.nLinks()))).transpose() *
          force;
+}
+
+double freeBaseEnergy(const dynamics::Model& plant, const Eigen::VectorXd& q,
+                      const Eigen::VectorXd& v) {
+  const int n = plant.nLinks();
+  const VecD theta = q.tail(n), dtheta = v.tail(n);
+  return dynamics::kineticEnergy<double>(plant, theta, dtheta, Vec2d(v.head<2>())) +
+         dynamics::potentialEnergy<double>(plant, theta) -
+         plant.totalMass() * plant.gravityAcceleration().dot(q.head<2>());
+}
+
+std::string divergedStep(double time_step, double created) {
+  if (created <= kMaxCreatedEnergy) return "";  // false for NaN
+  return fmt::format("diverged: an RK4 step of {:g} s created {:.3g} J", time_step, created);
 }
 
 FreeBaseState freeBaseStart(const dynamics::Model& plant, const VecD& theta, const VecD& dtheta,

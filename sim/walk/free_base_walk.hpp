@@ -79,6 +79,23 @@ inline constexpr double kUnloadTime = 0.005;
 /// Deeper than this, the contact law has failed (a hard floor sinks by about a millimetre) [m].
 inline constexpr double kMaxPenetration = 0.05;
 
+/// Largest energy one RK4 step may create [J]: the change of kinetic plus potential energy
+/// minus the work of torques and ground forces, integrated alongside the state. Well-resolved
+/// steps of the five-link walk on configs/grounds/impedance.yaml make < 3e-5 J, on rigid ground
+/// < 3e-6 J (the optimum under every law, 20 steps); a step beyond the impedance ground's
+/// stability limit makes > 0.05 J within a few steps and then grows exponentially, and one
+/// through a singular rigid contact made 9e28 J (rigid_step.cpp).
+inline constexpr double kMaxCreatedEnergy = 0.01;
+
+/// Kinetic plus potential energy of the free-base chain at (q, v) (Mu 2.3-2.4 with the base at
+/// (x_b, y_b); on a slope the base term is -m g_vec . (x_b, y_b) in the ground frame) [J].
+double freeBaseEnergy(const dynamics::Model& plant, const Eigen::VectorXd& q,
+                      const Eigen::VectorXd& v);
+
+/// "" when an RK4 step of `time_step` created at most kMaxCreatedEnergy, else the walk's
+/// failure "diverged: an RK4 step of h s created E J" (a NaN or Inf energy too).
+std::string divergedStep(double time_step, double created);
+
 /// The generalised force J_H^T F of a force F on the hip (zero when F is).
 Eigen::VectorXd hipForce(const dynamics::Model& plant, const Eigen::VectorXd& q,
                          const Vec2d& force);

@@ -5,6 +5,8 @@
 #include <limits>
 #include <utility>
 
+#include "dynamics/floating_base_dynamics.hpp"
+
 namespace gaitopt::sim {
 
 using gaits::Phase;
@@ -61,7 +63,12 @@ ContactLoop::State ContactLoop::evaluate(double t, const Eigen::VectorXd& x) con
   s.force_stance = acc.force_b;
   s.force_swing = acc.force_e;
   s.cop_margin = std::numeric_limits<double>::infinity();
-  if (!ankleLimited()) return s;
+  if (ankleLimited()) limitAnkle(s, pushed);
+  s.power = power(s, pushed);
+  return s;
+}
+
+void ContactLoop::limitAnkle(State& s, const Vec2d& pushed) const {
   const dynamics::Foot& foot = plant_.foot();
   const double fy = s.force_stance(1), tau0 = s.tau(0);
   s.cop_moment = dynamics::copMomentMargin(tau0, fy, foot);
@@ -70,7 +77,16 @@ ContactLoop::State ContactLoop::evaluate(double t, const Eigen::VectorXd& x) con
                      : std::numeric_limits<double>::infinity();
   const bool saturate = rules_.cop_limit == CopLimit::kSaturate || phase_ == Phase::kDsp;
   if (saturate && s.cop_moment < 0) saturateAnkle(s, pushed);
-  return s;
+}
+
+double ContactLoop::power(const State& s, const Vec2d& pushed) const {
+  double p = dynamics::floatingBaseActuation(plant_, s.tau).dot(s.qdot);
+  if (!pushed.isZero())
+    p += pushed.dot(dynamics::floatingJacobian(plant_.hipWeights(), s.theta) * s.qdot);
+  if (contacts_.b.mode == TipContact::Mode::kSlide) p += s.force_stance(0) * s.qdot(0);
+  if (contacts_.e.mode == TipContact::Mode::kSlide)
+    p += s.force_swing(0) * (dynamics::floatingJacobian(plant_.tipWeights(), s.theta) * s.qdot)(0);
+  return p;
 }
 
 void ContactLoop::saturateAnkle(State& s, const Vec2d& pushed) const {

@@ -30,6 +30,9 @@ class ContactLoop {
     double cop_margin = 0;   ///< of the CoP the controller asked for (StepResult) [m]
     double cop_moment = 1;   ///< dynamics::copMomentMargin of that request [N m]
     bool saturated = false;  ///< the plant's ankle torque was clipped
+    /// Of the torques, the push and the friction of a sliding tip: a tip held on rigid ground
+    /// does no work, so a step that gains more energy than this does diverged [W].
+    double power = 0;
   };
 
   ContactLoop(const dynamics::Model& plant, const Controller& controller, const Reference& ref,
@@ -45,9 +48,12 @@ class ContactLoop {
 
  private:
   State evaluate(double t, const Eigen::VectorXd& x) const;
+  /// The CoP margins of the stance ankle's torque, clipped when the rules saturate it.
+  void limitAnkle(State& s, const Vec2d& pushed) const;
   /// Clips tau0 so the CoP -tau0 / F_By stays in [-heel, toe] (F_By is affine in tau0).
   void saturateAnkle(State& s, const Vec2d& pushed) const;
   bool ankleLimited() const;
+  double power(const State& s, const Vec2d& pushed) const;
 
   const dynamics::Model& plant_;
   const Controller& controller_;

@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
+#include <string>
 #include <utility>
 
 #include <fmt/format.h>
@@ -16,6 +18,7 @@
 #include "ocp/solve/gait_solve.hpp"
 #include "sim/controllers/mu_sliding_mode.hpp"
 #include "sim/studies/poincare.hpp"
+#include "sim/walk/event_integrator.hpp"
 #include "sim/walk/hybrid_walk.hpp"
 
 namespace gaitopt::sim {
@@ -113,6 +116,62 @@ TEST_F(FiveLinkWalk, ThePlansDoubleSupportFeedForwardIgnoresAWrongModel) {
     RecordProperty(fmt::format("{}_model_error_Nm", name), fmt::format("{:.2f}", model));
     EXPECT_LT(plan, 1e-8) << name;
     EXPECT_GT(model, 1.0) << name;
+  }
+}
+
+// A step that blows up inside one RK4 step is a divergence, and the walk ends at the last state
+// before it: the optimum walked by a robot whose torso CoM sits at 0.1 m (not 0.282) slides its
+// stance tip into a singular contact (a Painleve case), where one event-location step made
+// 5e27 N on the tip, put the hip 4.9 km off and was recorded as "fall: hip below its limit" with
+// that slip and an 11 693 rad tracking error.
+TEST_F(FiveLinkWalk, AStepThatBlowsUpIsADivergenceAndLeavesNothingOfItInTheRecord) {
+  const dynamics::Model plant =
+      dynamics::loadRobot(ocp::loadOcpConfig(kOcp).robot_path, {{"links[2].com", "0.1"}});
+  const TrackingController c(plant, std::make_unique<PdLaw>(TrackingGains{}));
+  WalkOptions options;
+  options.steps = 2;
+  double largest_force = 0;
+  bool finite = true;
+  const WalkResult w =
+      simulateWalk(plant, c, Reference(*optimal_export_), options, [&](const WalkSample& s) {
+        finite = finite && s.theta.allFinite() && s.tau.allFinite();
+        largest_force = std::max({largest_force, s.force_stance.norm(), s.force_swing.norm()});
+      });
+  RecordProperty("failure", w.failure);
+  RecordProperty("max_slip_m", fmt::format("{:.3g}", w.max_slip));
+  RecordProperty("largest_logged_force_N", fmt::format("{:.4g}", largest_force));
+  EXPECT_EQ(w.steps_completed, 0);
+  EXPECT_NE(w.failure.find("diverged"), std::string::npos) << w.failure;
+  EXPECT_LT(w.max_slip, 0.01);
+  EXPECT_LT(w.max_tracking_error, 0.1);
+  EXPECT_TRUE(finite);
+  EXPECT_LT(largest_force, 1000.0);  // the robot weighs 292 N
+}
+
+// The integrator's side of it: a step the check refuses ends the integration at the last
+// accepted state, the one the observer saw last, whether or not its garbage fired an event.
+TEST(EventIntegrator, ARefusedStepEndsAtTheLastAcceptedStateUnobserved) {
+  // x' = 0, but 1e30 from t = 0.24 (a blow-up): the RK4 step from t = 0.2 ends at garbage.
+  const Rhs f = [](double t, const Eigen::VectorXd&) {
+    return Eigen::VectorXd::Constant(1, t < 0.24 ? 0.0 : 1e30);
+  };
+  const StepCheck bounded = [](double, const Eigen::VectorXd&, double, const Eigen::VectorXd& x) {
+    return std::abs(x(0)) < 1e6 ? std::string() : std::string("garbage");
+  };
+  const Events never = [](double, const Eigen::VectorXd&) { return Eigen::VectorXd::Ones(1); };
+  const Events above = [](double, const Eigen::VectorXd& x) {
+    return Eigen::VectorXd::Constant(1, 1 - x(0));
+  };
+  for (const Events& g : {never, above}) {
+    double last_seen = 0;
+    const EventIntegration end = integrateToEvent(
+        f, g, 0, Eigen::VectorXd::Zero(1), 1, {0.1, 1e-10},
+        [&](double t, const Eigen::VectorXd&) { last_seen = t; }, bounded);
+    EXPECT_EQ(end.failure, "garbage");
+    EXPECT_EQ(end.event, -1);
+    EXPECT_NEAR(end.t, 0.2, 1e-12);
+    EXPECT_EQ(end.x(0), 0.0);
+    EXPECT_EQ(last_seen, end.t);
   }
 }
 
