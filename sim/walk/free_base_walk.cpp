@@ -68,15 +68,20 @@ struct Walker {
     return rules.cop_limit == CopLimit::kSaturate || phase == Phase::kDsp;
   }
 
-  TorqueFeedback feedback(const StepRun& run) const {
+  /// The torque the plant receives for the controller's `request`: the ankle clipped to what
+  /// the foot carries when the rules saturate it (the controller clips to the torque limits).
+  VecD applied(const StepRun& run, VecD request) const {
     const AnkleLimit limit = ankleLimit(run);
-    const bool saturate = limit.active && saturates(run.phase);
-    return [this, &run, limit, saturate](double dt, const Eigen::VectorXd& q,
-                                         const Eigen::VectorXd& v) {
-      VecD tau = controller.torque(run.phase, anglesOf(plant, q), anglesOf(plant, v),
-                                   ref.at(run.phase, run.clock + dt, run.start), run.memory);
-      if (saturate) tau(0) = std::clamp(tau(0), limit.lower, limit.upper);
-      return tau;
+    if (limit.active && saturates(run.phase))
+      request(0) = std::clamp(request(0), limit.lower, limit.upper);
+    return request;
+  }
+
+  TorqueFeedback feedback(const StepRun& run) const {
+    return [this, &run](double dt, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
+      return applied(run,
+                     controller.torque(run.phase, anglesOf(plant, q), anglesOf(plant, v),
+                                       ref.at(run.phase, run.clock + dt, run.start), run.memory));
     };
   }
 
@@ -175,11 +180,13 @@ struct Walker {
     // The trailing foot rolling onto its toe in double support is walking (contact_rules.hpp).
     if (run.phase == Phase::kSsp && run.force.b(1) >= kLoadedFoot * weight)
       r.max_foot_tilt = std::max(r.max_foot_tilt, std::abs(run.stance_foot_tilt));
-    const VecD tau = controller.torque(run.phase, theta, dtheta, k, run.memory);
-    r.failure = recordAnkle(run, tau, ground.time_step, r);
+    const VecD request = controller.torque(run.phase, theta, dtheta, k, run.memory);
+    r.failure = recordAnkle(run, request, ground.time_step, r);
     if (!log) return;
-    log({t0 + run.elapsed, index, run.phase, theta, dtheta, k.theta, tau, k.tau, run.force.b,
-         run.force.e, run.s.q(0), run.s.q(1)});
+    // The torque the next time step applies at this state, as the rigid walk logs its applied
+    // one: the request put the CoP up to 0.2 m behind a 5 cm heel on the impedance ground.
+    log({t0 + run.elapsed, index, run.phase, theta, dtheta, k.theta, applied(run, request), k.tau,
+         run.force.b, run.force.e, run.s.q(0), run.s.q(1)});
   }
 
   /// Touchdown of a gait with a DSP: the DSP starts at this time step's state.

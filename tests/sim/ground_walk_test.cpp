@@ -153,6 +153,34 @@ TEST(GroundWalk, TheTimeStepThatLandsTheSwingTipIsJudgedUnderTheDoubleSupportLaw
   }
 }
 
+TEST(GroundWalk, TheLoggedTorqueIsTheOneAppliedWithTheAnkleClippedToTheFoot) {
+  // The polynomial gait asks the ankle for a centre of pressure up to 0.197 m behind the stance
+  // tip; on the shipped 5 cm heel the ankle saturates (--cop-limit saturate). The log holds the
+  // torque the plant receives, as on rigid ground: it held the request, whose CoP -tau0 / F_By
+  // lay up to 0.2 m off the foot on the impedance ground (the margins gait, sliding mode).
+  const Reference ref(test::polynomialGait());
+  const dynamics::Model& plant = test::fiveLinkRobot();
+  const dynamics::Foot& foot = plant.foot();
+  for (const char* name : {"impedance", "pad"}) {
+    double beyond = 0;  // the farthest logged CoP beyond the heel or the toe [m]
+    int loaded = 0;
+    const auto log = [&](const WalkSample& s) {
+      if (s.force_stance(1) <= 0) return;
+      ++loaded;
+      const double cop = -s.tau(0) / s.force_stance(1);
+      beyond = std::max({beyond, -foot.heel - cop, cop - foot.toe});
+    };
+    const WalkResult w =
+        walk(plant, test::computedTorque(), ref, shippedGround(name), {1, {}, {}}, log);
+    RecordProperty(std::string(name) + "_cop_saturated_time_s",
+                   fmt::format("{:.3g}", w.cop_saturated_time));
+    ASSERT_GT(loaded, 100) << name;
+    EXPECT_GT(w.cop_saturated_time, 0.0) << name;  // the request did leave the foot
+    EXPECT_LT(w.min_cop_margin, 0.0) << name;
+    EXPECT_LE(beyond, 1e-12) << name;
+  }
+}
+
 TEST(GroundWalk, TooLongRk4StepOnAStiffGroundIsReportedAsDiverged) {
   auto ground = *shippedGround("impedance").getIf<CompliantGround>();
   ground.contact.stiffness *= 100;  // 1e9 N/m^1.5, the same restitution (damping ratio c / k)
