@@ -121,6 +121,9 @@ grep -q -- "--set ground.bogus=1" "$TMP/err" || fail "(--set) the message names 
 bad "case 4" "uncertainty-case" --reference "$REF" --uncertainty-case 4
 bad "mass error below -50 %" "mass-error" --reference "$REF" --mass-error -0.9
 bad "hzd with a DSP" "controller hzd.*double support" --reference "$REF" --controller hzd
+# A slip limit of 0 ended every walk at t = 0 as a slip its summary gave as 0.
+bad "--max-slip 0" "--max-slip: expected a number in (0, 1] \[m\], got 0" --reference "$REF" \
+  --max-slip 0
 [[ $(wc -l <"$TMP/rigid/steps.csv") -eq 3 ]] || fail "(d) a failed run touched the old result"
 # (k) the knee-less walker under HZD on rigid ground: its swing tip meets the ground at the
 # stance tip as the legs cross at mid-swing, where no frictional impact is consistent; the walk
