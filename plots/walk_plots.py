@@ -10,6 +10,8 @@ printing one line per picture written:
   forces.png         normal and tangential ground forces at both tips, friction they need
   walk_overview.png  the main panels of the above on one page
   poincare.png       Poincare multipliers in the complex plane (only when summary.json has them)
+A walk that ended before walk.csv's second sample has no time series: walk_stick.png and
+walk_overview.png then show the robot where it stopped (or, without a sample, say why it ended).
 walk.csv labels links relative to the current stance leg (theta1 is always the stance shank of a
 five-link robot), angles follow dynamics/conventions.hpp (from the upward vertical, clockwise
 positive), units are SI. A missing file, column or key, or a malformed value, ends the script
@@ -79,8 +81,9 @@ def check_step_numbers(path, steps, non_decreasing=True):
 
 
 def read_walk(path):
-    """(columns: name -> array, phase: str array, n_links) of walk.csv."""
-    header, rows = plot_io.read_rows(path, "walk", min_rows=2)
+    """(columns: name -> array, phase: str array, n_links) of walk.csv; a walk that ended at its
+    first time step has one row or none (short_walk_pictures)."""
+    header, rows = plot_io.read_rows(path, "walk", min_rows=0)
     plot_io.require_columns(path, header, ["t", "step", "phase", "theta1"])
     n = link_count(path, header)
     cols = plot_io.columns(path, header, rows, walk_columns(n), strings={"phase"})
@@ -106,7 +109,7 @@ def read_steps(path):
 def read_stick(path, n):
     """stick.csv as a list of frames (t, step, starts n x 2, ends n x 2), in time order: each
     frame is a block of n rows with links 1..n (two frames may share a time)."""
-    cols = plot_io.read_csv(path, "stick diagram", STICK_COLUMNS)
+    cols = plot_io.read_csv(path, "stick diagram", STICK_COLUMNS, min_rows=0)
     plot_io.check_increasing(path, "t", cols["t"])
     link = cols["link"]
     frames = []
@@ -326,7 +329,7 @@ def draw_walk_stick(ax, w, colorbar=True):
         ax.plot([], [], "k-", lw=2.5, label=f"foot: heel {w.foot[0]:g} m, toe {w.foot[1]:g} m")
     ax.set_aspect("equal")
     ax.set_ylim(bottom=min(-0.12, ax.get_ylim()[0]))
-    if colorbar:
+    if colorbar and w.t[-1] > w.t[0]:  # one instant has no time scale
         ax.figure.colorbar(matplotlib.cm.ScalarMappable(norm, cmap), ax=ax, label="time [s]",
                            shrink=0.8, pad=0.01)
     ssp, dsp = frames_per_phase(w)
@@ -508,8 +511,29 @@ def poincare_figure(w):
     return plot_io.panel_figure(draw_poincare, w, headline(w), (6, 6), fontsize=8)
 
 
+def ended_figure(w):
+    """A walk without a sample (it ended in its first time step): when and why, in words."""
+    fig, ax = plt.subplots(figsize=(7, 3))
+    ax.set_axis_off()
+    ax.text(0.5, 0.5, textwrap.fill(f"The walk ended in its first time step, before walk.csv's "
+                                    f"first sample: {w.s['failure'] or 'no failure given'}", 60),
+            ha="center", va="center", fontsize=10, color="tab:red", transform=ax.transAxes)
+    fig.suptitle(headline(w), fontsize=9)
+    return fig
+
+
+def short_walk_pictures(w):
+    """(file name, figure maker) of a walk of fewer than two samples, which has no time series:
+    the robot where it stopped, with why, as the stick diagram and the overview (a walk that
+    failed at t = 0 got no picture, and an "error:" from a run that exited 0)."""
+    make = stick_figure if w.frames else ended_figure
+    return [("walk_stick.png", make), ("walk_overview.png", make)]
+
+
 def pictures(w):
     """(file name, figure maker) for every picture this walk has data for."""
+    if len(w.t) < 2:
+        return short_walk_pictures(w)
     out = [("walk_stick.png", stick_figure), ("tracking.png", tracking_figure),
            ("torques.png", torques_figure), ("forces.png", forces_figure),
            ("walk_overview.png", overview_figure)]
@@ -523,6 +547,10 @@ def main(result_dir):
     # Without multipliers and without a failure the map was not asked for (--no-poincare).
     if w.s["multipliers"] is None and w.s.get("poincare_failure"):
         print(f"poincare.png skipped: {w.s['poincare_failure']}", file=sys.stderr)
+    if len(w.t) < 2:
+        samples = f"{len(w.t)} sample" + ("" if len(w.t) == 1 else "s")
+        print(f"tracking.png, torques.png and forces.png skipped: walk.csv holds {samples}, no "
+              "time series", file=sys.stderr)
     for name, make in pictures(w):
         fig = make(w)
         path = os.path.join(result_dir, name)

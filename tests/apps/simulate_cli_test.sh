@@ -101,6 +101,24 @@ check_json "(c3) the shipped heel" "$TMP/heel5/summary.json" <<'PY'
 assert d["fell"] and d["steps_completed"] == 0, d["failure"]
 PY
 
+# (c4) a walk that ends at t = 0 has pictures too, and no "error:" on its exit 0: the polynomial
+# gait's CoP is off the shipped heel at its first state (--cop-limit fail: one sample in
+# walk.csv), and too long a time step diverges the impedance ground's first (no sample).
+if "$PY" -c "import matplotlib" 2>/dev/null; then
+  for at_zero in "--cop-limit fail" "--ground impedance --set ground.time_step=0.01"; do
+    # shellcheck disable=SC2086  # the options are words
+    run simulate --reference "$REF" --steps 3 --no-poincare --out "$TMP/at_zero" $at_zero
+    [[ $RC -eq 0 ]] || fail "(c4) $at_zero: exit $RC: $(cat "$TMP/err")"
+    grep -Eq "^(error|warning):" "$TMP/err" && fail "(c4) $at_zero: $(cat "$TMP/err")"
+    for name in walk_stick walk_overview; do
+      [[ -s "$TMP/at_zero/$name.png" ]] || fail "(c4) $at_zero: no $name.png"
+    done
+    rm -rf "$TMP/at_zero"
+  done
+else
+  echo "note: (c4) skipped: no matplotlib"
+fi
+
 # (d) bad input: exit 2 with a message naming what is wrong, and the old result untouched.
 bad() {
   local name=$1 pattern=$2
