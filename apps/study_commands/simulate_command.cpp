@@ -81,6 +81,19 @@ void printOutcome(const sim::ScenarioResult& r, int steps) {
                    : "");
 }
 
+/// Deeper than this, a swing tip below the rigid ground is a contact the walk ignored [m].
+constexpr double kPenetrationWarning = 1e-4;
+
+/// The rigid ground has no contact for a swing tip below it behind the stance tip (touchdown is
+/// only ahead of it): said, not failed, so which walks fail stays as it was.
+void warnPenetration(const sim::WalkResult& walk) {
+  if (!(walk.max_tip_penetration > kPenetrationWarning)) return;  // NaN: not rigid
+  fmt::print(
+      "simulate: warning: a swing tip went {:.3g} mm below the ground (deepest in step {}), a "
+      "contact the rigid ground does not model: the walk is not physical there\n",
+      1e3 * walk.max_tip_penetration, sim::deepestPenetrationStep(walk));
+}
+
 }  // namespace
 
 void runSimulate(const SimulateOptions& o) {
@@ -114,6 +127,7 @@ void runSimulate(const SimulateOptions& o) {
   if (o.output.plots)
     report::runPlotScript("walk_plots.py", {out.path()}, report::scriptOutput(o.quiet));
   fmt::print("simulate: wrote {}/walk.csv, steps.csv, stick.csv, summary.json\n", out.path());
+  warnPenetration(r.walk);
 }
 
 void registerSimulateCommand(CLI::App& app) {

@@ -89,6 +89,12 @@ nlohmann::ordered_json contactJson(const WalkResult& w) {
   j["cop_saturated_time_s"] = w.cop_saturated_time;
   j["max_friction_ratio"] = w.max_friction_ratio;
   j["max_foot_tilt_rad"] = w.max_foot_tilt;
+  // The rigid ground's swing tip below the ground (hybrid_walk.hpp StepResult); null on the
+  // grounds that model that contact.
+  if (std::isnan(w.max_tip_penetration))
+    j["max_tip_penetration_m"] = nullptr;
+  else
+    j["max_tip_penetration_m"] = w.max_tip_penetration;
   return j;
 }
 

@@ -4,6 +4,8 @@
 /// friction, steps_completed, fell, failure, max_tracking_error, mean step length, duration and
 /// speed over the completed steps, slip per step and its largest value, the least CoP margin of
 /// the stance foot and the time its ankle torque was saturated (the rules in contact_rules), the
+/// deepest the rigid ground's swing tip went below the ground (max_tip_penetration_m, null on the
+/// other grounds), the
 /// Poincare multipliers (null when not computed, with poincare_failure when the map failed), HZD's
 /// restricted Poincare map (analytic and measured) under the hzd controller, and wall_time_s.
 #include <nlohmann/json.hpp>

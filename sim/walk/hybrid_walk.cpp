@@ -1,6 +1,7 @@
 #include "sim/walk/hybrid_walk.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -21,6 +22,10 @@ bool appendStep(WalkResult& walk, StepResult step, double planned_step) {
   walk.cop_saturated_time += step.cop_saturated_time;
   walk.max_friction_ratio = std::max(walk.max_friction_ratio, step.max_friction_ratio);
   walk.max_foot_tilt = std::max(walk.max_foot_tilt, step.max_foot_tilt);
+  if (!std::isnan(step.max_tip_penetration))
+    walk.max_tip_penetration = std::isnan(walk.max_tip_penetration)
+                                   ? step.max_tip_penetration
+                                   : std::max(walk.max_tip_penetration, step.max_tip_penetration);
   walk.steps.push_back(step);
   if (!step.ok) {
     walk.fell = true;
@@ -39,6 +44,13 @@ WalkTotals completedTotals(const WalkResult& walk) {
     totals.duration += s.ssp_duration + s.dsp_duration;
   }
   return totals;
+}
+
+int deepestPenetrationStep(const WalkResult& walk) {
+  for (std::size_t k = 0; k < walk.steps.size(); ++k)
+    if (walk.steps[k].max_tip_penetration == walk.max_tip_penetration)
+      return static_cast<int>(k) + 1;
+  return 0;
 }
 
 WalkResult simulateWalk(const dynamics::Model& plant, const Controller& controller,

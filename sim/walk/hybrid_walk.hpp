@@ -78,6 +78,12 @@ struct StepResult {
   /// feet are CoP bounds and never turn (their foot rotation is min_cop_margin < 0).
   double max_foot_tilt = 0;
   double stance_velocity = 0;  ///< the new stance tip's sliding velocity at the next start [m/s]
+  /// Rigid ground: deepest the swing tip went below the ground in single support, wherever it
+  /// was (ahead of B, where touchdown ends the phase, or behind it, where the rigid ground has
+  /// no contact and the tip passes through), over the integrator's accepted and event-located
+  /// states; 0 when it never went below [m]. NaN (not measured) on the compliant grounds and
+  /// DART, whose ground pushes any tip below it back: there a tip in the ground is a contact.
+  double max_tip_penetration = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Simulates one step of `plant` under `controller` from the SSP start (theta0, dtheta0), B at
@@ -128,6 +134,8 @@ struct WalkResult {
   double cop_saturated_time = 0;                                    ///< [s]
   double max_friction_ratio = 0;  ///< largest StepResult::max_friction_ratio
   double max_foot_tilt = 0;       ///< largest StepResult::max_foot_tilt [rad]
+  /// Largest StepResult::max_tip_penetration [m]; NaN when no step measured it (not rigid).
+  double max_tip_penetration = std::numeric_limits<double>::quiet_NaN();
   std::vector<StepResult> steps;
 };
 
@@ -148,6 +156,10 @@ struct WalkTotals {
   double distance = 0, duration = 0;
 };
 WalkTotals completedTotals(const WalkResult& walk);
+
+/// 1-based index of the step whose max_tip_penetration is walk.max_tip_penetration, 0 when none
+/// measured it.
+int deepestPenetrationStep(const WalkResult& walk);
 
 /// Up to options.steps steps from the reference's start, or (theta0, dtheta0) when given.
 WalkResult simulateWalk(const dynamics::Model& plant, const Controller& controller,

@@ -38,6 +38,13 @@ double legLength(const dynamics::Model& m) {
   return length;
 }
 
+/// A rigid-ground step's result, its tip penetration measured from 0 (StepResult).
+StepResult rigidStepResult() {
+  StepResult r;
+  r.max_tip_penetration = 0;
+  return r;
+}
+
 /// Everything a step needs that does not change during it.
 struct StepContext {
   const dynamics::Model& plant;
@@ -100,6 +107,8 @@ struct StepRecorder {
       result.max_friction_ratio =
           std::max({result.max_friction_ratio, loadedFrictionRatio(s.force_stance, weight),
                     loadedFrictionRatio(s.force_swing, weight)});
+      if (loop.phase() == Phase::kSsp)  // the swing tip, ahead of B or behind it
+        result.max_tip_penetration = std::max(result.max_tip_penetration, -swingTipOf(c, x)(1));
       if (s.saturated && last) result.cop_saturated_time += t - *last;
       last = t;
       if (log)
@@ -445,7 +454,7 @@ StepResult simulateStep(const dynamics::Model& plant, const Controller& controll
                         const EventIntegratorOptions& o, const WalkLog& log, double t0,
                         int step_index, double stance_x, const std::optional<Push>& push,
                         const ContactRules& rules, double stance_velocity) {
-  StepResult r;
+  StepResult r = rigidStepResult();
   const StepContext c{plant, controller, ref, o, rules, push, step_index};
   StepRecorder rec{r, log, step_index, stance_x};
   return finishStep(c, rec, ref.startFrom(Phase::kSsp, 0, theta0, dtheta0),
@@ -463,7 +472,7 @@ StepResult simulateStepFrom(const dynamics::Model& plant, const Controller& cont
     throw std::invalid_argument(
         "a step taken up in single support must start past the fade of "
         "the step's start (reference.hpp)");
-  StepResult r;
+  StepResult r = rigidStepResult();
   const StepContext c{plant, controller, ref, o, rules, push, 0};
   StepRecorder rec{r, {}, 0, 0};
   Eigen::VectorXd x = contactState(s.theta, s.dtheta, 0, Vec2d::Zero(), 0);
@@ -477,7 +486,7 @@ SspRun simulateSingleSupportTo(const dynamics::Model& plant, const Controller& c
                                const Reference& ref, const VecD& theta0, const VecD& dtheta0,
                                double clock, const EventIntegratorOptions& o,
                                const ContactRules& rules, double stance_velocity) {
-  StepResult r;
+  StepResult r = rigidStepResult();
   const std::optional<Push> no_push;
   const StepContext c{plant, controller, ref, o, rules, no_push, 0};
   StepRecorder rec{r, {}, 0, 0};

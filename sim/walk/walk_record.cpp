@@ -100,13 +100,16 @@ void WalkRecorder::writeStickCsv(const std::string& path, double frame_interval)
 void writeStepsCsv(const WalkResult& walk, const std::string& path) {
   std::ostringstream out = openCsv();
   out << "step,ok,impact,ssp_duration,dsp_duration,advance,max_tracking_error,slip,"
-         "min_cop_margin,max_friction_ratio,max_foot_tilt,failure\n";
+         "min_cop_margin,max_friction_ratio,max_foot_tilt,failure,"
+         "max_tip_penetration_m\n";
   for (std::size_t k = 0; k < walk.steps.size(); ++k) {
     const auto& s = walk.steps[k];
     out << k + 1 << ',' << (s.ok ? 1 : 0) << ',' << s.impact << ',' << s.ssp_duration << ','
         << s.dsp_duration << ',' << s.advance << ',' << s.max_tracking_error << ',' << s.slip << ','
         << s.min_cop_margin << ',' << s.max_friction_ratio << ',' << s.max_foot_tilt << ','
-        << csvField(s.failure) << '\n';
+        << csvField(s.failure) << ',';
+    if (!std::isnan(s.max_tip_penetration)) out << s.max_tip_penetration;  // else empty
+    out << '\n';
   }
   io::writeFile(path, out.str());
 }

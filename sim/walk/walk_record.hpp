@@ -39,7 +39,8 @@ class WalkRecorder {
 
 /// steps.csv: step, ok, impact, ssp_duration, dsp_duration, advance, max_tracking_error, slip,
 /// min_cop_margin (inf without an actuated ankle), max_friction_ratio, max_foot_tilt [rad],
-/// failure.
+/// failure, max_tip_penetration_m (StepResult::max_tip_penetration; empty where the ground models
+/// the contact, i.e. every ground but the rigid one).
 void writeStepsCsv(const WalkResult& walk, const std::string& path);
 
 }  // namespace gaitopt::sim

@@ -28,7 +28,11 @@ assert abs(d["mean_step_length"] - 0.35) < 1e-3, d["mean_step_length"]
 assert abs(d["mean_step_duration"] - 0.7) < 3e-3, d["mean_step_duration"]
 assert d["poincare_max_multiplier"] is None and d["ground"] == "rigid", d
 assert d["robot"] == "mu2004_five_link" and d["friction"] == 0.6
+assert 0 <= d["max_tip_penetration_m"] < 1e-6, d["max_tip_penetration_m"]  # 1e-6: touchdown's
 PY
+head -1 "$TMP/rigid/steps.csv" | grep -q ',failure,max_tip_penetration_m$' ||
+  fail "(a) steps.csv header: $(head -1 "$TMP/rigid/steps.csv")"
+grep -q "warning" "$TMP/out" && fail "(a) $(cat "$TMP/out")"
 # walk.csv ends at the end of step 2 (t = 1.4 s) and its hip advances two steps.
 "$PY" - "$TMP/rigid/walk.csv" <<'PY' || fail "(a) walk.csv"
 import csv, sys
@@ -47,6 +51,7 @@ for ground in impedance lcp; do
 assert d["steps_completed"] == 2 and not d["fell"], d["failure"]
 assert abs(d["mean_step_length"] - 0.35) < 5e-3, d["mean_step_length"]
 assert d["poincare_max_multiplier"] is None  # the return map is the rigid model's
+assert d["max_tip_penetration_m"] is None  # these grounds model a tip in the ground
 PY
 done
 
@@ -84,6 +89,18 @@ run simulate --robot "$LONG_HEEL" --reference "$REF" --steps 1 --uncertainty-cas
 [[ $RC -eq 0 ]] || fail "(c2) expected exit 0, got $RC: $(cat "$TMP/err")"
 check_json "(c2) summary" "$TMP/point/summary.json" <<'PY'
 assert d["parameter_errors"] == {"mass": -0.05, "inertia": -0.05, "length": 0.025, "com": 0.025}, d
+PY
+
+# (c2b) on the rigid ground a swing tip below it behind the stance tip is no contact (touchdown
+# is ahead of it only): the walk goes on through the floor, measured and told, not failed. The
+# polynomial gait under computed torque with the plant's masses doubled: 1.55 mm in step 1.
+run simulate --robot "$LONG_HEEL" --reference "$REF" --steps 3 --controller computed_torque \
+  --mass-error 1 --no-plots --no-poincare --out "$TMP/through"
+[[ $RC -eq 0 ]] || fail "(c2b) expected exit 0, got $RC: $(cat "$TMP/err")"
+grep -q "^simulate: warning: a swing tip went 1.5[0-9] mm below the ground (deepest in step 1), a contact the rigid ground does not model: the walk is not physical there$" \
+  "$TMP/out" || fail "(c2b) no warning: $(cat "$TMP/out")"
+check_json "(c2b) summary" "$TMP/through/summary.json" <<'PY'
+assert 1e-3 < d["max_tip_penetration_m"] < 2e-3, d["max_tip_penetration_m"]
 PY
 
 # (c3) --set replaces values of the robot and ground files: the shipped robot given the long

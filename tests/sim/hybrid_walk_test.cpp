@@ -17,6 +17,8 @@
 #include "ocp/guess/initial_guess.hpp"
 #include "ocp/solve/gait_solve.hpp"
 #include "sim/controllers/mu_sliding_mode.hpp"
+#include "sim/scenario/scenario.hpp"
+#include "sim/scenario/scenario_settings.hpp"
 #include "sim/studies/poincare.hpp"
 #include "sim/walk/event_integrator.hpp"
 #include "sim/walk/hybrid_walk.hpp"
@@ -230,6 +232,42 @@ TEST_F(FiveLinkWalk, BothGaitsWalkTwentyStepsOnAStableCycleOnALongHeel) {
   // Said, not passed in silence: the name's twenty steps and stable cycle were not checked.
   if (kSteps < 20)
     GTEST_SKIP() << kSteps << " steps walked; twenty and the Poincare map need an optimised build";
+}
+
+// The rigid ground has touchdown only ahead of the stance tip: a swing tip below the ground
+// behind it is no contact, and the walk goes on through the floor. Which walks fail stays as it
+// was; the walk measures how deep (StepResult::max_tip_penetration). The robust optimum under
+// Mu's law with the plant's masses 40 % over (`simulate --controller mu_sliding_mode
+// --mass-error 0.4`): the old trailing tip goes 0.54 mm below the ground behind B in every step,
+// and all steps are walked; walked nominally, by the default controller, it stays within the
+// 1e-6 m above the ground at which touchdown is detected (rigid_step.cpp kContactDistance).
+TEST(RigidWalk, ASwingTipBelowTheGroundBehindTheStanceTipIsMeasuredNotFailed) {
+#ifndef NDEBUG
+  GTEST_SKIP() << "an OCP solve and two walks: optimised builds only";
+#endif
+  const auto config =
+      ocp::loadOcpConfig(std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/mu2004_walk_robust.yaml");
+  const dynamics::Model nominal = dynamics::loadRobot(config.robot_path);
+  const auto solution = ocp::solveGait(nominal, config, ocp::polynomialGuess(nominal, config));
+  ASSERT_TRUE(solution.result.success) << solution.result.status;
+  const Reference ref(ocp::reconstructDense(solution.problem, nominal, solution.result.x, 1000.0),
+                      nominal);
+  ScenarioSettings settings;
+  settings.steps = 4;
+  const ScenarioResult plain = runScenario(nominal, ref, makeScenario(settings));
+  EXPECT_EQ(plain.walk.steps_completed, settings.steps) << plain.walk.failure;
+  EXPECT_LT(plain.walk.max_tip_penetration, 1e-6);
+  EXPECT_GE(plain.walk.max_tip_penetration, 0.0);
+
+  settings.controller = "mu_sliding_mode";
+  settings.mass_error = 0.4;
+  const ScenarioResult heavy = runScenario(nominal, ref, makeScenario(settings));
+  RecordProperty("max_tip_penetration_m", std::to_string(heavy.walk.max_tip_penetration));
+  EXPECT_EQ(heavy.walk.steps_completed, settings.steps) << heavy.walk.failure;
+  EXPECT_GT(heavy.walk.max_tip_penetration, 1e-4);
+  ASSERT_EQ(heavy.walk.steps.size(), 4u);
+  for (const StepResult& s : heavy.walk.steps) EXPECT_GT(s.max_tip_penetration, 1e-4);
+  EXPECT_GE(deepestPenetrationStep(heavy.walk), 1);
 }
 
 }  // namespace
