@@ -11,7 +11,8 @@
 ///                (ground.hpp, the sign of gaits/export/metrics.cpp's ZMP), left [-heel, toe] in
 ///                single support; with kSaturate (the default) the plant's ankle torque is clipped
 ///                so the CoP stays on the foot. In double support the trailing foot always
-///                saturates: it rolls onto its toe as it unloads, which is walking, not a failure;
+///                saturates: it rolls onto its toe as it unloads, which is walking, not a failure
+///                (at the double support's first steps it can also meet the heel);
 ///   a pull       a stance tip (or the leading tip in double support) whose normal force would
 ///                have to pull on the ground: it lifts off.
 #include <cmath>
@@ -68,8 +69,9 @@ inline double loadedCopMargin(double tau0, double force_y, const dynamics::Foot&
 /// |F_t| / F_n of a tip carrying at least kLoadedFoot of `weight` [N], else 0: the share of
 /// Coulomb's cone the gait uses (a tip that only touches says nothing about slipping; on the
 /// compliant and LCP grounds it is capped at mu, where the tip slides; DART's contact solver
-/// reports up to 0.69 on mu 0.6 where the default optimum's foot slips, unexplained). What
-/// summary.json records as max_friction_ratio.
+/// returns per-contact forces outside its own cone at some time steps, more than twice mu at a
+/// double support's first step, docs/closed_loop.md). What summary.json records as
+/// max_friction_ratio.
 inline double loadedFrictionRatio(const Eigen::Vector2d& force, double weight) {
   return force.y() < kLoadedFoot * weight ? 0.0 : std::abs(force.x()) / force.y();
 }
