@@ -1,5 +1,6 @@
 #include "apps/study_commands/scenario_options.hpp"
 
+#include <cstdlib>
 #include <map>
 #include <string>
 #include <vector>
@@ -22,11 +23,23 @@ std::string entryList(const std::vector<Entry>& entries) {
   return list;
 }
 
+/// --max-slip's range (0, 1] [m]: at 0 a tip "slid further than max_slip" at the walk's first
+/// state, and every walk ended at t = 0 as a slip that its summary gave as 0.
+CLI::Validator slipLimitRange() {
+  return CLI::Validator(
+      [](const std::string& text) {
+        const double v = std::strtod(text.c_str(), nullptr);
+        return v > 0 && v <= 1 ? std::string()
+                               : fmt::format("expected a number in (0, 1] [m], got {}", text);
+      },
+      "FLOAT in (0 - 1]", "slip limit");
+}
+
 /// The failure rule of every ground (sim/contact/contact_rules.hpp).
 void addContactOptions(CLI::App* cmd, sim::ContactRules& rules) {
   cmd->add_option("--max-slip", rules.max_slip,
                   "A walk fails when a tip on the ground slides further than this in one step [m]")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(slipLimitRange())
       ->capture_default_str();
   const std::map<std::string, sim::CopLimit> limits{{"saturate", sim::CopLimit::kSaturate},
                                                     {"fail", sim::CopLimit::kFail}};

@@ -43,24 +43,6 @@ sim::WalkLog withStepProgress(sim::WalkLog log, int steps) {
   };
 }
 
-/// --max-slip's range (0, 1] [m], in place of the shared option's [0, 1]: at 0 a tip "slid
-/// further than max_slip" at the walk's first state, and every walk ended at t = 0 as a slip
-/// that its summary gave as 0.
-CLI::Validator slipLimitRange() {
-  return CLI::Validator(
-      [](const std::string& text) {
-        const double v = std::strtod(text.c_str(), nullptr);
-        return v > 0 && v <= 1 ? std::string()
-                               : fmt::format("expected a number in (0, 1] [m], got {}", text);
-      },
-      "FLOAT in (0 - 1]", "slip limit");
-}
-
-void requirePositiveSlipLimit(CLI::Option* max_slip) {
-  max_slip->get_validator()->active(false);  // the [0, 1] range of scenario_options.cpp
-  max_slip->check(slipLimitRange());
-}
-
 void printOutcome(const sim::ScenarioResult& r, int steps) {
   fmt::print("simulate: {} of {} steps{}, max tracking error {:.3g} rad, {:.2f} s\n",
              r.walk.steps_completed, steps,
@@ -135,7 +117,6 @@ void registerSimulateCommand(CLI::App& app) {
   CLI::App* cmd =
       app.add_subcommand("simulate", "Walk an exported gait in closed loop and measure it");
   addScenarioOptions(cmd, options->scenario);
-  requirePositiveSlipLimit(cmd->get_option("--max-slip"));
   // walk.csv keeps the simulator's own states, thinned to the rate: no finer than the ground's
   // time step (the rigid ground's output step, the others' integration step).
   addOutputOptions(cmd, options->output, "walk.csv, at most one row per time step of the ground");

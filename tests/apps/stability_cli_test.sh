@@ -112,6 +112,9 @@ PY
 # (e) bad input: unknown parameter, malformed range, stiffness off the impedance ground.
 run stability "${ARGS[@]}" --sweep wind --out "$TMP/e"
 [[ $RC -eq 2 ]] && grep -q "unknown sweep parameter 'wind'" "$TMP/err" || fail "(e) $(cat "$TMP/err")"
+run stability "${ARGS[@]}" --sweep push=-1:1:3 --max-slip 0 --out "$TMP/e"
+[[ $RC -eq 2 ]] && grep -q -- "--max-slip: expected a number in (0, 1\] \[m\], got 0" "$TMP/err" ||
+  fail "(e) --max-slip 0: $(cat "$TMP/err")"
 run stability "${ARGS[@]}" --sweep friction=0.1:x:3 --out "$TMP/e"
 [[ $RC -eq 2 ]] && grep -q "not a finite number" "$TMP/err" || fail "(e) range: $(cat "$TMP/err")"
 run stability "${ARGS[@]}" --sweep stiffness=1e5:1e6:2 --out "$TMP/e"
