@@ -298,7 +298,7 @@ void registerStabilityCommand(CLI::App& app) {
     names += fmt::format("\n  {}{}: {} (default {}:{}:{}{})", p.name(),
                          p.unit().empty() ? "" : " [" + p.unit() + "]", p.meaning, p.first, p.last,
                          p.count, p.geometric ? ", geometric spacing" : "");
-  // The nominal is the base scenario's value (finding 9 of a user tour: --push 1 --sweep push
+  // The nominal is the base scenario's value (--push 1 --sweep push
   // grows its interval from 1, not 0): said where the sweep is asked for.
   cmd->add_option("--sweep", options->sweeps,
                   "NAME or NAME=a:b:n (n values, a < b; n = 1: the value a), repeatable. The "

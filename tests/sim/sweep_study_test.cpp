@@ -32,7 +32,7 @@ TEST(SweepValues, OneValueIsTheFirstEnd) {
   EXPECT_EQ(sweepValues(kGeometric, {2e5, 2e5, 1}), std::vector<double>{2e5});
 }
 
-// One rule for every sweep and map axis (finding 5 of a user tour: push=0.5:0.5:3 wrote three
+// One rule for every sweep and map axis (push=0.5:0.5:3 wrote three
 // rows of one point, push=1:-1:3 was accepted and push=-1:1:1 dropped 1 without a word).
 TEST(SweepValues, ARangeRunsUpwards) {
   for (const gaits::GridAxis& bad : {gaits::GridAxis{0.5, 0.5, 3}, gaits::GridAxis{1, -1, 3},
@@ -108,7 +108,7 @@ TEST(WalkingInterval, IsTheRunOfWalkingValuesAroundTheNominalOne) {
             true);
 }
 
-// The ends are the grid's values as the CSV shows them (finding 14 of a user tour: friction
+// The ends are the grid's values as the CSV shows them (friction
 // walks_from 0.30000000000000004, walks_to 0.9999999999999999, fails_above 0.05000000000000002).
 TEST(WalkingInterval, EndsReadAsTheRowKeysWithoutRoundingNoise) {
   const double from = 0.1 + 0.2, to = 1 - 1e-16, above = 0.05000000000000002;
@@ -151,7 +151,7 @@ TEST(WithNominal, TheNominalValueIsOnTheGrid) {
   EXPECT_EQ(withNominal(narrow, 1000.0000001), narrow);
 }
 
-// A folder is keyed by what --set sets, not how it is typed (finding 11 of a user tour: a rerun
+// A folder is keyed by what --set sets, not how it is typed (a rerun
 // with its --set reordered, or 0.10 for 0.1, 1e-3 for 0.001, was refused).
 TEST(SetsContent, KeyedByContentNotByText) {
   const auto key = setsContent({"robot.foot.heel=0.1", "ground.time_step=0.001"});
