@@ -22,6 +22,7 @@
 #include "sim/studies/poincare.hpp"
 #include "sim/walk/event_integrator.hpp"
 #include "sim/walk/hybrid_walk.hpp"
+#include "support/shipped_export.hpp"
 
 namespace gaitopt::sim {
 namespace {
@@ -245,13 +246,10 @@ TEST(RigidWalk, ASwingTipBelowTheGroundBehindTheStanceTipIsMeasuredNotFailed) {
 #ifndef NDEBUG
   GTEST_SKIP() << "an OCP solve and two walks: optimised builds only";
 #endif
-  const auto config =
-      ocp::loadOcpConfig(std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/mu2004_walk_robust.yaml");
-  const dynamics::Model nominal = dynamics::loadRobot(config.robot_path);
-  const auto solution = ocp::solveGait(nominal, config, ocp::polynomialGuess(nominal, config));
-  ASSERT_TRUE(solution.result.success) << solution.result.status;
-  const Reference ref(ocp::reconstructDense(solution.problem, nominal, solution.result.x, 1000.0),
-                      nominal);
+  const test::ShippedExport robust = test::shippedExport("mu2004_walk_robust");
+  ASSERT_TRUE(robust.success) << robust.status;
+  const dynamics::Model& nominal = robust.model;
+  const Reference ref(robust.dense, nominal);
   ScenarioSettings settings;
   settings.steps = 4;
   const ScenarioResult plain = runScenario(nominal, ref, makeScenario(settings));

@@ -7,12 +7,10 @@
 #include <gtest/gtest.h>
 
 #include "dynamics/model_variation.hpp"
-#include "dynamics/robot_files/robot_config.hpp"
 #include "five_link_gait.hpp"
-#include "ocp/guess/initial_guess.hpp"
-#include "ocp/solve/gait_solve.hpp"
 #include "sim/controllers/mu_sliding_mode.hpp"
 #include "sim/walk/hybrid_walk.hpp"
+#include "support/shipped_export.hpp"
 
 namespace gaitopt::sim {
 namespace {
@@ -84,13 +82,10 @@ TEST(MuSlidingModeHandover, TheRobustOptimumWalksMusCase3) {
 #ifndef NDEBUG
   GTEST_SKIP() << "an OCP solve and a walk: optimised builds only";
 #endif
-  const auto config =
-      ocp::loadOcpConfig(std::string(GAITOPT_SOURCE_DIR) + "/configs/ocp/mu2004_walk_robust.yaml");
-  const dynamics::Model plant = dynamics::loadRobot(config.robot_path);
-  const auto solution = ocp::solveGait(plant, config, ocp::polynomialGuess(plant, config));
-  ASSERT_TRUE(solution.result.success) << solution.result.status;
-  const Reference ref(ocp::reconstructDense(solution.problem, plant, solution.result.x, 1000.0),
-                      plant);
+  const test::ShippedExport robust = test::shippedExport("mu2004_walk_robust");
+  ASSERT_TRUE(robust.success) << robust.status;
+  const dynamics::Model& plant = robust.model;
+  const Reference ref(robust.dense, plant);
   const auto errors = dynamics::muUncertaintyCase(3);
   const MuSlidingModeController c(dynamics::perturbedModel(plant, errors), muTable42(3), errors);
   double most_b = 0, least_e = 1e9;
