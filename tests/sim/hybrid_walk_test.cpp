@@ -246,7 +246,7 @@ TEST(RigidWalk, ASwingTipBelowTheGroundBehindTheStanceTipIsMeasuredNotFailed) {
 #ifndef NDEBUG
   GTEST_SKIP() << "an OCP solve and two walks: optimised builds only";
 #endif
-  const test::ShippedExport robust = test::shippedExport("mu2004_walk_robust");
+  const gaitopt::test::ShippedExport robust = gaitopt::test::shippedExport("mu2004_walk_robust");
   ASSERT_TRUE(robust.success) << robust.status;
   const dynamics::Model& nominal = robust.model;
   const Reference ref(robust.dense, nominal);

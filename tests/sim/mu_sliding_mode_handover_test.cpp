@@ -82,7 +82,7 @@ TEST(MuSlidingModeHandover, TheRobustOptimumWalksMusCase3) {
 #ifndef NDEBUG
   GTEST_SKIP() << "an OCP solve and a walk: optimised builds only";
 #endif
-  const test::ShippedExport robust = test::shippedExport("mu2004_walk_robust");
+  const gaitopt::test::ShippedExport robust = gaitopt::test::shippedExport("mu2004_walk_robust");
   ASSERT_TRUE(robust.success) << robust.status;
   const dynamics::Model& plant = robust.model;
   const Reference ref(robust.dense, plant);
