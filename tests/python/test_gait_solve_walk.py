@@ -80,7 +80,8 @@ def test_reading_a_gait_of_another_robot_or_a_failed_solve_is_refused(robot, pol
 
 def test_written_folder_follows_the_cli_out_rules(robot, poly_gait, tmp_path):
     # A folder of the user's files is refused and left whole; a missing one is created, and
-    # gaitopt's own is replaced (a walk's summary.json does not survive beside the new gait).
+    # gaitopt's own is replaced, but not once a file was added to it since (notes beside the
+    # gait, which replacing it would delete).
     mine = tmp_path / "mine"
     mine.mkdir()
     (mine / "summary.json").write_text("user data")
@@ -90,9 +91,13 @@ def test_written_folder_follows_the_cli_out_rules(robot, poly_gait, tmp_path):
     assert not (mine / "trajectory.csv").exists()
     new = tmp_path / "new" / "gait"
     assert gaitopt.write_trajectory(poly_gait, robot, str(new), rate_hz=100) > 0
-    (new / "walk.csv").write_text("stale")
-    gaitopt.write_trajectory(poly_gait, robot, str(new), rate_hz=100)
-    assert not (new / "walk.csv").exists() and (new / "summary.json").exists()
+    rows_100 = len((new / "trajectory.csv").read_text().splitlines())
+    assert gaitopt.write_trajectory(poly_gait, robot, str(new), rate_hz=50) > 0
+    assert len((new / "trajectory.csv").read_text().splitlines()) < rows_100  # replaced
+    (new / "notes.md").write_text("mine")
+    with pytest.raises(gaitopt.InputError, match="holds 'notes.md', which gaitopt did not write"):
+        gaitopt.write_trajectory(poly_gait, robot, str(new), rate_hz=100)
+    assert (new / "notes.md").read_text() == "mine" and (new / "summary.json").exists()
 
 
 def test_optimize_cost_equals_the_cli(cli, tmp_path):
