@@ -22,10 +22,8 @@ bool appendStep(WalkResult& walk, StepResult step, double planned_step) {
   walk.cop_saturated_time += step.cop_saturated_time;
   walk.max_friction_ratio = std::max(walk.max_friction_ratio, step.max_friction_ratio);
   walk.max_foot_tilt = std::max(walk.max_foot_tilt, step.max_foot_tilt);
-  if (!std::isnan(step.max_tip_penetration))
-    walk.max_tip_penetration = std::isnan(walk.max_tip_penetration)
-                                   ? step.max_tip_penetration
-                                   : std::max(walk.max_tip_penetration, step.max_tip_penetration);
+  // fmax skips a NaN (a ground that does not measure it) on either side.
+  walk.max_tip_penetration = std::fmax(walk.max_tip_penetration, step.max_tip_penetration);
   walk.steps.push_back(step);
   if (!step.ok) {
     walk.fell = true;
