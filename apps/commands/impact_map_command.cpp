@@ -87,8 +87,10 @@ void runImpactMap(const ImpactMapOptions& options) {
     gaits::writeJsonFile(summary, dir + "/summary.json");
   });
   printResult(summary);
-  if (options.plots)
+  if (options.plots) {
     report::runPlotScript("impact_map.py", {out.path()}, report::scriptOutput(options.quiet));
+    io::listAddedFiles(out.path());  // the pictures: a rerun may replace them
+  }
   fmt::print("impact-map: wrote {}/impact_map.csv and summary.json in {:.2f} s\n", out.path(),
              elapsed);
 }

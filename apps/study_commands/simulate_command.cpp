@@ -105,8 +105,10 @@ void runSimulate(const SimulateOptions& o) {
     gaits::writeJsonFile(sim::walkSummary(o.scenario, ref, scenario, plant, r),
                          dir + "/summary.json");
   });
-  if (o.output.plots)
+  if (o.output.plots) {
     report::runPlotScript("walk_plots.py", {out.path()}, report::scriptOutput(o.quiet));
+    io::listAddedFiles(out.path());  // the pictures: a rerun may replace them
+  }
   fmt::print("simulate: wrote {}/walk.csv, steps.csv, stick.csv, summary.json\n", out.path());
   warnPenetration(r.walk);
 }

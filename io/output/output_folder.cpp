@@ -155,14 +155,21 @@ std::vector<std::string> filesUnder(const fs::path& dir) {
   return files;
 }
 
-/// The first file under `dir` that its marker does not list as written by gaitopt ("" if none,
-/// or if the marker lists none: a folder written before markers listed their files).
-std::string unlistedFile(const fs::path& dir) {
+/// The files under `dir` that its marker does not list as written by gaitopt (none if the
+/// marker lists none: a folder written before markers listed their files).
+std::vector<std::string> unlistedFiles(const fs::path& dir) {
   const std::vector<std::string> written = markerLines(dir / kMarker, kWrittenLine);
-  if (written.empty()) return "";
+  std::vector<std::string> unlisted;
+  if (written.empty()) return unlisted;
   for (const std::string& f : filesUnder(dir))
-    if (std::find(written.begin(), written.end(), f) == written.end()) return f;
-  return "";
+    if (std::find(written.begin(), written.end(), f) == written.end()) unlisted.push_back(f);
+  return unlisted;
+}
+
+/// The first of unlistedFiles ("" if none).
+std::string unlistedFile(const fs::path& dir) {
+  const std::vector<std::string> unlisted = unlistedFiles(dir);
+  return unlisted.empty() ? "" : unlisted.front();
 }
 
 /// Whether `dir` holds anything besides the marker and `claim`, while `claim` is missing.
@@ -301,6 +308,16 @@ void addWrittenFile(const std::string& dir, const std::string& file) {
   std::ifstream in(marker);
   const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   writeFile(marker.string(), text + kWrittenLine + file + "\n");
+}
+
+void listAddedFiles(const std::string& dir) {
+  const std::vector<std::string> added = unlistedFiles(dir);
+  if (added.empty()) return;
+  const fs::path marker = fs::path(dir) / kMarker;
+  std::ifstream in(marker);
+  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  for (const std::string& f : added) text += kWrittenLine + f + "\n";
+  writeFile(marker.string(), text);
 }
 
 void listWrittenFiles(const std::string& dir) {

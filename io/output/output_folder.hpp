@@ -55,6 +55,11 @@ void listWrittenFiles(const std::string& dir);
 /// command that writes into a result (report's page) keeps it replaceable. @throws WriteError.
 void addWrittenFile(const std::string& dir, const std::string& file);
 
+/// Adds to `dir`'s marker, when it lists files, every file `dir` holds that it does not list: a
+/// command that draws its pictures into its own result once it is in place (and still locked)
+/// keeps it replaceable by its next run. @throws WriteError.
+void listAddedFiles(const std::string& dir);
+
 /// Removes `dir` when it is a gaitopt folder or empty (e.g. OUT.failed of an earlier failed
 /// solve); anything else, a link included, is left alone.
 void removeIfOurs(const std::string& dir);

@@ -62,5 +62,7 @@ if "$PY" -c "import matplotlib" 2>/dev/null; then
   # Three rows: Mu's types, his slices and ratios, the complementarity law's types.
   "$PY" -c "import sys, matplotlib.image as im; h, w = im.imread(sys.argv[1]).shape[:2]; assert h > 0.7 * w, (w, h)" \
     "$TMP/plot/impact_map.png" || fail "(d) expected the complementarity row"
+  run impact-map --robot "$ROBOT" --out "$TMP/plot" "${GRID[@]}" --quiet
+  [[ $RC -eq 0 ]] || fail "(d) rerun into its own folder: exit $RC: $(cat "$TMP/err")"
 fi
 echo "impact-map CLI: all checks passed"

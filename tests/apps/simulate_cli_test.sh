@@ -130,8 +130,12 @@ if "$PY" -c "import matplotlib" 2>/dev/null; then
     for name in walk_stick walk_overview; do
       [[ -s "$TMP/at_zero/$name.png" ]] || fail "(c4) $at_zero: no $name.png"
     done
-    rm -rf "$TMP/at_zero"
   done
+  # The same command again replaces its own walk, pictures and all (they were once left off the
+  # folder's list of written files, and the rerun was refused).
+  run simulate --reference "$REF" --steps 3 --no-poincare --out "$TMP/at_zero" --cop-limit fail
+  [[ $RC -eq 0 ]] || fail "(c4) rerun into the walk's own folder: exit $RC: $(cat "$TMP/err")"
+  rm -rf "$TMP/at_zero"
 else
   echo "note: (c4) skipped: no matplotlib"
 fi

@@ -64,6 +64,22 @@ TEST_F(OutputFolderTest, AResultHoldingAFileGaitoptDidNotWriteIsRefused) {
   EXPECT_FALSE(fs::exists(path("res/report.html")));
 }
 
+// simulate and impact-map draw their pictures into the result once it is in place; unlisted,
+// they made the command's own next run refuse the folder.
+TEST_F(OutputFolderTest, PicturesDrawnIntoAPlacedResultKeepItReplaceable) {
+  {
+    const OutputFolder out(path("walk"), {});
+    out.write([](const std::string& d) { fillWith(d, "one"); });
+    put(path("walk/overview.png"), "picture");
+    fs::create_directories(path("walk/plots"));
+    put(path("walk/plots/forces.png"), "picture");
+    listAddedFiles(out.path());
+  }
+  OutputFolder(path("walk"), {}).write([](const std::string& d) { fillWith(d, "two"); });
+  EXPECT_EQ(slurp(path("walk/result.txt")), "two");
+  EXPECT_FALSE(fs::exists(path("walk/overview.png")));
+}
+
 // A walk written over an optimised gait took the gait with it: a result replaces only one of
 // its own kind (or of none: a folder written before markers named kinds).
 TEST_F(OutputFolderTest, AResultOfAnotherKindIsRefused) {
