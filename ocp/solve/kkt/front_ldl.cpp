@@ -20,11 +20,12 @@ struct Choice {
 
 class Front {
  public:
-  Front(Eigen::Ref<Eigen::MatrixXd> f, int fullySummed, const PivotTest& test, FrontPivots& result,
-        Eigen::MatrixXd& workspace)
-      : f_(f),
-        m_(static_cast<int>(f.rows())),
-        p_(fullySummed),
+  Front(Eigen::Ref<Eigen::MatrixXd> panel, Eigen::Ref<Eigen::MatrixXd> below, const PivotTest& test,
+        FrontPivots& result, Eigen::MatrixXd& workspace)
+      : f_(panel),
+        below_(below),
+        m_(static_cast<int>(panel.rows())),
+        p_(static_cast<int>(panel.cols())),
         u_(test.threshold),
         tiny_(test.tiny),
         w_(workspace),
@@ -180,11 +181,12 @@ class Front {
   void updateContribution() {
     const int below = m_ - p_;
     if (below == 0 || k_ == 0) return;
-    f_.bottomRightCorner(below, below).triangularView<Eigen::Lower>() -=
+    below_.triangularView<Eigen::Lower>() -=
         f_.block(p_, 0, below, k_) * w_.leftCols(k_).transpose();
   }
 
-  Eigen::Ref<Eigen::MatrixXd> f_;
+  Eigen::Ref<Eigen::MatrixXd> f_;      // the front's first p columns
+  Eigen::Ref<Eigen::MatrixXd> below_;  // f(p:, p:), the rows below the fully summed ones
   int m_, p_;
   double u_, tiny_;
   Eigen::MatrixXd& w_;  // rows below the fully summed ones of D L^T's pivot columns
@@ -194,9 +196,9 @@ class Front {
 
 }  // namespace
 
-void factorFront(Eigen::Ref<Eigen::MatrixXd> f, int fullySummed, bool root, const PivotTest& test,
-                 FrontPivots& result, Eigen::MatrixXd& workspace) {
-  Front(f, fullySummed, test, result, workspace).eliminate(root);
+void factorFront(Eigen::Ref<Eigen::MatrixXd> panel, Eigen::Ref<Eigen::MatrixXd> below, bool root,
+                 const PivotTest& test, FrontPivots& result, Eigen::MatrixXd& workspace) {
+  Front(panel, below, test, result, workspace).eliminate(root);
 }
 
 }  // namespace gaitopt::ocp::kkt
