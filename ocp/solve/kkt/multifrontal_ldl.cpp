@@ -99,6 +99,9 @@ int MultifrontalLdl::assemble(int s, const double* values) {
     const int mc = static_cast<int>(child.rows.size());
     childPlace_.resize(mc);
     for (int i = child.pivots; i < mc; ++i) childPlace_[i] = place_[child.rows[i]];
+    // In the parent's order (as a child that delayed no row is), a child's column lands in one
+    // column of the parent.
+    const bool inOrder = std::is_sorted(childPlace_.begin() + child.pivots, childPlace_.end());
     const double* packed = stack_.data() + stackStart_[c];
     for (int j = child.pivots; j < mc; ++j) {
       const int b = childPlace_[j];
@@ -108,7 +111,12 @@ int MultifrontalLdl::assemble(int s, const double* values) {
         v = child.matrix.col(j).data() + j;
       else
         packed += mc - j;
-      for (int i = j; i < mc; ++i) add(childPlace_[i], b, v[i - j]);
+      if (inOrder) {
+        double* column = diagonal_[b];
+        for (int i = j; i < mc; ++i) column[childPlace_[i] - b] += v[i - j];
+      } else {
+        for (int i = j; i < mc; ++i) add(childPlace_[i], b, v[i - j]);
+      }
     }
   }
   auto summed = panel.topLeftCorner(fullySummed, fullySummed);
