@@ -145,7 +145,8 @@ TEST(FrontLdl, EliminatesWithLBoundedByTheThresholdAndLeavesTheSchurComplement) 
     Eigen::MatrixXd f = a;
     FrontPivots piv;
     Eigen::MatrixXd workspace;
-    factorFront(f, p, false, {0.01, 1e-30}, piv, workspace);
+    factorFront(f.leftCols(p), f.bottomRightCorner(m - p, m - p), false, {0.01, 1e-30}, piv,
+                workspace);
     const int k = piv.pivots;
     delayed += p - k;
     Eigen::PermutationMatrix<Eigen::Dynamic> perm(m);
@@ -186,14 +187,14 @@ TEST(FrontLdl, ARootFrontEliminatesEveryRowEvenWithAZeroDiagonal) {
   Eigen::MatrixXd f = a;
   FrontPivots piv;
   Eigen::MatrixXd workspace;
-  factorFront(f, 3, true, {0.01, 1e-30}, piv, workspace);
+  factorFront(f, f.bottomRightCorner(0, 0), true, {0.01, 1e-30}, piv, workspace);
   EXPECT_EQ(piv.pivots, 3);
   EXPECT_EQ(piv.perturbed, 1) << "the matrix is singular: one pivot is clamped";
   Eigen::Matrix2d nonsingular;
   nonsingular << 0, 1, 1, 0;
   Eigen::MatrixXd f2 = nonsingular;
   FrontPivots p2;
-  factorFront(f2, 2, true, {0.01, 1e-30}, p2, workspace);
+  factorFront(f2, f2.bottomRightCorner(0, 0), true, {0.01, 1e-30}, p2, workspace);
   EXPECT_EQ(p2.pivots, 2);
   EXPECT_EQ(p2.perturbed, 0);
   EXPECT_EQ(p2.negative, 1);

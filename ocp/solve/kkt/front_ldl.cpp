@@ -1,6 +1,7 @@
 #include "ocp/solve/kkt/front_ldl.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <utility>
@@ -12,6 +13,21 @@ namespace {
 /// Bunch and Kaufman's (1977) alpha, (1 + sqrt(17)) / 8: it minimises the growth bound.
 const double kBunchKaufmanAlpha = (1.0 + std::sqrt(17.0)) / 8.0;
 
+/// The largest |x[i]| (0 if none), NaNs passed over. The largest of a set is the same in any
+/// order, so four running maxima hide the comparison's latency without changing a bit.
+double largestMagnitude(const double* x, int n) {
+  double m0 = 0, m1 = 0, m2 = 0, m3 = 0;
+  int i = 0;
+  for (; i + 4 <= n; i += 4) {
+    m0 = std::max(m0, std::abs(x[i]));
+    m1 = std::max(m1, std::abs(x[i + 1]));
+    m2 = std::max(m2, std::abs(x[i + 2]));
+    m3 = std::max(m3, std::abs(x[i + 3]));
+  }
+  for (; i < n; ++i) m0 = std::max(m0, std::abs(x[i]));
+  return std::max(std::max(m0, m1), std::max(m2, m3));
+}
+
 /// A pivot: row j alone, or rows j and r as a 2x2 block (r = -1 for a 1x1 pivot).
 struct Choice {
   int j = -1;
@@ -20,11 +36,12 @@ struct Choice {
 
 class Front {
  public:
-  Front(Eigen::Ref<Eigen::MatrixXd> f, int fullySummed, const PivotTest& test, FrontPivots& result,
-        Eigen::MatrixXd& workspace)
-      : f_(f),
-        m_(static_cast<int>(f.rows())),
-        p_(fullySummed),
+  Front(Eigen::Ref<Eigen::MatrixXd> panel, Eigen::Ref<Eigen::MatrixXd> below, const PivotTest& test,
+        FrontPivots& result, Eigen::MatrixXd& workspace)
+      : f_(panel),
+        below_(below),
+        m_(static_cast<int>(panel.rows())),
+        p_(static_cast<int>(panel.cols())),
         u_(test.threshold),
         tiny_(test.tiny),
         w_(workspace),
@@ -54,12 +71,17 @@ class Front {
   }
 
  private:
-  /// Largest |f(i, j)| over the active rows i >= k, skipping rows a and b.
+  /// Largest |f(i, j)| over the active rows i >= k, skipping rows a and b (-1: none).
   double columnMax(int j, int a, int b) const {
+    const double* column = f_.col(j).data();
     double largest = 0;
-    for (int i = k_; i < m_; ++i)
-      if (i != a && i != b) largest = std::max(largest, std::abs(f_(i, j)));
-    return largest;
+    int from = k_;
+    for (int skip : {std::min(a, b), std::max(a, b)}) {
+      if (skip < from) continue;
+      largest = std::max(largest, largestMagnitude(column + from, skip - from));
+      from = skip + 1;
+    }
+    return std::max(largest, largestMagnitude(column + from, m_ - from));
   }
   /// The fully summed active row other than j with the largest |f(i, j)| (-1 if all are zero).
   int strongestFullySummed(int j) const {
@@ -180,11 +202,12 @@ class Front {
   void updateContribution() {
     const int below = m_ - p_;
     if (below == 0 || k_ == 0) return;
-    f_.bottomRightCorner(below, below).triangularView<Eigen::Lower>() -=
+    below_.triangularView<Eigen::Lower>() -=
         f_.block(p_, 0, below, k_) * w_.leftCols(k_).transpose();
   }
 
-  Eigen::Ref<Eigen::MatrixXd> f_;
+  Eigen::Ref<Eigen::MatrixXd> f_;      // the front's first p columns
+  Eigen::Ref<Eigen::MatrixXd> below_;  // f(p:, p:), the rows below the fully summed ones
   int m_, p_;
   double u_, tiny_;
   Eigen::MatrixXd& w_;  // rows below the fully summed ones of D L^T's pivot columns
@@ -194,9 +217,9 @@ class Front {
 
 }  // namespace
 
-void factorFront(Eigen::Ref<Eigen::MatrixXd> f, int fullySummed, bool root, const PivotTest& test,
-                 FrontPivots& result, Eigen::MatrixXd& workspace) {
-  Front(f, fullySummed, test, result, workspace).eliminate(root);
+void factorFront(Eigen::Ref<Eigen::MatrixXd> panel, Eigen::Ref<Eigen::MatrixXd> below, bool root,
+                 const PivotTest& test, FrontPivots& result, Eigen::MatrixXd& workspace) {
+  Front(panel, below, test, result, workspace).eliminate(root);
 }
 
 }  // namespace gaitopt::ocp::kkt

@@ -36,12 +36,14 @@ struct PivotTest {
   double tiny = 0.0;
 };
 
-/// Eliminates what it can of the first `fullySummed` rows of the symmetric front `f`, whose
-/// fully summed block f(0:p, 0:p) is stored whole and the rest by its lower triangle. On return,
-/// f's first `pivots` columns hold L (unit diagonal implied; a 2x2 pivot's L entry is 0), and
-/// f(pivots:, pivots:) the lower triangle of the contribution block, delayed rows first.
+/// Eliminates what it can of the first p rows (its fully summed ones) of the symmetric m x m
+/// front f given as its first p columns `panel` = f(:, 0:p) and `below` = f(p:, p:), the rows
+/// below the fully summed ones: the fully summed block f(0:p, 0:p) is stored whole, the rest by
+/// its lower triangle. On return, the panel's first `pivots` columns hold L (unit diagonal
+/// implied; a 2x2 pivot's L entry is 0), and f(pivots:, pivots:) the lower triangle of the
+/// contribution block, delayed rows first (the delayed ones in the panel, the rest in `below`).
 /// `result` and `workspace` are overwritten; passing the same ones again saves allocations.
-void factorFront(Eigen::Ref<Eigen::MatrixXd> f, int fullySummed, bool root, const PivotTest& test,
-                 FrontPivots& result, Eigen::MatrixXd& workspace);
+void factorFront(Eigen::Ref<Eigen::MatrixXd> panel, Eigen::Ref<Eigen::MatrixXd> below, bool root,
+                 const PivotTest& test, FrontPivots& result, Eigen::MatrixXd& workspace);
 
 }  // namespace gaitopt::ocp::kkt

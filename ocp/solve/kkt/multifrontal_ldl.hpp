@@ -46,9 +46,11 @@ class MultifrontalLdl {
 
  private:
   /// One front: its rows (eliminated ones first, then the ones it delayed, then the rows below
-  /// it), and its matrix, which after the factorization holds L's columns for the eliminated
-  /// rows and, below and right of them, the contribution block its parent adds up (lower
-  /// triangle), read in place; and D^{-1}.
+  /// it), and its first `fullySummed` columns (the panel), which after the factorization hold
+  /// L's columns for the eliminated rows and, below and right of them, the delayed rows' part of
+  /// the contribution block its parent adds up (lower triangle), read in place; and D^{-1}. The
+  /// rest of the contribution block, the rows below the fully summed ones, waits on a stack
+  /// (multifrontal_ldl.cpp) until the parent is assembled.
   struct FrontFactor {
     std::vector<int> rows;
     int fullySummed = 0;
@@ -60,6 +62,7 @@ class MultifrontalLdl {
   void equilibrate(const double* values);
   int assemble(int s, const double* values);
   void factorizeFront(int s, const double* values, const PivotTest& test);
+  void pushContribution(int s, int rows);
 
   SymmetricPattern pattern_;
   AssemblyTree tree_;
@@ -67,8 +70,17 @@ class MultifrontalLdl {
   std::vector<std::vector<int>> children_;
   std::vector<FrontFactor> factors_;
   std::vector<int> place_;              // row -> its place in the front being assembled
+  std::vector<int> childPlace_;         // a child's row -> its place in that front
+  std::vector<double*> diagonal_;       // that front's column j from its diagonal down
   std::vector<double> scale_, scaled_;  // S, and the values of S A S
-  Eigen::MatrixXd workspace_;           // factorFront's
+  /// The front being factorized's rows below its fully summed ones, by columns (square).
+  std::vector<double> below_;
+  /// The contribution blocks' rows below their fronts' fully summed ones, waiting for their
+  /// parents: each one's lower triangle packed by columns, from stackStart_[s].
+  std::vector<double> stack_;
+  std::vector<size_t> stackStart_;
+  size_t stackTop_ = 0;
+  Eigen::MatrixXd workspace_;  // factorFront's
   FrontPivots pivots_;
   std::vector<int> permuted_;
   mutable std::vector<double> work_;
