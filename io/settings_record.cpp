@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 
 #include <fmt/format.h>
@@ -22,13 +23,31 @@ std::string shown(const nlohmann::ordered_json& object, const std::string& key) 
 
 }  // namespace
 
+std::string textFingerprint(const std::string& text) {
+  std::uint64_t hash = 14695981039346656037ULL;  // FNV-1a offset basis and prime
+  for (const char c : text) hash = (hash ^ static_cast<unsigned char>(c)) * 1099511628211ULL;
+  return fmt::format("{:016x}", hash);
+}
+
 std::string fileFingerprint(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw config::ConfigError(path, "", 0, "cannot read it");
-  std::uint64_t hash = 14695981039346656037ULL;  // FNV-1a offset basis and prime
-  for (std::istreambuf_iterator<char> it(in), end; it != end; ++it)
-    hash = (hash ^ static_cast<unsigned char>(*it)) * 1099511628211ULL;
-  return fmt::format("{:016x}", hash);
+  return textFingerprint({std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()});
+}
+
+std::string summaryFingerprint(const std::string& path) {
+  nlohmann::ordered_json summary = readStrictJson(path);
+  const std::function<void(nlohmann::ordered_json&)> dropTimes = [&](nlohmann::ordered_json& j) {
+    if (j.is_object()) {
+      j.erase("wall_time_s");
+      j.erase("callback_time_s");
+    }
+    if (j.is_structured())
+      for (auto& child : j) dropTimes(child);
+  };
+  dropTimes(summary);
+  if (summary.is_object()) summary.erase("config");
+  return textFingerprint(summary.dump());
 }
 
 void claimSettings(const std::string& path, const nlohmann::ordered_json& settings) {

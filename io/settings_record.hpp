@@ -19,4 +19,13 @@ void claimSettings(const std::string& path, const nlohmann::ordered_json& settin
 /// config::ConfigError when it cannot be read.
 std::string fileFingerprint(const std::string& path);
 
+/// fileFingerprint of a text's bytes.
+std::string textFingerprint(const std::string& text);
+
+/// A fingerprint of what a result's summary.json says of the result: the file without the
+/// times the run measured ("wall_time_s", "callback_time_s" at any depth) and the config's path
+/// as typed ("config"), which differ from run to run of the same result. @throws
+/// config::ConfigError when it cannot be read or is not JSON.
+std::string summaryFingerprint(const std::string& path);
+
 }  // namespace gaitopt::io

@@ -192,10 +192,11 @@ nlohmann::ordered_json sweepFolderSettings(const ScenarioSettings& s, const Refe
   j["robot"] = ref.model.name();
   j["robot_file_fnv1a"] = io::fileFingerprint(ref.robot_path);
   j["reference_trajectory_fnv1a"] = io::fileFingerprint(ref.dir + "/trajectory.csv");
-  // summary.json carries the switch states and the slope the reference is walked with.
+  // summary.json carries the switch states and the slope the reference is walked with; the
+  // same gait solved again (another wall time) walks the same rows.
   const std::string summary = ref.dir + "/summary.json";
   j["reference_summary_fnv1a"] =
-      std::filesystem::exists(summary) ? io::fileFingerprint(summary) : "(absent)";
+      std::filesystem::exists(summary) ? io::summaryFingerprint(summary) : "(absent)";
   j["ground_file_fnv1a"] = io::fileFingerprint(groundPath(s.ground));
   j["friction"] = s.friction;
   j["poincare"] = base.poincare;

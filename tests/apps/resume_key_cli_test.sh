@@ -133,6 +133,11 @@ STABILITY_FREE=("${COMMON_FREE[@]}"
 )
 prove stability BASE STABILITY_KEYED STABILITY_FREE "0 points to walk (2 done before)"
 [[ $(md5sum <s/sweep_push.csv) == "$rows" ]] || { echo "FAIL stability: the rows changed" && FAILED=1; }
+# The reference made again, the same gait with another wall time in its summary.json, resumes.
+run poly --robot "$ROBOT" --gait "$GAIT" --no-plots --rate 100 --out gait
+[[ $RC -eq 0 ]] || fail "poly again: $(cat "$TMP/err")"
+rerun stability BASE
+resumed "stability on its reference made again" "0 points to walk (2 done before)"
 
 # --set is keyed by content, not by its text: reordered or written otherwise (0.10 for 0.1, 1e-3
 # for 0.001) resumes; another value is refused naming config_overrides.

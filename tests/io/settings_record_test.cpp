@@ -38,6 +38,24 @@ TEST_F(SettingsTest, FingerprintFollowsContentNotName) {
   EXPECT_EQ(fileFingerprint(path("empty")), "cbf29ce484222325");  // the FNV-1a offset basis
 }
 
+// The same gait solved again differs in its measured times and perhaps in how its config's path
+// was typed; a stability folder keyed by the whole summary.json refused to resume on it.
+TEST_F(SettingsTest, ASummaryIsKeyedWithoutTheTimesARunMeasured) {
+  put(path("a.json"),
+      R"({"config": "a.yaml", "cost": 1.5, "wall_time_s": 0.1, "callback_time_s": 0.01,
+          "stages": [{"cost": 1.5, "wall_time_s": 0.1}]})");
+  put(path("b.json"),
+      R"({"config": "../b.yaml", "cost": 1.5, "wall_time_s": 0.2, "callback_time_s": 0.02,
+          "stages": [{"cost": 1.5, "wall_time_s": 0.2}]})");
+  put(path("c.json"), R"({"config": "a.yaml", "cost": 1.6, "wall_time_s": 0.1,
+          "callback_time_s": 0.01, "stages": [{"cost": 1.5, "wall_time_s": 0.1}]})");
+  put(path("d.json"), R"({"config": "a.yaml", "cost": 1.5, "wall_time_s": 0.1,
+          "callback_time_s": 0.01, "stages": [{"cost": 1.7, "wall_time_s": 0.1}]})");
+  EXPECT_EQ(summaryFingerprint(path("a.json")), summaryFingerprint(path("b.json")));
+  EXPECT_NE(summaryFingerprint(path("a.json")), summaryFingerprint(path("c.json")));
+  EXPECT_NE(summaryFingerprint(path("a.json")), summaryFingerprint(path("d.json")));
+}
+
 TEST(StrictJson, DuplicateKeyIsRefusedAtAnyDepthButNotAcrossObjects) {
   EXPECT_THROW(parseStrictJson<nlohmann::json>(R"({"theta": [1], "theta": [2]})", "s.json"),
                config::ConfigError);
