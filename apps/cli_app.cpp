@@ -1,6 +1,7 @@
 #include "apps/cli_app.hpp"
 
 #include <string>
+#include <vector>
 
 #include "apps/commands/compare_command.hpp"
 #include "apps/commands/export_urdf_command.hpp"
@@ -20,8 +21,34 @@
 namespace gaitopt::apps {
 namespace {
 
+/// The words of the command line no option or command took, joined by spaces.
+std::string unrecognised(const CLI::App* app) {
+  std::string words;
+  for (const std::string& w : app->remaining()) words += (words.empty() ? "" : " ") + w;
+  return words;
+}
+
+/// CLI11 checks what is required before it reports what it could not take, so a mistyped
+/// command or required option ('optimise', '--confg') was reported only as missing the right one.
+std::string withUnrecognised(const CLI::App* app, const CLI::Error& e) {
+  const std::string what = io::printable(e.what());
+  if (dynamic_cast<const CLI::RequiredError*>(&e) == nullptr) return what;
+  const std::vector<CLI::App*> chosen = app->get_subcommands();
+  const CLI::App* command = chosen.empty() ? app : chosen.front();
+  const std::vector<std::string> words = command->remaining();
+  if (words.empty()) return what;
+  if (chosen.empty() && words.front().front() != '-') {
+    std::string commands;
+    for (const CLI::App* sub : app->get_subcommands({}))
+      commands += (commands.empty() ? "" : ", ") + sub->get_name();
+    return io::printable("unknown command '" + words.front() + "'; the commands: " + commands);
+  }
+  return io::printable("not an option of " + command->get_name() + ": " + unrecognised(command)) +
+         "; " + what;
+}
+
 std::string failureMessage(const CLI::App* app, const CLI::Error& e) {
-  return "error: " + io::printable(e.what()) + "\nRun '" + app->get_name() +
+  return "error: " + withUnrecognised(app, e) + "\nRun '" + app->get_name() +
          " --help' for more information.\n";
 }
 

@@ -130,6 +130,11 @@ expect "CSV NaN" 2 "nan_csv/trajectory.csv:5: key 'theta1': non-finite value 'na
 # Command-line mistakes: an unknown flag, values out of range or not numbers.
 poly --robot "$ROBOT" --gait "$GAIT" --bogus
 expect "unknown flag" 2 "The following argument was not expected: --bogus"
+# A mistyped command or required option is named, not only the one it left missing.
+run optimise --config "$OCP"
+expect "mistyped command" 2 "unknown command 'optimise'; the commands: .*optimize"
+run optimize --confg "$OCP" --out "$TMP/out_dir"
+expect "mistyped required option" 2 "not an option of optimize: --confg .*; --config is required"
 poly --robot "$ROBOT" --gait "$GAIT" --rate 0
 expect "rate 0" 2 "--rate: expected a number in \[1, 1e\+06\] \[Hz\], got 0"
 poly --robot "$ROBOT" --gait "$GAIT" --rate fast
