@@ -135,8 +135,20 @@ class Sweep:
         lo, hi = self.walks
         if hi == lo:
             where = "the nominal value" if lo == self.nominal else "one value"
-            return f"walks only at {where} {self.format(lo)}"
-        return f"walks from {self.format(lo)} to {self.format(hi)}"
+            text = f"walks only at {where} {self.format(lo)}"
+        else:
+            text = f"walks from {self.format(lo)} to {self.format(hi)}"
+        return text + self.beyond_text()
+
+    def beyond_text(self):
+        """The walked values the interval around the nominal does not reach, if any: a sweep
+        can walk again past the values it fell at."""
+        lo, hi = self.walks
+        v = self.value[self.walked & ((self.value < lo) | (self.value > hi))]
+        if len(v) == 0:
+            return ""
+        span = self.format(v[0]) if len(v) == 1 else f"{v[0]:g} .. {self.format(v[-1])}"
+        return f"; beyond the falls it walks at {len(v)} more ({span})"
 
     def label(self):
         """Axis label: the parameter and its unit."""

@@ -234,11 +234,17 @@ edit "$TMP/stab2/summary.json" "import json; d = json.loads(text); d['reference'
 edit "$TMP/stab2/sweep_push.csv" "text = text.replace('0,10,10,0,,', '0,2,10,1,fell,')"
 (cd "$PLOTS" && "$PY" - "$TMP/stab2" <<'PY') || fail "(c2) sweep words and axes"
 import sys
+import numpy as np
 import stability_plots as sp
 s, (friction, push) = sp.read_sweeps(sys.argv[1])
 assert friction.log_spaced() and not push.log_spaced()
 assert friction.interval_text() == "falls at the nominal 0.1; walks at 2 of 3 values (0.3 .. 0.9)", friction.interval_text()
 assert push.interval_text() == "falls at every tested value (3 values)", push.interval_text()
+# A sweep that walks again past the values it fell at says so (its title said "walks only at
+# the nominal value 0" over green walks at +0.8 .. +1).
+friction.walks, friction.nominal = (0.3, 0.3), 0.3
+friction.walked = np.array([True, True, True])
+assert friction.interval_text() == "walks only at the nominal value 0.3; beyond the falls it walks at 2 more (0.1 .. 0.9)", friction.interval_text()
 assert sp.headline(s).startswith("Stability sweeps: gait gait_x, computed_torque controller"), sp.headline(s)
 # Two sweeps of one gait at other gains or another CoP rule do not share a title.
 s2 = dict(s, gain_scale=0.3, contact_rules={"cop_limit": "fail"})
@@ -246,7 +252,6 @@ assert "computed_torque controller at 0.3 x its gains, CoP limit: fail" in sp.he
 assert " x its gains" not in sp.headline(dict(s, gain_scale=1.0)), sp.headline(s)
 # summary.json's `geometric` decides the axis, also where the nominal inserted breaks the ratio
 # (a pad's 3e5 in stiffness=1e5:1e7:3, drawn linear by the ratio test).
-import numpy as np
 friction.value = np.array([1e5, 3e5, 1e6, 1e7])
 assert not friction.log_spaced()  # no `geometric`: by the ratio
 friction.geometric = True
