@@ -155,6 +155,10 @@ ReportContent collectReport(const std::string& dir, const std::string& robot_pat
     animateLibraryPoint(c, dir, robot_path);
     return c;
   }
+  if (has(dir, "comparison.md"))
+    throw config::ConfigError(dir, "", 0,
+                              "a comparison (gaitopt compare) has no page of its own: open its "
+                              "comparison.md, or report each gait it compares");
   if (!has(dir, "summary.json"))
     throw config::ConfigError(dir, "", 0,
                               "not a gaitopt result folder: no summary.json or library.json");

@@ -189,4 +189,13 @@ grep -qF "$want'mu2004_five_link'" "$TMP/err" || fail "(f) message: $(cat "$TMP/
 run report --robot configs/robots/mu2004_five_link.yaml "$TMP/sweep"
 [[ $RC -eq 2 ]] || fail "(f) exit $RC with --robot of the reference's robot"
 grep -q "the sweep walked robot 'rabbit'" "$TMP/err" || fail "(f) message: $(cat "$TMP/err")"
+
+# (g) a comparison has no page: the message says so and where to look, not "not a gaitopt
+# result folder".
+cp -r "$TMP/poly" "$TMP/poly_copy"
+run compare "$TMP/poly" "$TMP/poly_copy" --out "$TMP/cmp"
+[[ $RC -eq 0 ]] || fail "(g) compare exited $RC: $(cat "$TMP/err")"
+run report "$TMP/cmp"
+[[ $RC -eq 2 ]] && grep -q "a comparison (gaitopt compare) has no page of its own: open its comparison.md" "$TMP/err" ||
+  fail "(g) exit $RC: $(cat "$TMP/err")"
 echo "report_cli_test: all checks passed"
