@@ -1,11 +1,14 @@
 #include "apps/commands/impact_map_command.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
+#include <string_view>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -24,6 +27,18 @@
 namespace gaitopt::apps {
 namespace {
 
+/// The grid's checks name its axes as the library does ("knee_bias: ..."); the command line
+/// names them by their options.
+std::string withOptionNames(const std::string& message) {
+  static const std::array<std::pair<std::string_view, std::string_view>, 3> kOptions = {
+      {{"step_length:", "--step-lengths:"},
+       {"knee_bias:", "--knee-bias:"},
+       {"approach_angle:", "--approach-angles:"}}};
+  for (const auto& [axis, option] : kOptions)
+    if (message.rfind(axis, 0) == 0) return std::string(option) + message.substr(axis.size());
+  return message;
+}
+
 gaits::ImpactGrid parseGrid(const ImpactMapOptions& o, const dynamics::Model& model) {
   gaits::ImpactGrid grid;
   grid.axes = {gaits::parseRange(o.step_lengths, "--step-lengths", 1.0),
@@ -41,7 +56,7 @@ gaits::ImpactGrid parseGrid(const ImpactMapOptions& o, const dynamics::Model& mo
   try {
     gaits::checkImpactGrid(model, grid);
   } catch (const std::invalid_argument& e) {
-    throw config::ConfigError("command line", "", 0, e.what());
+    throw config::ConfigError("command line", "", 0, withOptionNames(e.what()));
   }
   return grid;
 }

@@ -48,7 +48,7 @@ bad c2 "not a finite number" --knee-bias nan:30:3
 bad c3 "first < last" --approach-angles 120:60:3
 # equal ends and a count above 1: the one point mapped three times, counted three times
 bad c3b "first < last, or first = last when count is 1" --approach-angles 90:90:3
-bad c4 "outside the open range (0, 180) deg" --knee-bias 0:30:4
+bad c4 "--knee-bias: 0..30 deg outside the open range (0, 180) deg" --knee-bias 0:30:4
 bad c5 "outside the open range (0, 180) deg" --approach-angles 10:180:5
 bad c6 "longer than the legs reach" --step-lengths 0.5:1.3:3
 bad c7 "expected a:b:n or a" --step-lengths 0.1:0.9
