@@ -13,13 +13,8 @@
 # (plots/dart_side_by_side_chart.py: the steps and both intervals per gait and ground).
 # Usage: scripts/dart_side_by_side.sh BUILD_DIR OUT_DIR   (from the repository root; ~5 minutes)
 set -euo pipefail
-build=${1:?usage: $0 BUILD_DIR OUT_DIR}
-out=${2:?usage: $0 BUILD_DIR OUT_DIR}
-bin="$build/apps/gaitopt"
-[[ -x "$bin" ]] || { echo "error: $bin not built" >&2; exit 1; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-mkdir -p "$out"
+# shellcheck source=scripts/study_setup.sh
+source "$(dirname "$0")/study_setup.sh"
 "$bin" poly --robot configs/robots/mu2004_five_link.yaml --gait configs/gaits/mu2004.yaml \
   --out "$work/poly" --no-plots >/dev/null
 for config in mu2004_walk mu2004_walk_robust mu2004_walk_ensemble rabbit_kelly2017; do

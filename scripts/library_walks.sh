@@ -8,13 +8,8 @@
 # 2 cores.
 # Usage: scripts/library_walks.sh BUILD_DIR OUT_DIR   (run from the repository root)
 set -euo pipefail
-build=${1:?usage: $0 BUILD_DIR OUT_DIR}
-out=${2:?usage: $0 BUILD_DIR OUT_DIR}
-bin="$build/apps/gaitopt"
-[[ -x "$bin" ]] || { echo "error: $bin not built" >&2; exit 1; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-mkdir -p "$out"
+# shellcheck source=scripts/study_setup.sh
+source "$(dirname "$0")/study_setup.sh"
 echo "rate_hz,mass_error,point,steps,failure" >"$out/walks.csv"
 for rate in 250 1000; do
   "$bin" library --config configs/library/mu2004_speed_step.yaml --rate "$rate" --quiet \
