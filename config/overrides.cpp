@@ -50,8 +50,14 @@ std::vector<Step> stepsOf(const Override& o) {
 /// The child of `node` at `step` (a mapping is created where the path names a missing key).
 YAML::Node childOf(YAML::Node& node, const Step& step, const Override& o) {
   if (step.index >= 0) {
-    if (!node.IsSequence() || static_cast<std::size_t>(step.index) >= node.size())
-      refuse(o, fmt::format("there is no list item [{}] there", step.index));
+    if (!node.IsSequence())
+      refuse(o,
+             fmt::format("there is no list item [{}] there: the value is not a list", step.index));
+    if (static_cast<std::size_t>(step.index) >= node.size())
+      refuse(o, fmt::format("there is no list item [{}] there: {}", step.index,
+                            node.size() == 0 ? std::string("the list is empty")
+                                             : fmt::format("the list has {} item(s), [0] to [{}]",
+                                                           node.size(), node.size() - 1)));
     return node[step.index];
   }
   if (!node.IsMap() && !node.IsNull()) refuse(o, "the path runs through a value, not a mapping");

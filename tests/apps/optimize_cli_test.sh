@@ -197,7 +197,7 @@ run optimize --config "$C" --set 'phases[0].segments=0' --out "$TMP/v" --quiet -
 [[ $RC -eq 2 ]] && grep -q -- "--set phases\[0\].segments=0.*expected a number in \[1, 1000\]" "$TMP/err" ||
   fail "(h) a bad --set value: exit $RC: $(cat "$TMP/err")"
 run optimize --config "$C" --set 'phases[2].segments=8' --out "$TMP/v" --quiet --no-plots
-[[ $RC -eq 2 ]] && grep -q "there is no list item \[2\]" "$TMP/err" ||
+[[ $RC -eq 2 ]] && grep -q "there is no list item \[2\] there: the list has 2 item(s), \[0\] to \[1\]" "$TMP/err" ||
   fail "(h) --set past a list's end: exit $RC: $(cat "$TMP/err")"
 [[ ! -e $TMP/v ]] || fail "(h) a refused --set wrote a folder"
 
