@@ -20,7 +20,7 @@ struct Step {
 };
 
 [[noreturn]] void refuse(const Override& o, const std::string& why) {
-  throw ConfigError("--set", o.key, 0, fmt::format("'{}': {}", o.text(), why));
+  throw ConfigError(o.option, o.key, 0, fmt::format("'{}': {}", o.text(), why));
 }
 
 /// "a.b[2].c" as a, b, [2], c.
@@ -83,7 +83,7 @@ Override parseOverride(const std::string& text, const std::string& option) {
   if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
     throw ConfigError(option, text, 0,
                       "expected KEY=VALUE, e.g. " + option + " constraints.friction_margin=0.2");
-  return {text.substr(0, eq), text.substr(eq + 1)};
+  return {text.substr(0, eq), text.substr(eq + 1), "", option};
 }
 
 std::vector<Override> parseOverrides(const std::vector<std::string>& texts,
@@ -101,10 +101,11 @@ std::vector<Override> scopedOverrides(const std::vector<std::string>& texts,
     const std::size_t dot = o.key.find('.');
     const std::string prefix = o.key.substr(0, dot);
     if (dot == std::string::npos || std::find(scopes.begin(), scopes.end(), prefix) == scopes.end())
-      throw ConfigError("--set", o.key, 0,
+      throw ConfigError(o.option, o.key, 0,
                         fmt::format("'{}': the key starts with the file it sets: {}.KEY", o.text(),
                                     fmt::join(scopes, ".KEY or ")));
-    if (prefix == scope) overrides.push_back({o.key.substr(dot + 1), o.value, prefix + "."});
+    if (prefix == scope)
+      overrides.push_back({o.key.substr(dot + 1), o.value, prefix + ".", o.option});
   }
   return overrides;
 }

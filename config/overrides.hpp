@@ -12,9 +12,10 @@
 namespace gaitopt::config {
 
 struct Override {
-  std::string key;         ///< e.g. "constraints.friction_margin", "phases[0].segments"
-  std::string value;       ///< YAML text: a number, a word, a list "[0.1, 0.2]", ...
-  std::string scope = "";  ///< the file a scoped --set named ("robot.", scopedOverrides)
+  std::string key;               ///< e.g. "constraints.friction_margin", "phases[0].segments"
+  std::string value;             ///< YAML text: a number, a word, a list "[0.1, 0.2]", ...
+  std::string scope = "";        ///< the file a scoped --set named ("robot.", scopedOverrides)
+  std::string option = "--set";  ///< how the caller named it, for messages ("set" in Python)
   /// As the user wrote it, for messages.
   std::string text() const { return scope + key + "=" + value; }
 };

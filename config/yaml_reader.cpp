@@ -55,7 +55,7 @@ YamlReader YamlReader::fromFile(const std::string& path, const std::vector<Overr
   if (overrides.empty()) return YamlReader(path, root, "");
   applyOverrides(root, overrides);
   std::vector<std::string> texts;
-  for (const Override& o : overrides) texts.push_back("--set " + o.text());
+  for (const Override& o : overrides) texts.push_back(o.option + " " + o.text());
   return YamlReader(fmt::format("{} ({})", path, fmt::join(texts, ", ")), root, "");
 }
 

@@ -34,7 +34,7 @@ py::dict optimize(const std::filesystem::path& config_file, double rate_hz,
   const std::string config_path = config_file.string();
   config::requireInRange(config::kSampleRate, rate_hz, "rate_hz");
   ocp::OcpConfig config =
-      ocp::loadOcpConfig(io::shippedIfMissing(config_path), config::parseOverrides(set));
+      ocp::loadOcpConfig(io::shippedIfMissing(config_path), config::parseOverrides(set, "set"));
   const dynamics::Model model = ocp::problemModel(config);
   ocp::requireReachable(model, config, config_path);
   config.solver.progress = false;

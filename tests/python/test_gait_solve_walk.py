@@ -148,6 +148,13 @@ def test_errors_carry_the_cli_exit_codes(robot, tmp_path):
     with pytest.raises(gaitopt.InputError) as info:
         gaitopt.optimize(str(tmp_path / "missing.yaml"))
     assert info.value.exit_code == 2
+    # A bad value of set= is named as Python's argument, not as the CLI's --set.
+    config = str(ROOT / "configs/ocp/mu2004_walk.yaml")
+    with pytest.raises(gaitopt.InputError, match=r"\(set constraints.friction_margin=-1\)") as info:
+        gaitopt.optimize(config, set=["constraints.friction_margin=-1"])
+    assert "--set" not in str(info.value)
+    with pytest.raises(gaitopt.InputError, match=r"^set: key 'phases\[5\].segments'"):
+        gaitopt.optimize(config, set=["phases[5].segments=3"])
     with pytest.raises(gaitopt.InputError, match="steps"):
         gaitopt.simulate(robot, gaitopt.design_poly(robot, str(ROOT / "configs/gaits/mu2004.yaml")),
                          steps=0)
