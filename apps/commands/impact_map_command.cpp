@@ -1,14 +1,11 @@
 #include "apps/commands/impact_map_command.hpp"
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
-#include <string_view>
-#include <utility>
 
 #include <fmt/format.h>
 
@@ -27,18 +24,6 @@
 namespace gaitopt::apps {
 namespace {
 
-/// The grid's checks name its axes as the library does ("knee_bias: ..."); the command line
-/// names them by their options.
-std::string withOptionNames(const std::string& message) {
-  static const std::array<std::pair<std::string_view, std::string_view>, 3> kOptions = {
-      {{"step_length:", "--step-lengths:"},
-       {"knee_bias:", "--knee-bias:"},
-       {"approach_angle:", "--approach-angles:"}}};
-  for (const auto& [axis, option] : kOptions)
-    if (message.rfind(axis, 0) == 0) return std::string(option) + message.substr(axis.size());
-  return message;
-}
-
 gaits::ImpactGrid parseGrid(const ImpactMapOptions& o, const dynamics::Model& model) {
   gaits::ImpactGrid grid;
   grid.axes = {gaits::parseRange(o.step_lengths, "--step-lengths", 1.0),
@@ -54,9 +39,9 @@ gaits::ImpactGrid parseGrid(const ImpactMapOptions& o, const dynamics::Model& mo
   requireGridFits(static_cast<double>(grid.axes[0].count) * grid.axes[1].count * grid.axes[2].count,
                   1024, "command line (--step-lengths x --knee-bias x --approach-angles)");
   try {
-    gaits::checkImpactGrid(model, grid);
+    gaits::checkImpactGrid(model, grid, {"--step-lengths", "--knee-bias", "--approach-angles"});
   } catch (const std::invalid_argument& e) {
-    throw config::ConfigError("command line", "", 0, withOptionNames(e.what()));
+    throw config::ConfigError("command line", "", 0, e.what());
   }
   return grid;
 }

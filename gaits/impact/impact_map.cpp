@@ -12,10 +12,7 @@
 namespace gaitopt::gaits {
 namespace {
 
-constexpr std::array<const char*, 3> kAxisNames = {"step_length", "knee_bias", "approach_angle"};
-
-void checkAxis(const GridAxis& a, MapAxis which) {
-  const char* name = kAxisNames[static_cast<size_t>(which)];
+void checkAxis(const GridAxis& a, MapAxis which, std::string_view name) {
   const bool angle = which != MapAxis::kStepLength;
   const double unit = angle ? kDeg : 1.0;
   const char* unit_name = angle ? "deg" : "m";
@@ -55,9 +52,10 @@ ImpactPostureParams ImpactGrid::params(const std::array<int, 3>& k) const {
   return {axes[0].value(k[0]), axes[1].value(k[1]), axes[2].value(k[2]), approach_speed};
 }
 
-void checkImpactGrid(const dynamics::Model& model, const ImpactGrid& grid) {
+void checkImpactGrid(const dynamics::Model& model, const ImpactGrid& grid,
+                     const ImpactAxisNames& names) {
   for (MapAxis a : {MapAxis::kStepLength, MapAxis::kKneeBias, MapAxis::kApproachAngle})
-    checkAxis(grid.axis(a), a);
+    checkAxis(grid.axis(a), a, names[static_cast<size_t>(a)]);
   if (!(grid.approach_speed > 0 && std::isfinite(grid.approach_speed)))
     throw std::invalid_argument(
         fmt::format("approach_speed: {} m/s must be positive", grid.approach_speed));
@@ -66,7 +64,7 @@ void checkImpactGrid(const dynamics::Model& model, const ImpactGrid& grid) {
   const double longest = grid.axis(MapAxis::kStepLength).last;
   if (!(longest < maxImpactStepLength(model, sigma)))
     throw std::invalid_argument(fmt::format(
-        "step_length: {:.6g} m is longer than the legs reach at knee bias {:.6g} deg (< {:.4f} m)",
+        "{}: {:.6g} m is longer than the legs reach at knee bias {:.6g} deg (< {:.4f} m)", names[0],
         longest, sigma / kDeg, maxImpactStepLength(model, sigma)));
 }
 
