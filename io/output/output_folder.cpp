@@ -172,6 +172,14 @@ std::string unlistedFile(const fs::path& dir) {
   return unlisted.empty() ? "" : unlisted.front();
 }
 
+/// Adds a "written:" line for each of `files` to the marker.
+void appendWritten(const fs::path& marker, const std::vector<std::string>& files) {
+  std::ifstream in(marker);
+  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  for (const std::string& f : files) text += kWrittenLine + f + "\n";
+  writeFile(marker.string(), text);
+}
+
 /// Whether `dir` holds anything besides the marker and `claim`, while `claim` is missing.
 bool holdsAnotherResult(const fs::path& dir, const std::string& claim) {
   std::error_code ec;
@@ -305,27 +313,16 @@ void addWrittenFile(const std::string& dir, const std::string& file) {
   if (!fs::is_regular_file(marker, ec)) return;
   const std::vector<std::string> written = markerLines(marker, kWrittenLine);
   if (written.empty() || std::find(written.begin(), written.end(), file) != written.end()) return;
-  std::ifstream in(marker);
-  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  writeFile(marker.string(), text + kWrittenLine + file + "\n");
+  appendWritten(marker, {file});
 }
 
 void listAddedFiles(const std::string& dir) {
   const std::vector<std::string> added = unlistedFiles(dir);
-  if (added.empty()) return;
-  const fs::path marker = fs::path(dir) / kMarker;
-  std::ifstream in(marker);
-  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  for (const std::string& f : added) text += kWrittenLine + f + "\n";
-  writeFile(marker.string(), text);
+  if (!added.empty()) appendWritten(fs::path(dir) / kMarker, added);
 }
 
 void listWrittenFiles(const std::string& dir) {
-  const fs::path marker = fs::path(dir) / kMarker;
-  std::ifstream in(marker);
-  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  for (const std::string& f : filesUnder(dir)) text += kWrittenLine + f + "\n";
-  writeFile(marker.string(), text);
+  appendWritten(fs::path(dir) / kMarker, filesUnder(dir));
 }
 
 void removeIfOurs(const std::string& dir) {
