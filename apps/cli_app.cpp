@@ -3,6 +3,9 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include "apps/commands/compare_command.hpp"
 #include "apps/commands/export_urdf_command.hpp"
 #include "apps/commands/impact_map_command.hpp"
@@ -21,13 +24,6 @@
 namespace gaitopt::apps {
 namespace {
 
-/// The words of the command line no option or command took, joined by spaces.
-std::string unrecognised(const CLI::App* app) {
-  std::string words;
-  for (const std::string& w : app->remaining()) words += (words.empty() ? "" : " ") + w;
-  return words;
-}
-
 /// CLI11 checks what is required before it reports what it could not take, so a mistyped
 /// command or required option ('optimise', '--confg') was reported only as missing the right one.
 std::string withUnrecognised(const CLI::App* app, const CLI::Error& e) {
@@ -43,7 +39,8 @@ std::string withUnrecognised(const CLI::App* app, const CLI::Error& e) {
       commands += (commands.empty() ? "" : ", ") + sub->get_name();
     return io::printable("unknown command '" + words.front() + "'; the commands: " + commands);
   }
-  return io::printable("not an option of " + command->get_name() + ": " + unrecognised(command)) +
+  return io::printable(
+             fmt::format("not an option of {}: {}", command->get_name(), fmt::join(words, " "))) +
          "; " + what;
 }
 

@@ -3,7 +3,6 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <iterator>
 
 #include <fmt/format.h>
@@ -19,6 +18,16 @@ namespace {
 std::string shown(const nlohmann::ordered_json& object, const std::string& key) {
   if (!object.contains(key)) return "(absent)";
   return printable(object[key].dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+}
+
+/// Removes the times a run measured, at any depth.
+void dropMeasuredTimes(nlohmann::ordered_json& j) {
+  if (j.is_object()) {
+    j.erase("wall_time_s");
+    j.erase("callback_time_s");
+  }
+  if (j.is_structured())
+    for (auto& child : j) dropMeasuredTimes(child);
 }
 
 }  // namespace
@@ -37,15 +46,7 @@ std::string fileFingerprint(const std::string& path) {
 
 std::string summaryFingerprint(const std::string& path) {
   nlohmann::ordered_json summary = readStrictJson(path);
-  const std::function<void(nlohmann::ordered_json&)> dropTimes = [&](nlohmann::ordered_json& j) {
-    if (j.is_object()) {
-      j.erase("wall_time_s");
-      j.erase("callback_time_s");
-    }
-    if (j.is_structured())
-      for (auto& child : j) dropTimes(child);
-  };
-  dropTimes(summary);
+  dropMeasuredTimes(summary);
   if (summary.is_object()) summary.erase("config");
   return textFingerprint(summary.dump());
 }
