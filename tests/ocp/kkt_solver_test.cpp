@@ -297,6 +297,44 @@ TEST(KktSolver, RefinesTheSolutionAgainstTheMatrixItIsGivenToIpoptsResidualRatio
   EXPECT_LT(ratio, 1e-10);  // Ipopt's residual_ratio_max
 }
 
+/// A solve of `a` scaled by `scale` with the factors of `a`, as factors that lost digits are:
+/// each refinement step multiplies the error by 1 - scale (A^-1 (scale A) = scale I). Returns
+/// the residual ratio reached and sets the refinement steps and the pivoting factorizations
+/// the solve added.
+double solveWithScaledFactors(const AugmentedSystem& a, double scale, int& steps, int& pivoting) {
+  const Lower l = lowerOf(a.dense);
+  KktSolver solver(l.pattern);
+  solver.factorize(l.values.data());
+  std::vector<double> scaled = l.values;
+  for (double& v : scaled) v *= scale;
+  std::srand(5);  // Eigen's Random draws from std::rand
+  const Eigen::VectorXd b = Eigen::VectorXd::Random(a.n());
+  Eigen::VectorXd x = b;
+  const int before = threadKktStatistics().pivoting_factorizations;
+  steps = solver.solve(scaled.data(), x.data(), 0);
+  pivoting = threadKktStatistics().pivoting_factorizations - before;
+  return (b - scale * a.dense * x).lpNorm<Eigen::Infinity>() /
+         (x.lpNorm<Eigen::Infinity>() + b.lpNorm<Eigen::Infinity>());
+}
+
+TEST(KktSolver, RefinesPastTwoStepsWhileEachGainsTenfoldAndFactorizesAgainWhenItStalls) {
+  // Factors 1 % off gain two decades a step, as the five-link default's static factors do at
+  // its last matrix (mu = 3e-8): more than the two steps a solve always may take reach Ipopt's
+  // ratio, where a factorization with pivoting, which the solve turned to after two, took fifty
+  // times as long.
+  const AugmentedSystem a = randomAugmentedSystem(3, Convexity::kConvexW);
+  int steps = 0, pivoting = 0;
+  EXPECT_LT(solveWithScaledFactors(a, 1.01, steps, pivoting), 1e-10);
+  EXPECT_GE(steps, 3);
+  EXPECT_LE(steps, 6);
+  EXPECT_EQ(pivoting, 0) << "refinement suffices";
+  // Factors 40 % off gain 2.5 times a step: refinement stops after the two steps it always
+  // takes, and the matrix is factorized again, with pivoting, which solves it exactly.
+  EXPECT_LT(solveWithScaledFactors(a, 1.4, steps, pivoting), 1e-10);
+  EXPECT_LE(steps, 2);
+  EXPECT_EQ(pivoting, 1);
+}
+
 /// Pardiso's arrays: the upper triangle by rows, 1-based (the lower triangle by columns).
 struct PardisoArrays {
   std::vector<int> ia, ja;

@@ -38,8 +38,9 @@ class KktSolver {
   /// below `tiny` there, MUMPS factorizes A instead. The thread's observer (kkt_observer.hpp),
   /// if set, then sees A and its count of negative eigenvalues. @throws SingularMatrix from MUMPS.
   void factorize(const double* values);
-  /// rhs := A^{-1} rhs, refined against A(values) while Ipopt's residual ratio is missed, at most
-  /// max(2, refinementSteps) steps; if it is still missed, A is factorized again with a larger
+  /// rhs := A^{-1} rhs, refined against A(values) while Ipopt's residual ratio is missed: at
+  /// most max(2, refinementSteps) steps, and with the static pivots more (up to 8) while each
+  /// gains tenfold; if it is still missed, A is factorized again with a larger
   /// pivot threshold (kept for later matrices), and by MUMPS past the largest, and solved again.
   /// Returns the refinement steps of the last solution.
   int solve(const double* values, double* rhs, int refinementSteps);
@@ -57,6 +58,8 @@ class KktSolver {
   void factorizePivoting(const double* values);
   void factorizeWithMumps(const double* values);
   void applyInverse(double* x) const;
+  /// Whether refinement takes another step after `steps`, the last of which gained `lastGain`.
+  bool worthRefining(int steps, int refinementSteps, double lastGain) const;
   /// Solves and refines in place; returns the residual ratio reached and sets the steps taken.
   double solveAndRefine(const double* values, double* rhs, int refinementSteps, int& steps) const;
 
