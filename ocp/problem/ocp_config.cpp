@@ -250,7 +250,8 @@ MeshRefinement readRefinement(const YamlReader& r) {
 void readSolver(const YamlReader& r, SolverOptions& s) {
   r.allowOnly({"tolerance", "max_iterations", "hessian", "jacobian", "linear_solver", "print_level",
                "mu_strategy", "mu_init", "bound_push", "bound_frac", "mumps_pivot_order",
-               "nlp_scaling_method", "constraint_tolerance", "bound_mult_init_method"});
+               "nlp_scaling_method", "constraint_tolerance", "bound_mult_init_method",
+               "constr_mult_init_max"});
   if (r.has("mu_strategy")) s.mu_strategy = r.choice("mu_strategy", {"monotone", "adaptive"});
   s.mu_init = r.numberOr("mu_init", s.mu_init, config::inRange(1e-12, 1e3, ""));
   s.tolerance = r.numberOr("tolerance", s.tolerance, config::inRange(1e-14, 1e-1, ""));
@@ -258,6 +259,8 @@ void readSolver(const YamlReader& r, SolverOptions& s) {
       r.numberOr("constraint_tolerance", s.constraint_tolerance, config::inRange(1e-14, 1e-1, ""));
   if (r.has("bound_mult_init_method"))
     s.bound_mult_init_method = r.choice("bound_mult_init_method", {"constant", "mu-based"});
+  s.constr_mult_init_max =
+      r.numberOr("constr_mult_init_max", s.constr_mult_init_max, config::inRange(0, 1e20, ""));
   s.max_iterations =
       static_cast<int>(r.numberOr("max_iterations", s.max_iterations, config::inRange(1, 1e5, "")));
   if (r.has("hessian")) s.hessian = r.choice("hessian", {"exact", "limited-memory"});

@@ -192,7 +192,9 @@ class Adapter : public Ipopt::TNLP {
     const CallbackTimer t(result_.callback_time_s);
     const Eigen::VectorXd xv = vec(x, n), gv = nlp_.constraintValues(xv);
     Eigen::Map<Eigen::VectorXd>(g, m) = gv;
-    if (const double v = violation(nlp_, xv, gv, gl_, gu_); v <= best_.violation) best_ = {xv, v};
+    const double v = violation(nlp_, xv, gv, gl_, gu_);
+    if (v <= best_.violation) best_ = {xv, v};
+    lastEvaluated_ = {xv, v};
     return true;
   }
 
@@ -225,14 +227,21 @@ class Adapter : public Ipopt::TNLP {
     if (regularization > 0) ++result_.profile.inertia_corrections;
     if (iterate_.size() == nlp_.variables()) {
       const CallbackTimer t(result_.callback_time_s);
-      offerIterate(result_.best_iterate, iterate_,
-                   violation(nlp_, iterate_, nlp_.constraintValues(iterate_), gl_, gu_),
-                   nlp_.cost(iterate_), feasible_tolerance_);
+      offerIterate(result_.best_iterate, iterate_, iterateViolation(), nlp_.cost(iterate_),
+                   feasible_tolerance_);
     }
     if (progress_)
       fmt::print("  iter {:4d}  cost {: .6e}  infeasibility {:.2e}  dual {:.2e}\n", iter, obj,
                  inf_pr, inf_du);
     return true;
+  }
+
+  /// The current iterate's violation: the last eval_g's, which Ipopt usually made there (the
+  /// trial point it accepted), else evaluated again.
+  double iterateViolation() const {
+    const Eigen::VectorXd& last = lastEvaluated_.x;
+    if (last.size() == iterate_.size() && last == iterate_) return lastEvaluated_.violation;
+    return violation(nlp_, iterate_, nlp_.constraintValues(iterate_), gl_, gu_);
   }
 
   void finalize_solution(Ipopt::SolverReturn status, Index n, const Number* x, const Number* z_l,
@@ -272,8 +281,9 @@ class Adapter : public Ipopt::TNLP {
   bool progress_;
   double feasible_tolerance_;
   const WarmStart* start_;
-  Eigen::VectorXd iterate_;  // the point of the last Jacobian: the current iterate
-  Eigen::VectorXd gl_, gu_;  // constraint bounds, assembled once
+  Eigen::VectorXd iterate_;       // the point of the last Jacobian: the current iterate
+  LeastViolation lastEvaluated_;  // the point of the last eval_g and its violation
+  Eigen::VectorXd gl_, gu_;       // constraint bounds, assembled once
   SparsityPattern jac_, hess_;
   Triplets jac_values_, hess_values_;  // reused at every evaluation (Nlp::jacobianTriplets)
 };
@@ -350,6 +360,11 @@ SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options, const W
   app->Options()->SetNumericValue("bound_push", options.bound_push);
   app->Options()->SetNumericValue("bound_frac", options.bound_frac);
   app->Options()->SetStringValue("bound_mult_init_method", options.bound_mult_init_method);
+  app->Options()->SetNumericValue("constr_mult_init_max", options.constr_mult_init_max);
+  // Ipopt's restoration phase reads the same option under "resto.", where its own default is 0;
+  // set unprefixed, ours would reach it too (the robust config's path then changed, 1600.5 to
+  // 868.3): kept at 0, so that the setting moves the solve's start only.
+  app->Options()->SetNumericValue("resto.constr_mult_init_max", 0.0);
   app->Options()->SetStringValue("nlp_scaling_method", options.nlp_scaling_method);
   app->Options()->SetIntegerValue("print_level", options.print_level);
   app->Options()->SetStringValue("sb", "yes");  // no Ipopt banner

@@ -35,6 +35,10 @@ struct SolverOptions {
   /// Initial bound multipliers: "constant" (all 1) or "mu-based" (mu_init / slack, so the
   /// start is on the central path of mu_init)
   std::string bound_mult_init_method = "constant";
+  /// Ipopt's constr_mult_init_max: a cold start's constraint multipliers are Ipopt's
+  /// least-squares estimates if none exceeds this, else 0; 0 skips the estimate, a linear solve
+  /// on a matrix of its own (a warm start keeps the multipliers it is given)
+  double constr_mult_init_max = 1000;
   /// MUMPS fill-reducing ordering (ICNTL(7)): 0 AMD, 2 AMF, 3 SCOTCH, 4 PORD, 5 METIS, 6 QAMD,
   /// 7 MUMPS chooses. AMD: 0.77 of the CPU time of a whole five-link solve against MUMPS's own
   /// choice, 0.91 on RABBIT, same iterations (results/solve_profile.md). With "mumps" only: the

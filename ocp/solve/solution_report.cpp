@@ -48,6 +48,7 @@ nlohmann::ordered_json solverJson(const SolverOptions& s) {
           {"bound_push", s.bound_push},
           {"bound_frac", s.bound_frac},
           {"bound_mult_init_method", s.bound_mult_init_method},
+          {"constr_mult_init_max", s.constr_mult_init_max},
           {"mumps_pivot_order", s.mumps_pivot_order},
           {"nlp_scaling_method", s.nlp_scaling_method},
           {"print_level", s.print_level}};

@@ -108,6 +108,27 @@ TEST_F(FiveLinkSolution, ConvergesAndBeatsThePolynomialGait) {
   EXPECT_LT(result_->cost, gaits::torqueSquaredIntegral(*guess_));
 }
 
+TEST_F(FiveLinkSolution, SkipsAMultiplierEstimateIpoptWouldDiscardAndNeedsNoPivoting) {
+  // The config starts the constraint multipliers at 0 (constr_mult_init_max: 0): Ipopt's
+  // least-squares estimate exceeds its cap of 1e3 from this guess, so with the estimate the
+  // path is the same, one matrix and one analysis (its identity diagonal) later.
+  ASSERT_EQ(config_->solver.constr_mult_init_max, 0.0);
+  SolverOptions estimated = config_->solver;
+  estimated.constr_mult_init_max = 1e3;
+  const SolveResult r = solveWithIpopt(problem_->nlp, estimated);
+  EXPECT_EQ(r.iterations, result_->iterations);
+  EXPECT_EQ(r.cost, result_->cost);
+  EXPECT_EQ(r.x, result_->x);
+  const kkt::KktStatistics& skipped = result_->profile.ldl;
+  EXPECT_EQ(r.profile.ldl.factorizations, skipped.factorizations + 1);
+  EXPECT_EQ(r.profile.ldl.analyses, skipped.analyses + 1);
+  EXPECT_EQ(skipped.analyses, 1);
+  // Every matrix of the solve by the static pivots: the last one's solution, at mu = 3e-8,
+  // refined in more than two steps rather than factorized again with pivoting.
+  EXPECT_EQ(skipped.pivoting_factorizations, 0);
+  EXPECT_EQ(skipped.mumps_fallbacks, 0);
+}
+
 TEST_F(FiveLinkSolution, ImpactlessTouchdownFindsTheSameOptimum) {
   // The torque-squared optimum lands without impact (its touchdown velocity jump is ~1e-7), so
   // imposing an impactless touchdown (tip at rest, Mu ch. 3) must reach the same cost; a tip
