@@ -47,7 +47,10 @@ std::string fileFingerprint(const std::string& path) {
 std::string summaryFingerprint(const std::string& path) {
   nlohmann::ordered_json summary = readStrictJson(path);
   dropMeasuredTimes(summary);
-  if (summary.is_object()) summary.erase("config");
+  if (summary.is_object()) {
+    summary.erase("config");
+    summary.erase("kkt");
+  }
   return textFingerprint(summary.dump());
 }
 

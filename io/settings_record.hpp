@@ -23,8 +23,9 @@ std::string fileFingerprint(const std::string& path);
 std::string textFingerprint(const std::string& text);
 
 /// A fingerprint of what a result's summary.json says of the result: the file without the
-/// times the run measured ("wall_time_s", "callback_time_s" at any depth) and the config's path
-/// as typed ("config"), which differ from run to run of the same result. @throws
+/// times the run measured ("wall_time_s", "callback_time_s" at any depth), the config's path
+/// as typed ("config") and the linear solver's counts of its own work ("kkt"), which differ
+/// from run to run, or from one version of the solver to the next, of the same result. @throws
 /// config::ConfigError when it cannot be read or is not JSON.
 std::string summaryFingerprint(const std::string& path);
 

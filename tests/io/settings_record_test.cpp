@@ -38,15 +38,16 @@ TEST_F(SettingsTest, FingerprintFollowsContentNotName) {
   EXPECT_EQ(fileFingerprint(path("empty")), "cbf29ce484222325");  // the FNV-1a offset basis
 }
 
-// The same gait solved again differs in its measured times and perhaps in how its config's path
-// was typed; a stability folder keyed by the whole summary.json refused to resume on it.
+// The same gait solved again differs in its measured times, perhaps in how its config's path
+// was typed and, after a change of the linear solver's inner workings, in its counts of
+// factorizations; a stability folder keyed by the whole summary.json refused to resume on it.
 TEST_F(SettingsTest, ASummaryIsKeyedWithoutTheTimesARunMeasured) {
   put(path("a.json"),
       R"({"config": "a.yaml", "cost": 1.5, "wall_time_s": 0.1, "callback_time_s": 0.01,
-          "stages": [{"cost": 1.5, "wall_time_s": 0.1}]})");
+          "stages": [{"cost": 1.5, "wall_time_s": 0.1}], "kkt": {"factorizations": 16}})");
   put(path("b.json"),
       R"({"config": "../b.yaml", "cost": 1.5, "wall_time_s": 0.2, "callback_time_s": 0.02,
-          "stages": [{"cost": 1.5, "wall_time_s": 0.2}]})");
+          "stages": [{"cost": 1.5, "wall_time_s": 0.2}], "kkt": {"factorizations": 17}})");
   put(path("c.json"), R"({"config": "a.yaml", "cost": 1.6, "wall_time_s": 0.1,
           "callback_time_s": 0.01, "stages": [{"cost": 1.5, "wall_time_s": 0.1}]})");
   put(path("d.json"), R"({"config": "a.yaml", "cost": 1.5, "wall_time_s": 0.1,
