@@ -1,5 +1,6 @@
 #include "apps/cli_app.hpp"
 
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -44,8 +45,19 @@ std::string withUnrecognised(const CLI::App* app, const CLI::Error& e) {
          "; " + what;
 }
 
+/// CLI11's count of values ("FOLDERS: At Most 4 required but received 6") in plain words:
+/// "FOLDERS: takes at most 4 values, got 6".
+std::string plainCount(const CLI::Error& e, std::string what) {
+  if (dynamic_cast<const CLI::ArgumentMismatch*>(&e) == nullptr) return what;
+  static const std::regex count(R"((.*): At (Most|least) (\d+) required but received (\d+))");
+  std::smatch m;
+  if (!std::regex_match(what, m, count)) return what;
+  return fmt::format("{}: takes at {} {} values, got {}", m[1].str(),
+                     m[2] == "Most" ? "most" : "least", m[3].str(), m[4].str());
+}
+
 std::string failureMessage(const CLI::App* app, const CLI::Error& e) {
-  return "error: " + withUnrecognised(app, e) + "\nRun '" + app->get_name() +
+  return "error: " + plainCount(e, withUnrecognised(app, e)) + "\nRun '" + app->get_name() +
          " --help' for more information.\n";
 }
 

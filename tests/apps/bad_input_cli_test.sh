@@ -135,6 +135,9 @@ run optimise --config "$OCP"
 expect "mistyped command" 2 "unknown command 'optimise'; the commands: .*optimize"
 run optimize --confg "$OCP" --out "$TMP/out_dir"
 expect "mistyped required option" 2 "not an option of optimize: --confg .*; --config is required"
+# CLI11's "At Most 4 required but received 6", in plain words.
+run compare "$TMP/a" "$TMP/b" "$TMP/c" "$TMP/d" "$TMP/e" --out "$TMP/out_dir"
+expect "too many folders" 2 "FOLDERS: takes at most 4 values, got 5"
 poly --robot "$ROBOT" --gait "$GAIT" --rate 0
 expect "rate 0" 2 "--rate: expected a number in \[1, 1e\+06\] \[Hz\], got 0"
 poly --robot "$ROBOT" --gait "$GAIT" --rate fast
