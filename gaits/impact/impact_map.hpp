@@ -36,14 +36,15 @@ struct ImpactGrid {
   ImpactPostureParams params(const std::array<int, 3>& k) const;
 };
 
-/// @throws std::invalid_argument naming the axis when a count is < 1, a bound is not finite,
-///         first > last, count == 1 with first != last, an angle leaves (0, pi), a step length is
-///         not positive, or the longest step cannot be reached at the largest knee bias.
 /// What checkImpactGrid's messages call the axes (step length, knee bias, approach angle): the
 /// grid's own names, or the options a command line parsed them from.
 using ImpactAxisNames = std::array<std::string_view, 3>;
 inline constexpr ImpactAxisNames kImpactAxisNames = {"step_length", "knee_bias", "approach_angle"};
 
+/// @throws std::invalid_argument naming the axis (by `names`) when a count is < 1, a bound is
+///         not finite, first > last, count == 1 with first != last, an angle leaves (0, pi), a
+///         step length is not positive, or the longest step cannot be reached at the largest
+///         knee bias.
 void checkImpactGrid(const dynamics::Model& model, const ImpactGrid& grid,
                      const ImpactAxisNames& names = kImpactAxisNames);
 

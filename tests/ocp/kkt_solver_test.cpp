@@ -276,32 +276,17 @@ TEST(KktSolver, AnalysesAgainWhenAVariableRowLosesItsDiagonal) {
   EXPECT_EQ(solver.fallbacks(), fallbacks) << "the new pairs factorize it";
 }
 
-TEST(KktSolver, RefinesTheSolutionAgainstTheMatrixItIsGivenToIpoptsResidualRatio) {
-  // The pivoting factorization leaves nothing to refine on these systems, so the solve is given
-  // a matrix 1e-7 away from the factorized one: the factors are then an approximate inverse,
-  // as a factorization that lost digits would be, and refinement must close the gap.
-  const AugmentedSystem a = randomAugmentedSystem(3, Convexity::kConvexW);
-  const Lower l = lowerOf(a.dense);
-  KktSolver solver(l.pattern);
-  solver.factorize(l.values.data());
-  std::vector<double> nearby = l.values;
-  for (double& v : nearby) v *= 1 + 1e-7;
-  const Eigen::MatrixXd dense = a.dense * (1 + 1e-7);
-  const Eigen::VectorXd b = Eigen::VectorXd::Random(a.n());
-  Eigen::VectorXd x = b;
-  const int steps = solver.solve(nearby.data(), x.data(), 0);  // Ipopt allows none
-  EXPECT_GE(steps, 1);
-  EXPECT_EQ(solver.fallbacks(), 0) << "refinement suffices here";
-  const double ratio = (b - dense * x).lpNorm<Eigen::Infinity>() /
-                       (x.lpNorm<Eigen::Infinity>() + b.lpNorm<Eigen::Infinity>());
-  EXPECT_LT(ratio, 1e-10);  // Ipopt's residual_ratio_max
-}
+/// A solve of a matrix with the factors of another.
+struct ScaledSolve {
+  double ratio;   ///< the residual ratio reached against the matrix solved
+  int steps;      ///< refinement steps of the last solution
+  int pivoting;   ///< pivoting factorizations the solve added
+  int fallbacks;  ///< the solver's factorizations by MUMPS
+};
 
 /// A solve of `a` scaled by `scale` with the factors of `a`, as factors that lost digits are:
-/// each refinement step multiplies the error by 1 - scale (A^-1 (scale A) = scale I). Returns
-/// the residual ratio reached and sets the refinement steps and the pivoting factorizations
-/// the solve added.
-double solveWithScaledFactors(const AugmentedSystem& a, double scale, int& steps, int& pivoting) {
+/// each refinement step multiplies the error by 1 - scale (A^-1 (scale A) = scale I).
+ScaledSolve solveWithScaledFactors(const AugmentedSystem& a, double scale) {
   const Lower l = lowerOf(a.dense);
   KktSolver solver(l.pattern);
   solver.factorize(l.values.data());
@@ -311,10 +296,21 @@ double solveWithScaledFactors(const AugmentedSystem& a, double scale, int& steps
   const Eigen::VectorXd b = Eigen::VectorXd::Random(a.n());
   Eigen::VectorXd x = b;
   const int before = threadKktStatistics().pivoting_factorizations;
-  steps = solver.solve(scaled.data(), x.data(), 0);
-  pivoting = threadKktStatistics().pivoting_factorizations - before;
-  return (b - scale * a.dense * x).lpNorm<Eigen::Infinity>() /
-         (x.lpNorm<Eigen::Infinity>() + b.lpNorm<Eigen::Infinity>());
+  const int steps = solver.solve(scaled.data(), x.data(), 0);  // Ipopt allows none
+  return {(b - scale * a.dense * x).lpNorm<Eigen::Infinity>() /
+              (x.lpNorm<Eigen::Infinity>() + b.lpNorm<Eigen::Infinity>()),
+          steps, threadKktStatistics().pivoting_factorizations - before, solver.fallbacks()};
+}
+
+TEST(KktSolver, RefinesTheSolutionAgainstTheMatrixItIsGivenToIpoptsResidualRatio) {
+  // The pivoting factorization leaves nothing to refine on these systems, so the solve is given
+  // a matrix 1e-7 away from the factorized one: the factors are then an approximate inverse,
+  // as a factorization that lost digits would be, and refinement must close the gap.
+  const ScaledSolve s =
+      solveWithScaledFactors(randomAugmentedSystem(3, Convexity::kConvexW), 1 + 1e-7);
+  EXPECT_GE(s.steps, 1);
+  EXPECT_EQ(s.fallbacks, 0) << "refinement suffices here";
+  EXPECT_LT(s.ratio, 1e-10);  // Ipopt's residual_ratio_max
 }
 
 TEST(KktSolver, RefinesPastTwoStepsWhileEachGainsTenfoldAndFactorizesAgainWhenItStalls) {
@@ -323,16 +319,17 @@ TEST(KktSolver, RefinesPastTwoStepsWhileEachGainsTenfoldAndFactorizesAgainWhenIt
   // ratio, where a factorization with pivoting, which the solve turned to after two, took fifty
   // times as long.
   const AugmentedSystem a = randomAugmentedSystem(3, Convexity::kConvexW);
-  int steps = 0, pivoting = 0;
-  EXPECT_LT(solveWithScaledFactors(a, 1.01, steps, pivoting), 1e-10);
-  EXPECT_GE(steps, 3);
-  EXPECT_LE(steps, 6);
-  EXPECT_EQ(pivoting, 0) << "refinement suffices";
+  const ScaledSolve close = solveWithScaledFactors(a, 1.01);
+  EXPECT_LT(close.ratio, 1e-10);
+  EXPECT_GE(close.steps, 3);
+  EXPECT_LE(close.steps, 6);
+  EXPECT_EQ(close.pivoting, 0) << "refinement suffices";
   // Factors 40 % off gain 2.5 times a step: refinement stops after the two steps it always
   // takes, and the matrix is factorized again, with pivoting, which solves it exactly.
-  EXPECT_LT(solveWithScaledFactors(a, 1.4, steps, pivoting), 1e-10);
-  EXPECT_LE(steps, 2);
-  EXPECT_EQ(pivoting, 1);
+  const ScaledSolve far = solveWithScaledFactors(a, 1.4);
+  EXPECT_LT(far.ratio, 1e-10);
+  EXPECT_LE(far.steps, 2);
+  EXPECT_EQ(far.pivoting, 1);
 }
 
 /// Pardiso's arrays: the upper triangle by rows, 1-based (the lower triangle by columns).
