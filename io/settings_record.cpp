@@ -50,6 +50,7 @@ std::string summaryFingerprint(const std::string& path) {
   if (summary.is_object()) {
     summary.erase("config");
     summary.erase("kkt");
+    summary.erase("solver");
   }
   return textFingerprint(summary.dump());
 }

@@ -24,8 +24,10 @@ std::string textFingerprint(const std::string& text);
 
 /// A fingerprint of what a result's summary.json says of the result: the file without the
 /// times the run measured ("wall_time_s", "callback_time_s" at any depth), the config's path
-/// as typed ("config") and the linear solver's counts of its own work ("kkt"), which differ
-/// from run to run, or from one version of the solver to the next, of the same result. @throws
+/// as typed ("config"), the linear solver's counts of its own work ("kkt") and the solver's
+/// settings ("solver"), which differ from run to run, or from one version of the solver to the
+/// next, of the same result (a setting added to the record is not a new result; one that moves
+/// the result moves its trajectory's bytes, which a stability folder keys beside this). @throws
 /// config::ConfigError when it cannot be read or is not JSON.
 std::string summaryFingerprint(const std::string& path);
 

@@ -77,10 +77,10 @@ gaitopt="$1/apps/gaitopt"
 [[ -x "$gaitopt" ]] || { echo "error: $gaitopt not built" >&2; exit 1; }
 default_case="$gaitopt:configs/ocp/mu2004_walk.yaml"
 echo "The five-link default against its double support in theta as shipped until 2026-11-29 (six"
-echo "equal segments), whole processes run in turn:"
+echo "equal segments) and without Ipopt's own refinement step, whole processes run in turn:"
 /usr/bin/python3 scripts/paired_times.py --runs 15 --out "$1/paired_times.md" \
   "theta=$default_case:constraints.dsp_reduced_coordinates=false:phases[1].first_segment=0.16666666666666667" \
-  "default=$default_case"
+  "default=$default_case" "no_ipopt_refinement=$default_case:solver.min_refinement_steps=0"
 echo "(also in $1/paired_times.{md,csv}; results/paired_times.{md,csv} are copies)"
 
 echo

@@ -251,7 +251,7 @@ void readSolver(const YamlReader& r, SolverOptions& s) {
   r.allowOnly({"tolerance", "max_iterations", "hessian", "jacobian", "linear_solver", "print_level",
                "mu_strategy", "mu_init", "bound_push", "bound_frac", "mumps_pivot_order",
                "nlp_scaling_method", "constraint_tolerance", "bound_mult_init_method",
-               "constr_mult_init_max"});
+               "constr_mult_init_max", "min_refinement_steps"});
   if (r.has("mu_strategy")) s.mu_strategy = r.choice("mu_strategy", {"monotone", "adaptive"});
   s.mu_init = r.numberOr("mu_init", s.mu_init, config::inRange(1e-12, 1e3, ""));
   s.tolerance = r.numberOr("tolerance", s.tolerance, config::inRange(1e-14, 1e-1, ""));
@@ -261,6 +261,8 @@ void readSolver(const YamlReader& r, SolverOptions& s) {
     s.bound_mult_init_method = r.choice("bound_mult_init_method", {"constant", "mu-based"});
   s.constr_mult_init_max =
       r.numberOr("constr_mult_init_max", s.constr_mult_init_max, config::inRange(0, 1e20, ""));
+  s.min_refinement_steps = static_cast<int>(
+      r.numberOr("min_refinement_steps", s.min_refinement_steps, config::inRange(0, 10, "")));
   s.max_iterations =
       static_cast<int>(r.numberOr("max_iterations", s.max_iterations, config::inRange(1, 1e5, "")));
   if (r.has("hessian")) s.hessian = r.choice("hessian", {"exact", "limited-memory"});

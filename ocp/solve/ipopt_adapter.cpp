@@ -365,6 +365,7 @@ SolveResult solveWithIpopt(const Nlp& nlp, const SolverOptions& options, const W
   // set unprefixed, ours would reach it too (the robust config's path then changed, 1600.5 to
   // 868.3): kept at 0, so that the setting moves the solve's start only.
   app->Options()->SetNumericValue("resto.constr_mult_init_max", 0.0);
+  app->Options()->SetIntegerValue("min_refinement_steps", options.min_refinement_steps);
   app->Options()->SetStringValue("nlp_scaling_method", options.nlp_scaling_method);
   app->Options()->SetIntegerValue("print_level", options.print_level);
   app->Options()->SetStringValue("sb", "yes");  // no Ipopt banner

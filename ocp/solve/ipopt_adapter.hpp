@@ -39,6 +39,11 @@ struct SolverOptions {
   /// least-squares estimates if none exceeds this, else 0; 0 skips the estimate, a linear solve
   /// on a matrix of its own (a warm start keeps the multipliers it is given)
   double constr_mult_init_max = 1000;
+  /// Ipopt's min_refinement_steps: refinement steps Ipopt takes on every solution of the full
+  /// primal-dual system, each a residual and one more back-solve, before it checks the residual
+  /// ratio. `ldl` refines each solution to that ratio itself (kkt_solver.hpp), so 0 leaves
+  /// Ipopt only the check; 1 is Ipopt's default, kept where a path-sensitive solve would move
+  int min_refinement_steps = 1;
   /// MUMPS fill-reducing ordering (ICNTL(7)): 0 AMD, 2 AMF, 3 SCOTCH, 4 PORD, 5 METIS, 6 QAMD,
   /// 7 MUMPS chooses. AMD: 0.77 of the CPU time of a whole five-link solve against MUMPS's own
   /// choice, 0.91 on RABBIT, same iterations (results/solve_profile.md). With "mumps" only: the

@@ -49,6 +49,7 @@ nlohmann::ordered_json solverJson(const SolverOptions& s) {
           {"bound_frac", s.bound_frac},
           {"bound_mult_init_method", s.bound_mult_init_method},
           {"constr_mult_init_max", s.constr_mult_init_max},
+          {"min_refinement_steps", s.min_refinement_steps},
           {"mumps_pivot_order", s.mumps_pivot_order},
           {"nlp_scaling_method", s.nlp_scaling_method},
           {"print_level", s.print_level}};
@@ -80,7 +81,7 @@ nlohmann::ordered_json pathParametersJson(const PathParameters& p) {
 
 /// What the KKT solves of the whole solve (every stage and round) cost, as the solvers count it.
 nlohmann::ordered_json linearSolverJson(const SolverOptions& options, const SolveProfile& p) {
-  return {
+  nlohmann::ordered_json json = {
       {"linear_solver", options.linear_solver},
       {"factorizations", p.factorizations},
       {"pivoting_factorizations", p.ldl.pivoting_factorizations},
@@ -92,6 +93,8 @@ nlohmann::ordered_json linearSolverJson(const SolverOptions& options, const Solv
       {"delayed_pivots", p.ldl.delayed_pivots},
       {"inexact_refactorizations", p.ldl.inexact_refactorizations},
       {"inertia_corrections", p.inertia_corrections}};
+  if (options.linear_solver == "ldl") json["solves"] = p.ldl.solves;  // MUMPS's are not counted
+  return json;
 }
 
 /// The continuation's settings and the path it took, one entry per Ipopt solve.

@@ -40,14 +40,16 @@ TEST_F(SettingsTest, FingerprintFollowsContentNotName) {
 
 // The same gait solved again differs in its measured times, perhaps in how its config's path
 // was typed and, after a change of the linear solver's inner workings, in its counts of
-// factorizations; a stability folder keyed by the whole summary.json refused to resume on it.
+// factorizations or in the settings its solver record lists; a stability folder keyed by the
+// whole summary.json refused to resume on it.
 TEST_F(SettingsTest, ASummaryIsKeyedWithoutTheTimesARunMeasured) {
   put(path("a.json"),
       R"({"config": "a.yaml", "cost": 1.5, "wall_time_s": 0.1, "callback_time_s": 0.01,
           "stages": [{"cost": 1.5, "wall_time_s": 0.1}], "kkt": {"factorizations": 16}})");
   put(path("b.json"),
       R"({"config": "../b.yaml", "cost": 1.5, "wall_time_s": 0.2, "callback_time_s": 0.02,
-          "stages": [{"cost": 1.5, "wall_time_s": 0.2}], "kkt": {"factorizations": 17}})");
+          "stages": [{"cost": 1.5, "wall_time_s": 0.2}], "kkt": {"factorizations": 17},
+          "solver": {"min_refinement_steps": 1}})");
   put(path("c.json"), R"({"config": "a.yaml", "cost": 1.6, "wall_time_s": 0.1,
           "callback_time_s": 0.01, "stages": [{"cost": 1.5, "wall_time_s": 0.1}]})");
   put(path("d.json"), R"({"config": "a.yaml", "cost": 1.5, "wall_time_s": 0.1,

@@ -179,7 +179,8 @@ void BlockLdl::pivot(int k, Mat2 d, double tiny) {
 
 void BlockLdl::solve(double* x) const {
   const int nb = blocks();
-  std::vector<Vec2> y(nb);
+  std::vector<Vec2>& y = solution_;
+  y.resize(nb);
   for (int k = 0; k < nb; ++k) y[k] = Vec2(x[first_[k]], second_[k] >= 0 ? x[second_[k]] : 0.0);
   for (int j = 0; j < nb; ++j)
     for (int p = lp_[j]; p < lp_[j + 1]; ++p) y[li_[p]].noalias() -= lx_[p] * y[j];

@@ -59,6 +59,7 @@ class BlockLdl {
   std::vector<int> lp_, parent_, lnz_, li_;
   std::vector<int> rowStart_, rowBlocks_;  // nonzero blocks of each block row of L, in order
   std::vector<Mat2> cx_, lx_, dinv_, y_;
+  mutable std::vector<Vec2> solution_;  // solve()'s workspace, kept between Ipopt's many solves
   int negative_ = 0;
   int perturbed_ = 0;
 };

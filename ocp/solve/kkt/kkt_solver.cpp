@@ -195,6 +195,7 @@ double KktSolver::solveAndRefine(const double* values, double* rhs, int refineme
 }
 
 int KktSolver::solve(const double* values, double* rhs, int refinementSteps) {
+  ++threadKktStatistics().solves;
   const std::vector<double> b(rhs, rhs + pattern_.n);
   const int allowed = std::max(refinementSteps, kRefinementSteps);
   int steps = 0;

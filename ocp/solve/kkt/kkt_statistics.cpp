@@ -5,6 +5,7 @@ namespace gaitopt::ocp::kkt {
 KktStatistics& operator+=(KktStatistics& a, const KktStatistics& b) {
   a.analyses += b.analyses;
   a.factorizations += b.factorizations;
+  a.solves += b.solves;
   a.pivoting_factorizations += b.pivoting_factorizations;
   a.mumps_fallbacks += b.mumps_fallbacks;
   a.zero_pivot_fallbacks += b.zero_pivot_fallbacks;
@@ -17,6 +18,7 @@ KktStatistics& operator+=(KktStatistics& a, const KktStatistics& b) {
 KktStatistics operator-(KktStatistics a, const KktStatistics& b) {
   a.analyses -= b.analyses;
   a.factorizations -= b.factorizations;
+  a.solves -= b.solves;
   a.pivoting_factorizations -= b.pivoting_factorizations;
   a.mumps_fallbacks -= b.mumps_fallbacks;
   a.zero_pivot_fallbacks -= b.zero_pivot_fallbacks;

@@ -10,6 +10,7 @@ namespace gaitopt::ocp::kkt {
 struct KktStatistics {
   int analyses = 0;        ///< row pairings and block orders (KktSolver::analyse)
   int factorizations = 0;  ///< numerical factorizations asked for by Ipopt
+  int solves = 0;          ///< right-hand sides Ipopt asked to solve for, each refined here
   /// Factorizations with pivoting (MultifrontalLdl): the matrices the static pivots failed on,
   /// and the ones after them in the same solve.
   int pivoting_factorizations = 0;
