@@ -98,6 +98,8 @@ class Sweep:
     def __init__(self, result_dir, name, entry):
         self.name = name
         self.unit = entry["unit"]
+        # A model error is a fraction, drawn and worded in percent as the maps and docs give it.
+        self.fraction = map_plots.is_fraction({"name": name, "unit": self.unit})
         self.geometric = entry.get("geometric")  # None in summaries written before the key
         self.nominal = entry["nominal"]
         self.walks = (None if entry["walks_from"] is None
@@ -128,7 +130,7 @@ class Sweep:
             if not self.walked.any():
                 return f"falls at every tested value ({len(self.value)} values)"
             v = self.value[self.walked]
-            span = self.format(v[0]) if len(v) == 1 else (f"{v[0]:g} .. "
+            span = self.format(v[0]) if len(v) == 1 else (f"{self.number(v[0])} .. "
                                                              f"{self.format(v[-1])}")
             return (f"falls at the nominal {self.format(self.nominal)}; walks at {len(v)} of "
                     f"{len(self.value)} values ({span})")
@@ -147,15 +149,21 @@ class Sweep:
         v = self.value[self.walked & ((self.value < lo) | (self.value > hi))]
         if len(v) == 0:
             return ""
-        span = self.format(v[0]) if len(v) == 1 else f"{v[0]:g} .. {self.format(v[-1])}"
+        span = self.format(v[0]) if len(v) == 1 else f"{self.number(v[0])} .. {self.format(v[-1])}"
         return f"; beyond the falls it walks at {len(v)} more ({span})"
 
     def label(self):
         """Axis label: the parameter and its unit."""
+        if self.fraction:
+            return f"{self.name.replace('_', ' ')} [%]"
         return f"{self.name} [{self.unit}]" if self.unit else self.name
 
+    def number(self, x):
+        """A value as the axis shows it (a fraction in percent: 0.05 -> 5)."""
+        return f"{100 * x:g}" if self.fraction else f"{x:g}"
+
     def format(self, x):
-        return f"{x:g} {self.unit}".rstrip()
+        return f"{self.number(x)} {'%' if self.fraction else self.unit}".rstrip()
 
 
 def read_sweeps(result_dir):
@@ -215,6 +223,8 @@ def draw_sweep(ax, sw):
     (twin or ax).legend(handles, labels, fontsize=7, loc="upper center", ncol=3)
     if sw.log_spaced():
         ax.set_xscale("log")
+    if sw.fraction:
+        map_plots.percent_ticks(ax.xaxis)
     ax.set_xlabel(sw.label() + (" (log scale)" if sw.log_spaced() else ""))
     ax.set_ylabel("steps completed")
     ax.set_title(f"{sw.name}: {sw.interval_text()}")

@@ -261,6 +261,23 @@ assert not friction.log_spaced()
 PY
 plot stability_plots.py "$TMP/stab2"
 [[ $RC -eq 0 ]] || fail "(c2) stability_plots.py exited $RC: $(cat "$TMP/err")"
+# (c2'') a model error is a fraction, drawn and worded in percent as the maps give it: the same
+# sweep read as mass_error (its values 0.1, 0.3, 0.9).
+cp -r "$TMP/stab2" "$TMP/stab3"
+mv "$TMP/stab3/sweep_friction.csv" "$TMP/stab3/sweep_mass_error.csv"
+edit "$TMP/stab3/summary.json" "import json; d = json.loads(text); d['sweeps']['mass_error'] = d['sweeps'].pop('friction'); text = json.dumps(d)"
+(cd "$PLOTS" && "$PY" - "$TMP/stab3" <<'PY') || fail "(c2'') a model error's sweep in percent"
+import sys
+import stability_plots as sp
+s, sweeps = sp.read_sweeps(sys.argv[1])
+mass = next(sw for sw in sweeps if sw.name == "mass_error")
+push = next(sw for sw in sweeps if sw.name == "push")
+assert mass.label() == "mass error [%]" and push.label() == "push [N s]", (mass.label(), push.label())
+assert mass.interval_text() == "falls at the nominal 10 %; walks at 2 of 3 values (30 .. 90 %)", mass.interval_text()
+fig = sp.stability_figure(s, [mass])
+assert fig.axes[0].xaxis.get_major_formatter()(0.05, 0) == "5"
+assert fig.axes[0].get_xlabel().startswith("mass error [%]"), fig.axes[0].get_xlabel()
+PY
 # (c2') a long headline over one sweep is wrapped inside the figure (it ran off both sides),
 # above the panel's title; every word is kept.
 (cd "$PLOTS" && "$PY" - "$TMP/stab2" <<'PY') || fail "(c2') the title of one sweep"
