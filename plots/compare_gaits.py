@@ -15,9 +15,10 @@ ending in .md), creates it and writes, printing one line per file written:
   torques_overlay.png  joint torques tau0..tau{N-1}, one panel per joint
   forces_overlay.png   normal forces fb_y, fe_y and the friction ratio |f_x|/f_y (f_y > 1 N)
                        with the friction coefficient (summary key 'friction') when present
-  zmp_overlay.png      zmp_x with the support interval (stance tip B at x = 0; in the DSP up
-                       to the leading tip E at step_length, or swing_x when the key is absent)
-                       and B's foot, heel to toe, shaded for gaits on feet (robot_foot.py)
+  zmp_overlay.png      zmp_x with the support interval (stance tip B at x = 0): B's foot, heel to
+                       toe, in the single support, and in the DSP from B's heel to the toe of
+                       the leading tip E (at step_length, or swing_x when the key is absent), as
+                       zmp.png draws it (robot_foot.support_region); the tips on point feet
   comparison.png       angles, torques, normal forces and ZMP on one page
 The pictures read each folder's trajectory.csv: A solid, B dashed, C dotted, D dash-dotted, one
 colour per quantity; grey vertical lines mark each gait's touchdown (SSP -> DSP; the step end for a
@@ -32,7 +33,7 @@ import sys
 import plot_io
 import plot_style as style
 from plot_io import InputError
-from robot_foot import robot_foot
+from robot_foot import robot_foot, support_region
 
 ROWS = [
     ("status", "status", None),
@@ -200,7 +201,7 @@ class Gait:
         loaded = fy > MIN_LOADED_FORCE
         return np.where(loaded, np.abs(fx) / np.where(loaded, fy, 1.0), np.nan)
 
-    def support_edge(self):
+    def leading_tip(self):
         """x of the leading tip E in the DSP rows (NaN in the SSP), or None if unknown."""
         import numpy as np
         if not self.dsp.any():
@@ -337,22 +338,26 @@ def draw_friction(ax, gaits):
 
 
 def draw_zmp(ax, gaits):
+    import numpy as np
     entries = [(style.ZMP, "zmp_x")]
     ax.axhline(0, color="0.3", lw=1)
     entries.append(("0.3", "stance/trailing tip B, x = 0"))
     shaded = False
     for g in gaits:
-        edge = g.support_edge()
-        if edge is None:
+        tip_e = g.leading_tip()
+        if tip_e is None:
             continue
+        # As zmp.png draws it (gait_plots.py): from B's heel to E's toe, the tips on point feet.
+        back, front = support_region(g.dsp, tip_e, g.foot)
         d = g.dsp
-        ax.fill_between(g.t[d], 0, edge[d], facecolor="0.6" if g.ls == "-" else "none",
+        ax.fill_between(g.t[d], back[d], front[d], facecolor="0.6" if g.ls == "-" else "none",
                         alpha=0.25 if g.ls == "-" else 0.6, hatch=None if g.ls == "-" else "//",
-                        edgecolor="0.5", lw=0)
-        ax.plot(g.t, edge, color="0.3", ls=g.ls, lw=1)
+                        edgecolor="0.5", lw=0, gid="dsp_support")
+        ax.plot(g.t, np.where(d, front, np.nan), color="0.3", ls=g.ls, lw=1)
         shaded = True
     if shaded:
-        entries.append(("0.6", "DSP support B..E (A filled, B hatched)"))
+        what = ("B's heel to E's toe" if any(g.foot is not None for g in gaits) else "tip B to tip E")
+        entries.append(("0.6", f"DSP support, {what} (solid gait filled, the others hatched)"))
     # The foot in the single support: a ZMP outside [-heel, toe] tips the stance foot.
     for foot in dict.fromkeys(g.foot for g in gaits if g.foot is not None):
         tags = ", ".join(g.tag for g in gaits if g.foot == foot)

@@ -31,7 +31,7 @@ import numpy as np
 import plot_io
 import plot_style as style
 from plot_io import InputError
-from robot_foot import POINT_FEET, robot_foot
+from robot_foot import POINT_FEET, robot_foot, support_region
 
 plt = style.pyplot()
 
@@ -121,11 +121,9 @@ class Gait:
         return self.s["energy_J"] / (cot * self.L) if cot > 0 else None
 
     def support(self):
-        """(back, front) edges of the support region at every row [m from B]: the foot around
-        B in the SSP, from B's heel to E's toe in the DSP; point tips without a foot."""
-        heel, toe = self.foot if self.foot is not None else (0.0, 0.0)
-        back = np.full(len(self.t), -heel)
-        return back, np.where(self.dsp, self.L + toe, toe)
+        """(back, front) edges of the support region at every row [m from B]
+        (robot_foot.support_region)."""
+        return support_region(self.dsp, self.L, self.foot)
 
     def zmp_margin(self):
         """Distance of the ZMP inside the support region at every row [m], negative outside

@@ -15,6 +15,17 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 POINT_FEET = "point feet (summary.json)"
 
 
+def support_region(dsp, leading_x, foot):
+    """(back, front) edges [m from tip B] of the region a ZMP must stay in at every row: B's foot,
+    heel to toe, in the single support; from B's heel to the toe of the leading tip E, at
+    `leading_x` (a number or one per row), in the double support rows `dsp`; the tips themselves
+    for point feet (`foot` None)."""
+    import numpy as np
+    heel, toe = foot if foot is not None else (0.0, 0.0)
+    back = np.full(len(dsp), -heel)
+    return back, np.where(dsp, leading_x + toe, toe)
+
+
 def robot_file_foot(text):
     """(heel, toe) from a robot YAML text's `foot: {heel: .., toe: ..}`, or None."""
     try:

@@ -162,6 +162,12 @@ fig, ax = plt.subplots()
 compare_gaits.draw_zmp(ax, [a, b])
 feet = [p.get_xy()[:, 1] for p in ax.patches if p.get_gid() == "foot"]
 assert len(feet) == 1 and (feet[0].min(), feet[0].max()) == (-0.05, 0.15), feet
+# A's double support (B has none) from B's heel to E's toe, as zmp.png draws it: it stopped at
+# the tips, 5 cm short behind and 15 cm ahead.
+dsp = [c for c in ax.collections if c.get_gid() == "dsp_support"]
+assert len(dsp) == 1, dsp
+y = dsp[0].get_paths()[0].vertices[:, 1]
+assert abs(y.min() + 0.05) < 1e-12 and abs(y.max() - (a.s["step_length"] + 0.15)) < 1e-12, (y.min(), y.max())
 PY
 "$PY" -c "import json, sys; p = sys.argv[1]; s = json.load(open(p))
 s['foot'] = {'heel': 'long', 'toe': 0.15}; json.dump(s, open(p, 'w'))" "$TMP/footed/summary.json"
