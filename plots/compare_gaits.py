@@ -11,7 +11,8 @@ argument is the output when it ends in .md or is not a gait result folder (no su
 it). With OUT.md, also writes the table there. With OUT_DIR (an existing folder, or any name not
 ending in .md), creates it and writes, printing one line per file written:
   comparison.md        the table
-  angles_overlay.png   link angles theta1..thetaN, one panel per link
+  angles_overlay.png   link angles, one panel per link, each from its foot toward the hip
+                       (theta, or theta - pi on the swing leg), as overview.png draws them
   torques_overlay.png  joint torques tau0..tau{N-1}, one panel per joint
   forces_overlay.png   normal forces fb_y, fe_y and the friction ratio |f_x|/f_y (f_y > 1 N)
                        with the friction coefficient (summary key 'friction') when present
@@ -268,11 +269,23 @@ def joint_label(gaits, j):
     return f"τ{j} joint {j}"
 
 
+# The angle convention of gait_plots.py's pictures, so a gait looks the same in both.
+ANGLES_TITLE = "Link angles, foot toward hip (θ, or θ − π on the swing leg)"
+
+
+def leg_angle(g, i):
+    """Link i's angle [rad] pointing from its foot toward the hip, as overview.png and
+    joint_angles.png draw it (gait_plots.physical_links): theta on the stance leg and the torso,
+    theta - pi on the swing leg (the links past the middle of the chain)."""
+    import numpy as np
+    return plot_io.wrap(g.col[f"theta{i + 1}"] - (np.pi if i > (g.n - 1) / 2 else 0.0))
+
+
 def draw_angle(ax, gaits, i):
     import numpy as np
     for g in gaits:
         if i < g.n:
-            ax.plot(g.t, np.degrees(g.col[f"theta{i + 1}"]), color=colour(i), ls=g.ls, lw=1.5)
+            ax.plot(g.t, np.degrees(leg_angle(g, i)), color=colour(i), ls=g.ls, lw=1.5)
     mark_phases(ax, gaits)
 
 
@@ -289,7 +302,7 @@ def draw_all_angles(ax, gaits):
         draw_angle(ax, gaits, i)
     colour_legend(ax, [(colour(i), link_label(gaits, i)) for i in range(n)], ncol=2,
                   loc="best")
-    finish(ax, "time [s]", "link angle θ [deg]", "Link angles (from the upward vertical)")
+    finish(ax, "time [s]", "link angle [deg]", ANGLES_TITLE)
 
 
 def draw_all_torques(ax, gaits):
@@ -405,8 +418,8 @@ def small_multiples(plt, gaits, count, draw, ylabel, label, name):
 
 
 def angles_figure(plt, gaits):
-    return small_multiples(plt, gaits, max(g.n for g in gaits), draw_angle, "θ [deg]",
-                           link_label, "Link angles")
+    return small_multiples(plt, gaits, max(g.n for g in gaits), draw_angle, "angle [deg]",
+                           link_label, ANGLES_TITLE)
 
 
 def torques_figure(plt, gaits):

@@ -174,6 +174,27 @@ s['foot'] = {'heel': 'long', 'toe': 0.15}; json.dump(s, open(p, 'w'))" "$TMP/foo
 expect_error "(g) malformed foot" "$TMP/footed/summary.json: key 'foot.heel'" "$TMP/footed" "$B" \
   "$TMP/out_g"
 
+# (g2) Link angles as overview.png draws them, each from its foot toward the hip: the swing
+# thigh (theta4 = pi - 0.2 t) as -0.2 t and the swing shank (theta5 = pi + 0.1 t) as 0.1 t, not
+# near 180 degrees; the stance links and the torso as they are.
+(cd "$ROOT/plots" && "$PY" - "$A" <<'PY') || fail "(g2) angle convention"
+import sys
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+import compare_gaits
+a = compare_gaits.Gait(sys.argv[1], "A", "-")
+fig, ax = plt.subplots()
+compare_gaits.draw_all_angles(ax, [a])
+curves = [line.get_ydata() for line in ax.get_lines() if len(line.get_xdata()) == len(a.t)]
+assert len(curves) == 5, len(curves)
+expected = [0.3 * a.t - 0.1, 0.2 * a.t - 0.3, 0.05 + 0 * a.t, -0.2 * a.t, 0.1 * a.t]
+for k, (y, e) in enumerate(zip(curves, expected)):
+    assert np.allclose(y, np.degrees(e), atol=1e-9), (k, y[:3], np.degrees(e)[:3])
+assert "foot toward hip" in ax.get_title(), ax.get_title()
+PY
+
 # (h) Gaits of other robots: peak torques matched by joint name (B's three joints against A's
 # five, a dash where a gait has no such joint), the robots named; an unbounded friction ratio
 # (summary.json's null: a tip pulls on the ground) is shown as inf, not its row dropped.
