@@ -21,10 +21,25 @@ NumberCheck nonNegative(const std::string& unit) {
   return [unit](double v) { return v >= 0 ? std::string() : "a number >= 0 " + unit; };
 }
 
+namespace {
+
+/// "a number in [lo, hi] unit", without a space left over for no unit.
+std::string rangeText(const char* what, double lo, double hi, const std::string& unit) {
+  return fmt::format("{} in [{}, {}]{}{}", what, lo, hi, unit.empty() ? "" : " ", unit);
+}
+
+}  // namespace
+
 NumberCheck inRange(double lo, double hi, const std::string& unit) {
   return [=](double v) {
-    return (v >= lo && v <= hi) ? std::string()
-                                : fmt::format("a number in [{}, {}] {}", lo, hi, unit);
+    return (v >= lo && v <= hi) ? std::string() : rangeText("a number", lo, hi, unit);
+  };
+}
+
+NumberCheck wholeInRange(double lo, double hi, const std::string& unit) {
+  return [=](double v) {
+    return (v >= lo && v <= hi && v == std::floor(v)) ? std::string()
+                                                      : rangeText("a whole number", lo, hi, unit);
   };
 }
 

@@ -23,6 +23,8 @@ using NumberCheck = std::function<std::string(double)>;
 NumberCheck positive(const std::string& unit);
 NumberCheck nonNegative(const std::string& unit);
 NumberCheck inRange(double lo, double hi, const std::string& unit);
+/// A count in [lo, hi] (segments, iterations, steps): a fraction is refused rather than cut.
+NumberCheck wholeInRange(double lo, double hi, const std::string& unit);
 /// The range of a quantity a user also sets elsewhere (a sweep axis, an option), in its words.
 NumberCheck inRange(const Quantity& q);
 /// An angle in [lo, hi] radians; a value outside that is in range once read as degrees gets

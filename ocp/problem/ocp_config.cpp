@@ -44,9 +44,7 @@ PhaseConfig readPhase(const YamlReader& r) {
     p.duration_max =
         r.number("duration_max", config::inRange(p.duration, 10.0, "[s], >= duration"));
   }
-  const double segments = r.number("segments", config::inRange(1, 1000, "(whole number)"));
-  if (segments != std::floor(segments)) r.fail("segments", "expected a whole number of segments");
-  p.segments = static_cast<int>(segments);
+  p.segments = static_cast<int>(r.number("segments", config::wholeInRange(1, 1000, "")));
   if (r.has("mesh")) {  // segment boundaries as fractions of the phase, e.g. finer after impact
     p.mesh = r.numbers("mesh", config::inRange(0, 1, "(fraction of the phase)"));
     try {
@@ -243,7 +241,7 @@ MeshRefinement readRefinement(const YamlReader& r) {
   MeshRefinement m;
   m.tolerance = r.number("tolerance", config::inRange(1e-9, 1e3, "[N m s]"));
   m.max_rounds =
-      static_cast<int>(r.numberOr("max_rounds", m.max_rounds, config::inRange(1, 10, "")));
+      static_cast<int>(r.numberOr("max_rounds", m.max_rounds, config::wholeInRange(1, 10, "")));
   return m;
 }
 
@@ -262,19 +260,19 @@ void readSolver(const YamlReader& r, SolverOptions& s) {
   s.constr_mult_init_max =
       r.numberOr("constr_mult_init_max", s.constr_mult_init_max, config::inRange(0, 1e20, ""));
   s.min_refinement_steps = static_cast<int>(
-      r.numberOr("min_refinement_steps", s.min_refinement_steps, config::inRange(0, 10, "")));
-  s.max_iterations =
-      static_cast<int>(r.numberOr("max_iterations", s.max_iterations, config::inRange(1, 1e5, "")));
+      r.numberOr("min_refinement_steps", s.min_refinement_steps, config::wholeInRange(0, 10, "")));
+  s.max_iterations = static_cast<int>(
+      r.numberOr("max_iterations", s.max_iterations, config::wholeInRange(1, 1e5, "")));
   if (r.has("hessian")) s.hessian = r.choice("hessian", {"exact", "limited-memory"});
   s.mumps_pivot_order = static_cast<int>(
-      r.numberOr("mumps_pivot_order", s.mumps_pivot_order, config::inRange(0, 7, "")));
+      r.numberOr("mumps_pivot_order", s.mumps_pivot_order, config::wholeInRange(0, 7, "")));
   if (r.has("nlp_scaling_method"))
     s.nlp_scaling_method = r.choice("nlp_scaling_method", {"gradient-based", "none"});
   if (r.has("jacobian")) s.jacobian = r.choice("jacobian", {"exact", "finite-difference-values"});
   if (r.has("linear_solver")) s.linear_solver = r.choice("linear_solver", {"mumps", "ldl"});
   s.bound_push = r.numberOr("bound_push", s.bound_push, config::inRange(1e-12, 0.5, ""));
   s.bound_frac = r.numberOr("bound_frac", s.bound_frac, config::inRange(1e-12, 0.5, ""));
-  s.print_level = static_cast<int>(r.numberOr("print_level", 0, config::inRange(0, 12, "")));
+  s.print_level = static_cast<int>(r.numberOr("print_level", 0, config::wholeInRange(0, 12, "")));
 }
 
 // The problem's shape (ocp/shape/shape_config.hpp): its keys sit beside the others at the root.

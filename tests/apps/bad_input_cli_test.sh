@@ -79,6 +79,13 @@ expect "a variant twice" 2 "key 'variants\[1\]\.mass_scale': the same variant is
 run optimize --config "$OCPS/mu2004_walk.yaml" --out "$TMP/out_dir" --quiet --no-plots \
   --set step_duration=0.7
 expect "step_duration, fixed phases" 2 "key 'step_duration': needs a phase of free duration"
+# A count given as a fraction is refused, not cut (2.5 iterations ran as 2).
+run optimize --config "$OCPS/mu2004_walk.yaml" --out "$TMP/out_dir" --quiet --no-plots \
+  --set solver.max_iterations=2.5
+expect "fractional count" 2 "key 'solver.max_iterations': expected a whole number in \[1, 100000\]"
+run optimize --config "$OCPS/mu2004_walk.yaml" --out "$TMP/out_dir" --quiet --no-plots \
+  --set solver.min_refinement_steps=11
+expect "refinement steps" 2 "key 'solver.min_refinement_steps': expected a whole number in \[0, 10\]"
 # A rate too low for the step is refused before the solve (it was refused after it).
 run optimize --config "$OCPS/mu2004_walk.yaml" --out "$TMP/out_dir" --quiet --no-plots --rate 5 \
   --set solver.max_iterations=1

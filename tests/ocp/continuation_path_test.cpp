@@ -56,7 +56,7 @@ TEST(ContinuationConfig, SectionIsReadAndCheckedAgainstTheProblem) {
     EXPECT_NE(e.find(expected), std::string::npos) << "got: " << e;
   };
   fails({{"continuation.steps", "0"}}, "key 'continuation.steps'");
-  fails({{"continuation.steps", "2.5"}}, "expected a whole number");
+  fails({{"continuation.steps", "2.5"}}, "expected a whole number in [1, 100]");
   fails({{"continuation.parameters", "[margins, margins]"}}, "'margins' is listed twice");
   fails({{"continuation.parameters", "[none, cost]"}}, "expected `none` alone");
   fails({{"continuation.parameters", "[speed]"}}, "continuation.parameters[0]");
