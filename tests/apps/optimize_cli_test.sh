@@ -194,7 +194,7 @@ assert abs(s["cost"] - e["cost"]) <= 1e-9 * e["cost"], (s["cost"], e["cost"])
 assert s["max_friction_ratio"] <= s["friction"] - 0.2 + 1e-6, s["max_friction_ratio"]
 PY
 run optimize --config "$C" --set 'phases[0].segments=0' --out "$TMP/v" --quiet --no-plots
-[[ $RC -eq 2 ]] && grep -q -- "--set phases\[0\].segments=0.*expected a number in \[1, 1000\]" "$TMP/err" ||
+[[ $RC -eq 2 ]] && grep -q -- "--set phases\[0\].segments=0.*expected a whole number in \[1, 1000\]" "$TMP/err" ||
   fail "(h) a bad --set value: exit $RC: $(cat "$TMP/err")"
 run optimize --config "$C" --set 'phases[2].segments=8' --out "$TMP/v" --quiet --no-plots
 [[ $RC -eq 2 ]] && grep -q "there is no list item \[2\] there: the list has 2 item(s), \[0\] to \[1\]" "$TMP/err" ||
