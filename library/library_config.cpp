@@ -1,7 +1,6 @@
 #include "library/library_config.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -21,9 +20,7 @@ std::vector<double> readRange(const YamlReader& r, const NumberCheck& check) {
   r.allowOnly({"from", "to", "count"});
   const double from = r.number("from", check);
   const double to = r.number("to", check);
-  const int count = static_cast<int>(r.number("count", [](double v) {
-    return v >= 1 && v <= 1000 && v == std::floor(v) ? "" : "an integer in [1, 1000]";
-  }));
+  const int count = static_cast<int>(r.number("count", config::wholeInRange(1, 1000, "")));
   if (count > 1 && !(to > from)) r.fail("to", fmt::format("expected a number > from ({:g})", from));
   std::vector<double> values;
   for (int k = 0; k < count; ++k)

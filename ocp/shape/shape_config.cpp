@@ -1,7 +1,5 @@
 #include "ocp/shape/shape_config.hpp"
 
-#include <cmath>
-
 namespace gaitopt::ocp {
 namespace {
 
@@ -11,10 +9,7 @@ constexpr int kMaxSteps = 4;
 constexpr int kMaxVariants = 8;
 
 int readSteps(const YamlReader& root) {
-  const double steps =
-      root.numberOr("steps", 1, config::inRange(1, kMaxSteps, "(whole number of steps)"));
-  if (steps != std::floor(steps)) root.fail("steps", "expected a whole number of steps");
-  return static_cast<int>(steps);
+  return static_cast<int>(root.numberOr("steps", 1, config::wholeInRange(1, kMaxSteps, "(steps)")));
 }
 
 VariantConfig readVariant(const YamlReader& r) {
@@ -23,9 +18,8 @@ VariantConfig readVariant(const YamlReader& r) {
   v.mass_scale = r.numberOr("mass_scale", 1, config::inRange(0.5, 2.0, "(times the nominal mass)"));
   v.length_scale =
       r.numberOr("length_scale", 1, config::inRange(0.8, 1.25, "(times the nominal lengths)"));
-  const double c = r.numberOr("controller_case", 1, config::inRange(1, 3, "(Mu's case 1, 2 or 3)"));
-  if (c != std::floor(c)) r.fail("controller_case", "expected Mu's case 1, 2 or 3");
-  v.controller_case = static_cast<int>(c);
+  v.controller_case = static_cast<int>(
+      r.numberOr("controller_case", 1, config::wholeInRange(1, 3, "(Mu's case 1, 2 or 3)")));
   if (v.mass_scale == 1 && v.length_scale == 1 && v.controller_case == 1)
     r.fail("mass_scale",
            "a variant differs from the nominal: give mass_scale, length_scale or controller_case");
