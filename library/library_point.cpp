@@ -34,17 +34,26 @@ PolyGuess polyGuess(const PointProblem& pp) {
 /// A solve and what it cost; iterations and times add up over the attempts.
 struct Attempts {
   std::optional<ocp::GaitSolution> solution;
+  ocp::OcpConfig config;  ///< the last attempt's problem, its continuation on or off
   int iterations = 0;
   double time_s = 0;
 
-  void run(const PointProblem& pp, const gaits::Trajectory& guess) {
-    solution = ocp::solveGait(pp.model, pp.config, guess);
+  /// The library's schedule is the continuation between points (schedule.hpp): the base
+  /// config's own path to one problem runs only when asked for.
+  void run(const PointProblem& pp, const gaits::Trajectory& guess, bool continuation) {
+    config = pp.config;
+    config.continuation.enabled = continuation;
+    solution = ocp::solveGait(pp.model, config, guess);
     iterations += solution->result.iterations;
     time_s += solution->result.wall_time_s;
   }
   bool solved() const { return solution && solution->result.success; }
 };
 
+/// From the neighbour's gait if the schedule names one, else (or if that fails) from the
+/// polynomial gait, and last, where the base config has a continuation (a problem like the
+/// ensemble's, which its polynomial gait does not reach directly), along it. The cheapest start
+/// comes first: a library whose points all converge directly never runs a continuation.
 void solve(const LibrarySetup& setup, const PointJob& job, const PointProblem& pp,
            const PolyGuess& poly, Attempts& a, IndexRow& row) {
   if (job.warm_from >= 0) {
@@ -52,7 +61,8 @@ void solve(const LibrarySetup& setup, const PointJob& job, const PointProblem& p
     try {
       const gaits::Trajectory neighbour =
           gaits::readTrajectoryCsv(setup.pointDir(job.warm_from) + "/trajectory.csv", pp.model);
-      a.run(pp, gaits::retimed(neighbour, phaseDurations(pp.config), pp.config.step_length));
+      a.run(pp, gaits::retimed(neighbour, phaseDurations(pp.config), pp.config.step_length),
+            false);
     } catch (const std::exception& e) {  // a neighbour's file damaged since: start cold
       if (!poly.traj) throw;
       row.message = std::string("warm start unusable: ") + e.what();
@@ -63,7 +73,10 @@ void solve(const LibrarySetup& setup, const PointJob& job, const PointProblem& p
     if (!poly.traj) throw std::domain_error(poly.error);
     row.start = "polynomial";
   }
-  a.run(pp, *poly.traj);
+  a.run(pp, *poly.traj, false);
+  if (a.solved() || !pp.config.continuation.enabled) return;
+  row.start += ",continuation";
+  a.run(pp, *poly.traj, true);
 }
 
 void record(const LibrarySetup& setup, const PointProblem& pp, const Attempts& a,
@@ -81,11 +94,11 @@ void record(const LibrarySetup& setup, const PointProblem& pp, const Attempts& a
     options.config_overrides.push_back(
         fmt::format("{}={}", setup.config.config_axes[a].key, row.config_values[a]));
   if (!row.converged) {
-    row.message = ocp::writeFailedResult(options, pp.model, pp.config, s, dir + ".failed");
+    row.message = ocp::writeFailedResult(options, pp.model, a.config, s, dir + ".failed");
     return;
   }
   io::OutputFolder(dir, {}, "--out", "gait").write([&](const std::string& staging) {
-    const auto summary = ocp::writeGaitResult(options, pp.model, pp.config, s, nullptr, staging);
+    const auto summary = ocp::writeGaitResult(options, pp.model, a.config, s, nullptr, staging);
     row.cost_of_transport = summary.at("cost_of_transport").get<double>();
   });
   ocp::removeFailedResult(dir + ".failed");  // a retried point's old failure

@@ -17,9 +17,6 @@ ocp::OcpConfig scaledConfig(ocp::OcpConfig c, const std::array<double, kWalkAxes
   c.step_duration *= time_scale;
   c.step_length = values[kStepLength];
   c.slope = values[kSlope];
-  // A library reaches its points by its own continuation, each from a solved neighbour
-  // (schedule.hpp); the base config's path to one problem is not run at every point.
-  c.continuation.enabled = false;
   return c;
 }
 

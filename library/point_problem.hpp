@@ -4,7 +4,8 @@
 /// and speed replaced. A speed v at step length L makes the step last T = L / v; every phase
 /// duration (and its bounds) scales by T / T_base, so the SSP/DSP split of the base is kept.
 /// The polynomial guess gait keeps its shape: its hip and apex distances scale with L. The base
-/// problem's `continuation:` is off: the library's schedule is the continuation between points.
+/// problem's `continuation:` is kept; library_point.cpp runs it only at a point that neither a
+/// neighbour's gait nor the polynomial gait reaches without it.
 #include <array>
 
 #include "dynamics/model.hpp"

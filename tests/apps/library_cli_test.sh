@@ -375,4 +375,27 @@ run library --config "$TMP/tiny.yaml" --set "grid.speed=0.7" \
   --set "grid.constraints.friction_margin=[0.05, 2]" --out "$TMP/margin_bad"
 [[ $RC -eq 2 ]] && grep -q "grid.constraints.friction_margin.*refuses 2" "$TMP/err" ||
   fail "(i) bad margin: $RC $(cat "$TMP/err")"
+# (j) A point the polynomial gait does not reach directly is solved along the base config's
+# continuation: here Ipopt gets 8 iterations a solve, which RABBIT-8 needs 14 of, and the
+# continuation's retry from its best iterate finishes the path. Without it the point failed.
+cp "$TMP/rabbit8.yaml" "$TMP/rabbit8c.yaml" &&
+  printf 'continuation:\n  parameters: none\n  steps: 1\n' >>"$TMP/rabbit8c.yaml"
+sed -i "s|max_iterations: 500|max_iterations: 8|" "$TMP/rabbit8c.yaml"
+grep -q "max_iterations: 8" "$TMP/rabbit8c.yaml" || fail "(j) no max_iterations line to edit"
+library cont rabbit8c.yaml "[0.7]"
+run library --config "$TMP/cont.yaml" --out "$TMP/cont" --jobs 1 --quiet
+[[ $RC -eq 0 ]] || fail "(j) exited $RC: $(cat "$TMP/err")"
+POINT_A="$L/index.json" check_json "(j) continuation" "$TMP/cont/index.json" <<'PY'
+import os
+(p,) = d["points"]
+assert p["converged"] and p["start"] == "polynomial,continuation", p
+assert p["iterations"] > 8, p
+# The optimum that (a) reached with Ipopt's full 500 iterations, without a continuation.
+(a,) = [q for q in json.load(open(os.environ["POINT_A"]))["points"] if q["point"] == p["point"]]
+assert abs(p["cost"] - a["cost"]) < 1e-4 * a["cost"], (p["cost"], a["cost"])
+PY
+check_json "(j) summary" "$TMP/cont/points/v0.700_L0.500_s+0.000/summary.json" <<'PY'
+stages = d["continuation"]["stages"]
+assert not stages[0]["converged"] and stages[-1]["converged"], stages
+PY
 echo "library CLI: all checks passed"
