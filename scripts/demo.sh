@@ -98,6 +98,9 @@ if [[ "$full" == --full ]]; then
     --out results/library_cot_speed_mu2004 --quiet
   echo "== gaitopt library: slopes from -0.1 to 0.1 rad x 3 speeds"
   "$bin" library --config configs/library/mu2004_slope.yaml --out results/library_slope_mu2004 --quiet
+  echo "== gaitopt library: the ensemble problem (designed to be walked), 5 speeds x 3 step lengths"
+  "$bin" library --config configs/library/mu2004_ensemble_speed_step.yaml \
+    --out results/library_ensemble_mu2004 --quiet
   echo "== gaitopt report: the pages of the libraries, walks and sweeps"
   for dir in results/library_*/ results/walk_*/ results/stability_*/; do
     "$bin" report "${dir%/}" --no-gif

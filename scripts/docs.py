@@ -61,6 +61,14 @@ class Sources:
         except ValueError:
             return cell
 
+    def csv_values(self, name, column, **where):
+        """Every matching row's cell, as numbers: for a range over many rows."""
+        rows = self._read(name, lambda p: list(csv.DictReader(p.open())))
+        hits = [float(r[column]) for r in rows if all(r.get(k) == str(v) for k, v in where.items())]
+        if not hits:
+            raise KeyError(f"{name}: no row matches {where}")
+        return hits
+
     def markdown(self, name):
         """The file's text, its headings two levels down: an included table's own title sits
         under the section that includes it, not beside the page's title."""
@@ -72,7 +80,7 @@ class Sources:
         return "\n".join(lines)
 
     def namespace(self):
-        return {"j": self.json_value, "c": self.csv_value, "md": self.markdown,
+        return {"j": self.json_value, "c": self.csv_value, "cs": self.csv_values, "md": self.markdown,
                 "interval": lambda a, b: signed_interval(a, b, 0),
                 "interval1": lambda a, b: signed_interval(a, b, 1),
                 "abs": abs, "min": min, "max": max, "round": round, "len": len,

@@ -274,10 +274,10 @@ std::string slidingCause(const ContactSet& contacts) {
   const bool b = contacts.b.mode == TipContact::Mode::kSlide;
   const bool e = contacts.e.mode == TipContact::Mode::kSlide;
   if (!b && !e) return "";
-  return fmt::format(" while the {} slides (its contact system near singular: Painleve)",
-                     b && e ? "stance and swing tips"
-                     : b    ? "stance tip"
-                            : "swing tip");
+  return fmt::format(" while the {} (its contact system near singular: Painleve)",
+                     b && e ? "stance and swing tips slide"
+                     : b    ? "stance tip slides"
+                            : "swing tip slides");
 }
 
 /// Integrates one phase from (t, x) through its contact-mode switches until an end event, the

@@ -53,5 +53,20 @@ for (a, b, digits), want in cases.items():
     got = signed_interval(a, b, digits)
     assert got == want, f"signed_interval({a}, {b}, {digits}) = {got!r}, want {want!r}"
 PY
+# cs(): every matching row's cell, for a range over rows; a filter nothing matches is an error.
+printf 'point,converged,cost\na,1,3.5\nb,0,nan\nc,1,2\n' >"$tmp/rows.csv"
+/usr/bin/python3 - "$src/scripts" "$tmp" <<'PY'
+import pathlib, sys
+sys.path.insert(0, sys.argv[1])
+from docs import Sources
+s = Sources(pathlib.Path(sys.argv[2]))
+assert s.csv_values("rows.csv", "cost", converged=1) == [3.5, 2.0], s.csv_values("rows.csv", "cost", converged=1)
+try:
+    s.csv_values("rows.csv", "cost", converged=2)
+except KeyError as e:
+    assert "no row matches" in str(e), e
+else:
+    raise AssertionError("a filter that matches nothing gave values")
+PY
 
 echo "docs: check passes on the tree and fails on a hand edit, a stale result and a missing picture"
