@@ -61,8 +61,7 @@ void solve(const LibrarySetup& setup, const PointJob& job, const PointProblem& p
     try {
       const gaits::Trajectory neighbour =
           gaits::readTrajectoryCsv(setup.pointDir(job.warm_from) + "/trajectory.csv", pp.model);
-      a.run(pp, gaits::retimed(neighbour, phaseDurations(pp.config), pp.config.step_length),
-            false);
+      a.run(pp, gaits::retimed(neighbour, phaseDurations(pp.config), pp.config.step_length), false);
     } catch (const std::exception& e) {  // a neighbour's file damaged since: start cold
       if (!poly.traj) throw;
       row.message = std::string("warm start unusable: ") + e.what();
