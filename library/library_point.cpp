@@ -73,7 +73,7 @@ void solve(const LibrarySetup& setup, const PointJob& job, const PointProblem& p
     row.start = "polynomial";
   }
   a.run(pp, *poly.traj, false);
-  if (a.solved() || !pp.config.continuation.enabled) return;
+  if (a.solved() || !setup.continuation || !pp.config.continuation.enabled) return;
   row.start += ",continuation";
   a.run(pp, *poly.traj, true);
 }

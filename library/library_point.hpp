@@ -17,12 +17,16 @@ struct LibrarySetup {
   Grid grid;
   std::string out_dir;
   ocp::GaitResultOptions result;  ///< rate and pictures of every point folder
+  /// Whether a point that neither its warm start nor its polynomial gait reaches is solved along
+  /// the base config's `continuation:` (if it has one) as the last attempt
+  bool continuation = true;
 
   std::string pointDir(int point) const;
 };
 
 /// Solves the job's point, from the job's warm start (retimed to the point's phases) or the
-/// polynomial gait, and from the polynomial gait again when a warm start fails. Never throws:
+/// polynomial gait, from the polynomial gait again when a warm start fails, and last along the
+/// base config's continuation (LibrarySetup::continuation). Never throws:
 /// a point that cannot even be set up is a row with status "error" and the reason.
 IndexRow solveLibraryPoint(const LibrarySetup& setup, const PointJob& job);
 
