@@ -385,24 +385,24 @@ def draw_all_torques(ax, w):
     legend_below(ax, ncol=4)
 
 
-def draw_normal_forces(ax, w):
-    """Normal (vertical) ground forces at the stance tip B and the swing tip E."""
-    ax.plot(w.t, w.col["fb_y"], color="tab:blue", lw=1.6, label="B (stance) $f_n$")
-    ax.plot(w.t, w.col["fe_y"], color="tab:orange", lw=1.6, label="E (swing) $f_n$")
+def draw_tip_forces(ax, w, axis, symbol, what):
+    """One component ('y' normal, 'x' tangential) of the ground forces at B and E."""
+    ax.plot(w.t, w.col[f"fb_{axis}"], color="tab:blue", lw=1.6, label=f"B (stance) ${symbol}$")
+    ax.plot(w.t, w.col[f"fe_{axis}"], color="tab:orange", lw=1.6, label=f"E (swing) ${symbol}$")
     ax.axhline(0, color="0.5", lw=0.8)
     mark_steps(ax, w, labels=False)
-    finish(ax, "time [s]", "normal force [N]", "Normal ground forces", legend=False)
+    finish(ax, "time [s]", f"{what} force [N]", f"{what.capitalize()} ground forces", legend=False)
     legend_below(ax, ncol=4)
+
+
+def draw_normal_forces(ax, w):
+    """Normal (vertical) ground forces at the stance tip B and the swing tip E."""
+    draw_tip_forces(ax, w, "y", "f_n", "normal")
 
 
 def draw_tangential_forces(ax, w):
     """Tangential (horizontal) ground forces at B and E."""
-    ax.plot(w.t, w.col["fb_x"], color="tab:blue", lw=1.6, label="B (stance) $f_t$")
-    ax.plot(w.t, w.col["fe_x"], color="tab:orange", lw=1.6, label="E (swing) $f_t$")
-    ax.axhline(0, color="0.5", lw=0.8)
-    mark_steps(ax, w, labels=False)
-    finish(ax, "time [s]", "tangential force [N]", "Tangential ground forces", legend=False)
-    legend_below(ax, ncol=4)
+    draw_tip_forces(ax, w, "x", "f_t", "tangential")
 
 
 def friction_ratio(w, tip):
