@@ -50,9 +50,13 @@ class Sources:
             value = value[int(part)] if isinstance(value, list) else value[part]
         return value
 
-    def csv_value(self, name, column, **where):
+    def _csv_rows(self, name, where):
+        """The rows of CSV file `name` whose cells equal every value of `where`."""
         rows = self._read(name, lambda p: list(csv.DictReader(p.open())))
-        hits = [r for r in rows if all(r.get(k) == str(v) for k, v in where.items())]
+        return [r for r in rows if all(r.get(k) == str(v) for k, v in where.items())]
+
+    def csv_value(self, name, column, **where):
+        hits = self._csv_rows(name, where)
         if len(hits) != 1:
             raise KeyError(f"{name}: {len(hits)} rows match {where}, expected 1")
         cell = hits[0][column]
@@ -63,8 +67,7 @@ class Sources:
 
     def csv_values(self, name, column, **where):
         """Every matching row's cell, as numbers: for a range over many rows."""
-        rows = self._read(name, lambda p: list(csv.DictReader(p.open())))
-        hits = [float(r[column]) for r in rows if all(r.get(k) == str(v) for k, v in where.items())]
+        hits = [float(r[column]) for r in self._csv_rows(name, where)]
         if not hits:
             raise KeyError(f"{name}: no row matches {where}")
         return hits

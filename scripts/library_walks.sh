@@ -3,13 +3,13 @@
 # solved and exported at each rate the walks name, and, where a walk asks for them, the blends
 # at the centres of the grid's cells (`gaitopt interpolate`, its speed and step length halfway
 # between two solved values of each), each walked 20 steps (`gaitopt simulate`, its default
-# rules) under the walk's law on the walk's ground and plant (--mass-error, --length-error). Writes OUT/walks.csv (a row per walk: steps walked, the failure),
-# OUT/summary.csv (per walk: gaits, walked, fell) and OUT/summary.md (the same, and where they
-# fell).
+# rules) under the walk's law on the walk's ground and plant (--mass-error, --length-error).
+# Writes OUT/walks.csv (a row per walk: steps walked, the failure), OUT/summary.csv (per walk:
+# gaits, walked, fell) and OUT/summary.md (the same, and where they fell).
 # Without LIBRARY and WALKs: configs/library/mu2004_speed_step.yaml (the torque-squared optima)
-# under computed torque on the rigid ground, exported at 250 Hz (the library's default rate) and walked on the
-# nominal plant and on plants 1 % lighter and heavier, and exported at 1 kHz and walked on the
-# nominal plant: about a minute on 2 cores.
+# under computed torque on the rigid ground, exported at 250 Hz (the library's default rate) and
+# walked on the nominal plant and on plants 1 % lighter and heavier, and exported at 1 kHz and
+# walked on the nominal plant: about a minute on 2 cores.
 # Usage: scripts/library_walks.sh BUILD_DIR OUT_DIR [LIBRARY WALK...]   (from the repository root)
 #   WALK: GAITS/RATE/MASS_ERROR/LENGTH_ERROR/LAW/GROUND, GAITS `points` or `cells` (the cell
 #   centres), LAW a `gaitopt simulate --controller`, GROUND its --ground; e.g.
