@@ -6,7 +6,7 @@
 # (plots/walk_battery_table.py) and ensemble_front (plots/ensemble_front_chart.py, beside the
 # default optimum, and the same table). The results/ folders the README cites hold curated copies
 # of their tables.
-# Each takes minutes (the solver robustness study about 15).
+# Each takes minutes (the solver robustness study about 7).
 # Usage: scripts/studies.sh BUILD_DIR OUT_DIR [NAME...]   (from the repository root; all when no
 #        NAME is given)
 set -euo pipefail

@@ -113,10 +113,11 @@ for config in "$ROOT"/configs/ocp/*.yaml; do
   [[ $name == *_ensemble ]] && continue
   run optimize --config "$config" --out "$TMP/shipped_$name" --quiet --no-plots
   [[ $RC -eq 0 ]] || fail "(e) $name exited $RC: $(cat "$TMP/err")"
-  # gaitopt's KKT solver makes its own factorizations: it leaves MUMPS under 5 % of them.
+  # No shipped config pins a linear solver (issue 34), and gaitopt's KKT solver makes its own
+  # factorizations: it leaves MUMPS under 5 % of them.
   check_json "(e) $name: MUMPS fallbacks" "$TMP/shipped_$name/summary.json" <<'PY'
 k = d["kkt"]
-assert k["linear_solver"] == "mumps" or k["mumps_fallback_share"] < 0.05, k
+assert k["linear_solver"] == "ldl" and k["mumps_fallback_share"] < 0.05, k
 PY
 done
 check_json "(e) free durations" "$TMP/shipped_mu2004_walk_cot/summary.json" <<'PY'
